@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages skinsim needs. Idempotent: apt skips what is present.
+set -euo pipefail
+
+packages=(
+  cmake g++ make pkg-config
+  libglm-dev libtinygltf-dev libstb-dev libopenimageio-dev libtbb-dev
+  libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libfmt-dev libspdlog-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  libvtk9-dev xvfb xauth
+  # Debian's OpenImageIO CMake config references these files (iconvert, PyImath) and
+  # lists /usr/include/opencv4 as an include directory of OpenImageIO::OpenImageIO.
+  openimageio-tools python3-imath libopencv-core-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "install-deps: installing ${missing[*]}" >&2
+  SUDO=""
+  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+  $SUDO apt-get update -q
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi

@@ -1,0 +1,133 @@
+#include "sim/gpu.h"
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <stdexcept>
+
+#include "sim/binner.h"
+#include "sim/geometry.h"
+#include "sim/tile_renderer.h"
+
+namespace skinsim::sim {
+
+int core_of_tile(int tile_index, int cores) { return tile_index % cores; }
+
+Gpu::Gpu(GpuConfig config) : config_(config) {
+  if (config_.tile_size < 4 || config_.tile_size > 256) {
+    throw std::invalid_argument("GPU tile size must be in [4, 256], got " +
+                                std::to_string(config_.tile_size));
+  }
+  if (config_.cores < 1 || config_.cores > 64) {
+    throw std::invalid_argument("GPU core count must be in [1, 64], got " +
+                                std::to_string(config_.cores));
+  }
+  if (config_.threads < 0) throw std::invalid_argument("thread count must be >= 0");
+  if (config_.threads != 1) {
+    arena_ = config_.threads == 0 ? std::make_unique<tbb::task_arena>()
+                                  : std::make_unique<tbb::task_arena>(config_.threads);
+  }
+}
+
+Gpu::~Gpu() = default;
+
+PassCounters Gpu::execute(const RenderPassDesc& pass) {
+  if (!pass.color || pass.color->width <= 0 || pass.color->height <= 0) {
+    throw std::invalid_argument("render pass '" + pass.name + "' has no colour target");
+  }
+  if (pass.depth_load == LoadOp::kLoad) {
+    throw std::invalid_argument("render pass '" + pass.name + "': depth load is not supported");
+  }
+  for (const DrawCall& d : pass.draws) {
+    if (!d.vertex_program || !d.fragment_program) {
+      throw std::invalid_argument("render pass '" + pass.name + "': draw without programs");
+    }
+    if (d.vertex_program->varying_floats() > kMaxVaryings) {
+      throw std::invalid_argument("vertex program '" + d.vertex_program->name() +
+                                  "' writes more than " + std::to_string(kMaxVaryings) +
+                                  " varying floats");
+    }
+  }
+  if (!arena_) return execute_impl(pass);
+  PassCounters result;
+  arena_->execute([&] { result = execute_impl(pass); });
+  return result;
+}
+
+PassCounters Gpu::execute_impl(const RenderPassDesc& pass) {
+  PassCounters c;
+  c.name = pass.name;
+  c.width = pass.color->width;
+  c.height = pass.color->height;
+  c.tile_size = config_.tile_size;
+  c.tiles_x = (c.width + c.tile_size - 1) / c.tile_size;
+  c.tiles_y = (c.height + c.tile_size - 1) / c.tile_size;
+  c.cores = config_.cores;
+  c.draws.resize(pass.draws.size());
+  for (size_t d = 0; d < pass.draws.size(); ++d) {
+    const DrawCall& draw = pass.draws[d];
+    c.draws[d].vertex_program = draw.vertex_program->name();
+    c.draws[d].fragment_program = draw.fragment_program->name();
+    c.draws[d].vertex_profile = draw.vertex_program->profile();
+    c.draws[d].fragment_profile = draw.fragment_program->profile();
+    c.draws[d].blended = draw.blend != BlendMode::kOpaque;
+  }
+
+  TileGrid grid;
+  grid.tile_size = c.tile_size;
+  grid.tiles_x = c.tiles_x;
+  grid.tiles_y = c.tiles_y;
+  grid.width = c.width;
+  grid.height = c.height;
+  grid.area = tile_aligned_area(pass, c.tile_size);
+
+  const SetupTriangles setup = run_geometry(pass, grid.area, c);
+  const TileBins bins = bin_triangles(setup, grid, c);
+
+  const int tile_count = c.tiles_x * c.tiles_y;
+  c.tiles.resize(tile_count);
+  for (int i = 0; i < tile_count; ++i) {
+    c.tiles[i].tile_x = static_cast<std::uint16_t>(i % c.tiles_x);
+    c.tiles[i].tile_y = static_cast<std::uint16_t>(i / c.tiles_x);
+    c.tiles[i].core = static_cast<std::uint8_t>(core_of_tile(i, c.cores));
+    c.tiles[i].coverage = bins.coverage[i];
+    c.tiles[i].triangle_refs = static_cast<std::uint32_t>(bins.lists[i].size());
+  }
+
+  // One host task per emulated core, each with the core's texture cache, cold at the start
+  // of the render, walking its tiles in order.
+  auto run_core = [&](int core) {
+    TextureCache cache(config_.texture_cache);
+    TileRenderer renderer(pass, setup, grid, config_, cache);
+    for (int i = core; i < tile_count; i += c.cores) {
+      TileCounters& tc = c.tiles[i];
+      if (!grid.in_area(tc.tile_x, tc.tile_y)) continue;
+      renderer.render(tc.tile_x, tc.tile_y, bins.lists[i], tc);
+    }
+  };
+  if (arena_) {
+    tbb::parallel_for(0, c.cores, run_core);
+  } else {
+    for (int core = 0; core < c.cores; ++core) run_core(core);
+  }
+
+  for (const TileCounters& t : c.tiles) {
+    if (!grid.in_area(t.tile_x, t.tile_y)) continue;
+    ++c.tiles_rendered;
+    c.fragments_depth_tested += t.fragments_depth_tested;
+    c.fragments_shaded += t.fragments_shaded;
+    c.fragments_blended += t.fragments_blended;
+    c.hsr_flushes += t.hsr_flushes;
+    c.texture.add(t.texture);
+    c.color_load_bytes += t.color_load_bytes;
+    c.color_store_bytes += t.color_store_bytes;
+    c.depth_load_bytes += t.depth_load_bytes;
+    c.depth_store_bytes += t.depth_store_bytes;
+    for (const DrawFragments& df : t.shaded_by_draw) {
+      c.draws[df.draw].fragments_shaded += df.fragments_shaded;
+    }
+  }
+  return c;
+}
+
+}  // namespace skinsim::sim

@@ -1,0 +1,41 @@
+// The emulated tile-based deferred GPU: executes render passes and counts their work.
+#pragma once
+
+#include <tbb/task_arena.h>
+
+#include <memory>
+
+#include "sim/counters.h"
+#include "sim/render_pass.h"
+
+
+namespace skinsim::sim {
+
+class Gpu {
+ public:
+  explicit Gpu(GpuConfig config);
+  ~Gpu();
+  Gpu(const Gpu&) = delete;
+  Gpu& operator=(const Gpu&) = delete;
+
+  const GpuConfig& config() const { return config_; }
+
+  // Runs one render: vertex stage and binning (TA), then every tile of the render area on
+  // the emulated cores (3D), resolving into pass.color. Counters are identical for any
+  // host thread count: each emulated core's tiles run in a fixed order on one host task,
+  // and per-tile counters are summed in tile order.
+  PassCounters execute(const RenderPassDesc& pass);
+
+ private:
+  PassCounters execute_impl(const RenderPassDesc& pass);
+
+  GpuConfig config_;
+  std::unique_ptr<tbb::task_arena> arena_;
+};
+
+// Emulated core a tile is dispatched to: tiles in row-major order, dealt round-robin. The
+// real SGX MP dispatch order is unpublished; this is the assumption the texture-cache
+// model uses (docs/emulator.md).
+int core_of_tile(int tile_index, int cores);
+
+}  // namespace skinsim::sim

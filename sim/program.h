@@ -1,0 +1,100 @@
+// Shader programs as the GPU runs them. A shader is a struct with a name, a Uniforms type
+// and templated `vertex`/`fragment` functions (see pipeline/shaders/); the wrappers here
+// instantiate it for execution and record its op profile once from the same code.
+#pragma once
+
+#include <algorithm>
+#include <memory>
+#include <string>
+
+#include "sim/op_profile.h"
+#include "sim/shader_io.h"
+
+namespace skinsim::sim {
+
+class VertexProgram {
+ public:
+  virtual ~VertexProgram() = default;
+  const std::string& name() const { return name_; }
+  const OpProfile& profile() const { return profile_; }
+  // Varying floats this program writes per vertex (the parameter-buffer payload).
+  int varying_floats() const { return varying_floats_; }
+  virtual void run(const ExecVertexIn& in, ExecVertexOut& out) const = 0;
+
+ protected:
+  std::string name_;
+  OpProfile profile_;
+  int varying_floats_ = 0;
+};
+
+class FragmentProgram {
+ public:
+  virtual ~FragmentProgram() = default;
+  const std::string& name() const { return name_; }
+  const OpProfile& profile() const { return profile_; }
+  virtual glm::vec4 shade(const ExecFragIn& in, ExecTexUnit& tex) const = 0;
+
+ protected:
+  std::string name_;
+  OpProfile profile_;
+};
+
+// Shader requirements: `static constexpr const char* kName`, `struct Uniforms`, and
+//   template <class L> static void vertex(const typename L::VertexIn&,
+//                                         typename L::VertexOut&, const Uniforms&);
+template <class Shader>
+class VertexProgramOf final : public VertexProgram {
+ public:
+  explicit VertexProgramOf(typename Shader::Uniforms uniforms) : uniforms_(std::move(uniforms)) {
+    name_ = Shader::kName;
+    CountVertexIn in;
+    CountVertexOut out;
+    {
+      sl::OpRecorder recorder(&profile_);
+      Shader::template vertex<Count>(in, out, uniforms_);
+    }
+    varying_floats_ = out.highest_slot;
+    profile_.output_floats = 4 + static_cast<std::uint32_t>(varying_floats_);
+  }
+  void run(const ExecVertexIn& in, ExecVertexOut& out) const override {
+    Shader::template vertex<Exec>(in, out, uniforms_);
+  }
+
+ private:
+  typename Shader::Uniforms uniforms_;
+};
+
+//   template <class L> static typename L::vec4 fragment(const typename L::FragIn&,
+//                                                       typename L::TexUnit&, const Uniforms&);
+template <class Shader>
+class FragmentProgramOf final : public FragmentProgram {
+ public:
+  explicit FragmentProgramOf(typename Shader::Uniforms uniforms)
+      : uniforms_(std::move(uniforms)) {
+    name_ = Shader::kName;
+    CountFragIn in;
+    CountTexUnit tex;
+    {
+      sl::OpRecorder recorder(&profile_);
+      Shader::template fragment<Count>(in, tex, uniforms_);
+    }
+    profile_.output_floats = 4;
+  }
+  glm::vec4 shade(const ExecFragIn& in, ExecTexUnit& tex) const override {
+    return Shader::template fragment<Exec>(in, tex, uniforms_);
+  }
+
+ private:
+  typename Shader::Uniforms uniforms_;
+};
+
+template <class Shader>
+std::shared_ptr<const VertexProgram> make_vertex_program(typename Shader::Uniforms u) {
+  return std::make_shared<VertexProgramOf<Shader>>(std::move(u));
+}
+template <class Shader>
+std::shared_ptr<const FragmentProgram> make_fragment_program(typename Shader::Uniforms u) {
+  return std::make_shared<FragmentProgramOf<Shader>>(std::move(u));
+}
+
+}  // namespace skinsim::sim

@@ -1,0 +1,202 @@
+#include "sim/texture.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace skinsim::sim {
+
+int bytes_per_texel(TexelFormat format) {
+  switch (format) {
+    case TexelFormat::kRGBA8:
+      return 4;
+    case TexelFormat::kRGBA16F:
+      return 8;
+    case TexelFormat::kRGBA32F:
+      return 16;
+  }
+  return 4;
+}
+
+const char* format_name(TexelFormat format) {
+  switch (format) {
+    case TexelFormat::kRGBA8:
+      return "rgba8";
+    case TexelFormat::kRGBA16F:
+      return "rgba16f";
+    case TexelFormat::kRGBA32F:
+      return "rgba32f";
+  }
+  return "?";
+}
+
+TexelFormat parse_format(const std::string& name) {
+  std::string lower = name;
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (lower == "rgba8") return TexelFormat::kRGBA8;
+  if (lower == "rgba16f") return TexelFormat::kRGBA16F;
+  if (lower == "rgba32f") return TexelFormat::kRGBA32F;
+  throw std::invalid_argument("unknown texel format '" + name +
+                              "' (expected rgba8, rgba16f or rgba32f)");
+}
+
+namespace {
+
+// Round to the nearest IEEE 754 binary16 value (ties to even), saturating to +-65504.
+float round_to_half(float v) {
+  if (!std::isfinite(v)) return v;
+  const float a = std::fabs(v);
+  if (a >= 65504.0f) return std::copysign(65504.0f, v);
+  if (a < 6.103515625e-05f) {  // subnormal half: fixed step 2^-24
+    return std::nearbyint(v * 16777216.0f) / 16777216.0f;
+  }
+  int exponent = 0;
+  std::frexp(a, &exponent);                          // a = m * 2^exponent, m in [0.5,1)
+  const float step = std::ldexp(1.0f, exponent - 11);  // 10 stored mantissa bits
+  return std::copysign(std::nearbyint(a / step) * step, v);
+}
+
+std::uint64_t twiddle(std::uint32_t x, std::uint32_t y) {
+  std::uint64_t r = 0;
+  for (int bit = 0; bit < 16; ++bit) {
+    r |= static_cast<std::uint64_t>((x >> bit) & 1u) << (2 * bit);
+    r |= static_cast<std::uint64_t>((y >> bit) & 1u) << (2 * bit + 1);
+  }
+  return r;
+}
+
+std::uint64_t next_pow2(std::uint64_t v) {
+  std::uint64_t p = 1;
+  while (p < v) p <<= 1;
+  return p;
+}
+
+MipLevel downsample(const MipLevel& src) {
+  MipLevel dst;
+  dst.width = std::max(1, src.width / 2);
+  dst.height = std::max(1, src.height / 2);
+  dst.texels.resize(static_cast<size_t>(dst.width) * dst.height);
+  for (int y = 0; y < dst.height; ++y) {
+    for (int x = 0; x < dst.width; ++x) {
+      const int x0 = std::min(2 * x, src.width - 1), x1 = std::min(2 * x + 1, src.width - 1);
+      const int y0 = std::min(2 * y, src.height - 1), y1 = std::min(2 * y + 1, src.height - 1);
+      dst.texels[static_cast<size_t>(y) * dst.width + x] =
+          0.25f * (src.at(x0, y0) + src.at(x1, y0) + src.at(x0, y1) + src.at(x1, y1));
+    }
+  }
+  return dst;
+}
+
+}  // namespace
+
+glm::vec4 quantize(const glm::vec4& value, TexelFormat format) {
+  switch (format) {
+    case TexelFormat::kRGBA8:
+      return glm::round(glm::clamp(value, 0.0f, 1.0f) * 255.0f) / 255.0f;
+    case TexelFormat::kRGBA16F:
+      return {round_to_half(value.x), round_to_half(value.y), round_to_half(value.z),
+              round_to_half(value.w)};
+    case TexelFormat::kRGBA32F:
+      return value;
+  }
+  return value;
+}
+
+Texture2D::Texture2D(std::string name, int width, int height,
+                     const std::vector<glm::vec4>& texels, TexelFormat format,
+                     SamplerState sampler, bool mipmaps)
+    : name_(std::move(name)), format_(format), sampler_(sampler) {
+  if (width <= 0 || height <= 0 || texels.size() != static_cast<size_t>(width) * height) {
+    throw std::invalid_argument("texture '" + name_ + "': bad size");
+  }
+  MipLevel base{width, height, texels};
+  levels_.push_back(std::move(base));
+  // Mips are filtered from the unquantised level above, then each level is quantised, as
+  // an offline mip generator writing the format would do.
+  while (mipmaps && (levels_.back().width > 1 || levels_.back().height > 1)) {
+    levels_.push_back(downsample(levels_.back()));
+  }
+  for (MipLevel& level : levels_) {
+    for (glm::vec4& t : level.texels) t = quantize(t, format_);
+  }
+  if (!mipmaps && sampler_.filter == Filter::kTrilinear) sampler_.filter = Filter::kBilinear;
+  finish_layout();
+}
+
+Texture2D::Texture2D(std::string name, std::vector<MipLevel> levels, TexelFormat format,
+                     SamplerState sampler)
+    : name_(std::move(name)), format_(format), sampler_(sampler), levels_(std::move(levels)) {
+  if (levels_.empty()) throw std::invalid_argument("texture '" + name_ + "': no levels");
+  for (size_t i = 0; i < levels_.size(); ++i) {
+    const MipLevel& l = levels_[i];
+    if (l.width <= 0 || l.height <= 0 || l.texels.size() != static_cast<size_t>(l.width) * l.height) {
+      throw std::invalid_argument("texture '" + name_ + "': bad level " + std::to_string(i));
+    }
+    if (i > 0 && (l.width != std::max(1, levels_[i - 1].width / 2) ||
+                  l.height != std::max(1, levels_[i - 1].height / 2))) {
+      throw std::invalid_argument("texture '" + name_ + "': level " + std::to_string(i) +
+                                  " is not half the size of the level above");
+    }
+  }
+  for (MipLevel& level : levels_) {
+    for (glm::vec4& t : level.texels) t = quantize(t, format_);
+  }
+  if (levels_.size() == 1 && sampler_.filter == Filter::kTrilinear) {
+    sampler_.filter = Filter::kBilinear;
+  }
+  finish_layout();
+}
+
+void Texture2D::finish_layout() {
+  level_offsets_.assign(1, 0);
+  for (const MipLevel& l : levels_) {
+    // Each level occupies the power-of-two square its twiddled addresses span.
+    const std::uint64_t side = next_pow2(static_cast<std::uint64_t>(std::max(l.width, l.height)));
+    level_offsets_.push_back(level_offsets_.back() + side * side * bytes_per_texel(format_));
+  }
+}
+
+std::uint64_t Texture2D::texel_offset(int level, int x, int y) const {
+  return level_offsets_[level] +
+         twiddle(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y)) *
+             bytes_per_texel(format_);
+}
+
+TextureCube::TextureCube(std::string name, int size,
+                         const std::array<std::vector<glm::vec4>, 6>& faces, TexelFormat format,
+                         SamplerState sampler, bool mipmaps)
+    : name_(std::move(name)) {
+  sampler.wrap = Wrap::kClamp;
+  for (int f = 0; f < 6; ++f) {
+    faces_[f] = Texture2D(name_ + ".face" + std::to_string(f), size, size, faces[f], format,
+                          sampler, mipmaps);
+  }
+  face_bytes_ = faces_[0].size_bytes();
+}
+
+CubeCoord cube_coord(const glm::vec3& d) {
+  const glm::vec3 a = glm::abs(d);
+  int face;
+  float sc, tc, ma;
+  if (a.x >= a.y && a.x >= a.z) {
+    face = d.x >= 0 ? 0 : 1;
+    ma = a.x;
+    sc = d.x >= 0 ? -d.z : d.z;
+    tc = -d.y;
+  } else if (a.y >= a.z) {
+    face = d.y >= 0 ? 2 : 3;
+    ma = a.y;
+    sc = d.x;
+    tc = d.y >= 0 ? d.z : -d.z;
+  } else {
+    face = d.z >= 0 ? 4 : 5;
+    ma = a.z;
+    sc = d.z >= 0 ? d.x : -d.x;
+    tc = -d.y;
+  }
+  if (ma <= 0.0f) return {4, {0.5f, 0.5f}};
+  return {face, {0.5f * (sc / ma + 1.0f), 0.5f * (tc / ma + 1.0f)}};
+}
+
+}  // namespace skinsim::sim

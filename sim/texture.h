@@ -1,0 +1,102 @@
+// Textures of the emulated GPU: 2D textures with mip chains and cube maps, in the texel
+// formats the pipelines use. Texel values are kept as floats, already quantised to the
+// format (RGBA8 to 1/255 steps, RGBA16F to half precision), so sampling sees exactly what
+// the device would store. The texture-cache model addresses texels in PowerVR's twiddled
+// (Morton) layout.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+#include "sim/counters.h"
+
+namespace skinsim::sim {
+
+enum class TexelFormat : std::uint8_t { kRGBA8, kRGBA16F, kRGBA32F };
+enum class Wrap : std::uint8_t { kClamp, kRepeat };
+
+int bytes_per_texel(TexelFormat format);
+const char* format_name(TexelFormat format);
+// Parses "rgba8", "rgba16f", "rgba32f" (any case); throws std::invalid_argument otherwise.
+TexelFormat parse_format(const std::string& name);
+// Rounds a value to what the format stores (RGBA8: clamp to [0,1], nearest 1/255;
+// RGBA16F: IEEE half, round to nearest even; RGBA32F: unchanged).
+glm::vec4 quantize(const glm::vec4& value, TexelFormat format);
+
+struct MipLevel {
+  int width = 0;
+  int height = 0;
+  std::vector<glm::vec4> texels;  // row-major
+  const glm::vec4& at(int x, int y) const { return texels[static_cast<size_t>(y) * width + x]; }
+};
+
+struct SamplerState {
+  Filter filter = Filter::kTrilinear;
+  Wrap wrap = Wrap::kRepeat;
+};
+
+class Texture2D {
+ public:
+  Texture2D() = default;
+  // Level 0 from `texels` (width*height, row-major), quantised to `format`; the mip chain
+  // is box-filtered down to 1x1 when `mipmaps` is set.
+  Texture2D(std::string name, int width, int height, const std::vector<glm::vec4>& texels,
+            TexelFormat format, SamplerState sampler, bool mipmaps);
+  // Explicit levels (e.g. a LUT whose levels hold different roughness); each level must be
+  // half the size of the previous one (rounded down, at least 1).
+  Texture2D(std::string name, std::vector<MipLevel> levels, TexelFormat format,
+            SamplerState sampler);
+
+  const std::string& name() const { return name_; }
+  TexelFormat format() const { return format_; }
+  const SamplerState& sampler() const { return sampler_; }
+  int width() const { return levels_.front().width; }
+  int height() const { return levels_.front().height; }
+  int level_count() const { return static_cast<int>(levels_.size()); }
+  const MipLevel& level(int i) const { return levels_[i]; }
+  // Byte offset of a texel from the texture's base address (twiddled within each level).
+  std::uint64_t texel_offset(int level, int x, int y) const;
+  std::uint64_t size_bytes() const { return level_offsets_.back(); }
+
+ private:
+  void finish_layout();
+
+  std::string name_;
+  TexelFormat format_ = TexelFormat::kRGBA8;
+  SamplerState sampler_;
+  std::vector<MipLevel> levels_;
+  std::vector<std::uint64_t> level_offsets_;  // level_count + 1 entries
+};
+
+// Cube map: six faces (+X, -X, +Y, -Y, +Z, -Z, OpenGL convention), each a Texture2D with
+// its own mip chain, laid out one after another in memory.
+class TextureCube {
+ public:
+  TextureCube() = default;
+  TextureCube(std::string name, int size, const std::array<std::vector<glm::vec4>, 6>& faces,
+              TexelFormat format, SamplerState sampler, bool mipmaps);
+
+  const std::string& name() const { return name_; }
+  TexelFormat format() const { return faces_[0].format(); }
+  const SamplerState& sampler() const { return faces_[0].sampler(); }
+  int size() const { return faces_[0].width(); }
+  const Texture2D& face(int i) const { return faces_[i]; }
+  std::uint64_t face_offset(int i) const { return static_cast<std::uint64_t>(i) * face_bytes_; }
+
+ private:
+  std::string name_;
+  std::array<Texture2D, 6> faces_;
+  std::uint64_t face_bytes_ = 0;
+};
+
+// Maps a direction to (face, u, v) with u, v in [0,1] (OpenGL cube map convention).
+struct CubeCoord {
+  int face;
+  glm::vec2 uv;
+};
+CubeCoord cube_coord(const glm::vec3& direction);
+
+}  // namespace skinsim::sim

@@ -1,0 +1,47 @@
+#include "sim/texture_cache.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace skinsim::sim {
+
+namespace {
+constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
+
+bool is_pow2(std::uint32_t v) { return v != 0 && (v & (v - 1)) == 0; }
+}  // namespace
+
+TextureCache::TextureCache(const TextureCacheConfig& config)
+    : line_bytes_(config.line_bytes), line_shift_(0), sets_(0), ways_(config.associativity) {
+  if (!is_pow2(config.line_bytes) || config.associativity == 0 ||
+      config.size_bytes < config.line_bytes * config.associativity ||
+      config.size_bytes % (config.line_bytes * config.associativity) != 0) {
+    throw std::invalid_argument(
+        "texture cache: size " + std::to_string(config.size_bytes) + " B, line " +
+        std::to_string(config.line_bytes) + " B, " + std::to_string(config.associativity) +
+        " ways do not form a cache (line must be a power of two, size a multiple of line x ways)");
+  }
+  while ((1u << line_shift_) < line_bytes_) ++line_shift_;
+  sets_ = config.size_bytes / (config.line_bytes * config.associativity);
+  tags_.assign(static_cast<size_t>(sets_) * ways_, kEmpty);
+}
+
+bool TextureCache::access(std::uint64_t address) {
+  const std::uint64_t line = address >> line_shift_;
+  const std::uint64_t set = line % sets_;
+  std::uint64_t* ways = &tags_[set * ways_];
+  for (std::uint32_t i = 0; i < ways_; ++i) {
+    if (ways[i] == line) {
+      for (std::uint32_t j = i; j > 0; --j) ways[j] = ways[j - 1];  // move to front
+      ways[0] = line;
+      return true;
+    }
+  }
+  for (std::uint32_t j = ways_ - 1; j > 0; --j) ways[j] = ways[j - 1];
+  ways[0] = line;
+  return false;
+}
+
+void TextureCache::clear() { std::fill(tags_.begin(), tags_.end(), kEmpty); }
+
+}  // namespace skinsim::sim

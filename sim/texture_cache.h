@@ -1,0 +1,37 @@
+// Set-associative LRU texture cache of one emulated GPU core. Geometry (size, line size,
+// associativity) comes from the device profile; SGX554's real figures are unpublished,
+// so the profile states its assumption (hardware.md).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace skinsim::sim {
+
+struct TextureCacheConfig {
+  std::uint32_t size_bytes = 8 * 1024;
+  std::uint32_t line_bytes = 64;
+  std::uint32_t associativity = 4;
+};
+
+class TextureCache {
+ public:
+  explicit TextureCache(const TextureCacheConfig& config);
+
+  // Looks up the line holding `address`; returns true on a hit. A miss fills the line,
+  // evicting the least recently used way of its set.
+  bool access(std::uint64_t address);
+  std::uint32_t line_bytes() const { return line_bytes_; }
+  std::uint64_t line_of(std::uint64_t address) const { return address >> line_shift_; }
+  void clear();
+
+ private:
+  std::uint32_t line_bytes_;
+  std::uint32_t line_shift_;
+  std::uint32_t sets_;
+  std::uint32_t ways_;
+  // Per set, `ways_` line tags ordered most recently used first; kEmpty marks a free way.
+  std::vector<std::uint64_t> tags_;
+};
+
+}  // namespace skinsim::sim

@@ -1,0 +1,68 @@
+// The texture unit of one emulated core, as the Exec-mode shaders see it: filtered
+// sampling of the bound textures, with every fetch counted and every texel it touches
+// looked up in the core's texture cache.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <glm/glm.hpp>
+
+#include "sim/counters.h"
+#include "sim/texture.h"
+#include "sim/texture_cache.h"
+
+namespace skinsim::sim {
+
+constexpr int kMaxTextureBindings = 8;
+
+// A varying used directly as texture coordinates, with its screen-space derivatives (what
+// the hardware's iterators provide for mip selection).
+template <int N>
+struct Varying {
+  glm::vec<N, float> value{0.0f};
+  glm::vec<N, float> ddx{0.0f};
+  glm::vec<N, float> ddy{0.0f};
+};
+
+struct TextureBindings {
+  std::array<const Texture2D*, kMaxTextureBindings> textures{};
+  std::array<const TextureCube*, kMaxTextureBindings> cubes{};
+};
+
+class ExecTexUnit {
+ public:
+  ExecTexUnit(TextureCache* cache, TextureCounters* counters)
+      : cache_(cache), counters_(counters) {}
+
+  void bind(const TextureBindings* bindings) { bindings_ = bindings; }
+  void set_counters(TextureCounters* counters) { counters_ = counters; }
+
+  // Independent read: coordinates straight from a varying; LOD from its derivatives.
+  glm::vec4 sample(int binding, const Varying<2>& uv);
+  // Dependent reads: computed coordinates (LOD 0, or explicit).
+  glm::vec4 sample(int binding, const glm::vec2& uv) { return sample_lod(binding, uv, 0.0f); }
+  glm::vec4 sample_lod(int binding, const glm::vec2& uv, float lod);
+  glm::vec4 sample_cube(int binding, const Varying<3>& direction);
+  glm::vec4 sample_cube_lod(int binding, const glm::vec3& direction, float lod);
+
+ private:
+  glm::vec4 filtered(const Texture2D& tex, std::uint64_t base, glm::vec2 uv, float lod,
+                     bool dependent);
+  glm::vec4 bilinear(const Texture2D& tex, std::uint64_t base, int level, glm::vec2 uv);
+  void touch(std::uint64_t address);
+  const Texture2D& texture(int binding) const;
+  const TextureCube& cube(int binding) const;
+
+  TextureCache* cache_;
+  TextureCounters* counters_;
+  const TextureBindings* bindings_ = nullptr;
+  // Cache lines touched by the current sample, to count each line once per sample.
+  std::array<std::uint64_t, 8> sample_lines_{};
+  int sample_line_count_ = 0;
+};
+
+// Each binding slot has its own region of the emulated address space, so texture
+// addresses (and hence cache behaviour) do not depend on allocation order.
+constexpr std::uint64_t kBindingAddressStride = std::uint64_t{1} << 28;
+
+}  // namespace skinsim::sim

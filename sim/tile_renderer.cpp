@@ -1,0 +1,156 @@
+#include "sim/tile_renderer.h"
+
+#include <algorithm>
+
+namespace skinsim::sim {
+
+namespace {
+
+glm::vec4 blend(BlendMode mode, const glm::vec4& src, const glm::vec4& dst) {
+  switch (mode) {
+    case BlendMode::kAlpha:
+      return src * src.a + dst * (1.0f - src.a);
+    case BlendMode::kAdditive:
+      return src + dst;
+    case BlendMode::kOpaque:
+      break;
+  }
+  return src;
+}
+
+// Iterates the pixels of `rect` covered by triangle `t`, calling fn(px, py, depth).
+template <typename Fn>
+void rasterize(const TriangleSetup& t, const PixelRect& rect, Fn&& fn) {
+  const int x0 = std::max(t.min_x, rect.x0), x1 = std::min(t.max_x, rect.x1 - 1);
+  const int y0 = std::max(t.min_y, rect.y0), y1 = std::min(t.max_y, rect.y1 - 1);
+  if (x0 > x1 || y0 > y1) return;
+  const std::int64_t half = kSubpixelOne / 2;
+  const std::int64_t sx = x0 * kSubpixelOne + half, sy = y0 * kSubpixelOne + half;
+  std::int64_t row[3], step_x[3], step_y[3];
+  for (int e = 0; e < 3; ++e) {
+    row[e] = t.edge_a[e] * sx + t.edge_b[e] * sy + t.edge_c[e];
+    step_x[e] = t.edge_a[e] * kSubpixelOne;
+    step_y[e] = t.edge_b[e] * kSubpixelOne;
+  }
+  for (int py = y0; py <= y1; ++py) {
+    std::int64_t e0 = row[0], e1 = row[1], e2 = row[2];
+    const float ry = static_cast<float>(py) + 0.5f - t.origin_y;
+    for (int px = x0; px <= x1; ++px) {
+      if ((e0 | e1 | e2) >= 0) {
+        const float rx = static_cast<float>(px) + 0.5f - t.origin_x;
+        fn(px, py, t.depth.at(rx, ry));
+      }
+      e0 += step_x[0];
+      e1 += step_x[1];
+      e2 += step_x[2];
+    }
+    row[0] += step_y[0];
+    row[1] += step_y[1];
+    row[2] += step_y[2];
+  }
+}
+
+}  // namespace
+
+TileRenderer::TileRenderer(const RenderPassDesc& pass, const SetupTriangles& setup,
+                           const TileGrid& grid, const GpuConfig& config, TextureCache& cache)
+    : pass_(pass), setup_(setup), grid_(grid), config_(config), tex_(&cache, nullptr) {
+  const size_t n = static_cast<size_t>(grid.tile_size) * grid.tile_size;
+  color_.resize(n);
+  depth_.resize(n);
+  tag_.resize(n);
+}
+
+glm::vec4 TileRenderer::shade(std::uint32_t triangle, int px, int py) {
+  const TriangleSetup& t = setup_.triangles[triangle];
+  const DrawCall& draw = pass_.draws[t.draw];
+  tex_.bind(&draw.textures);
+  const float cx = static_cast<float>(px) + 0.5f, cy = static_cast<float>(py) + 0.5f;
+  const ExecFragIn in(setup_.varying_planes.data() + t.varying_offset, t.inv_w,
+                      cx - t.origin_x, cy - t.origin_y, {cx, cy});
+  return draw.fragment_program->shade(in, tex_);
+}
+
+bool TileRenderer::flush_tags(TileCounters& counters, std::vector<std::uint64_t>& shaded) {
+  const int ts = grid_.tile_size;
+  bool any = false;
+  for (int py = rect_.y0; py < rect_.y1; ++py) {
+    for (int px = rect_.x0; px < rect_.x1; ++px) {
+      const size_t i = static_cast<size_t>(py - rect_.y0) * ts + (px - rect_.x0);
+      if (tag_[i] == 0) continue;
+      const std::uint32_t tri = tag_[i] - 1;
+      tag_[i] = 0;
+      color_[i] = shade(tri, px, py);
+      ++counters.fragments_shaded;
+      ++shaded[setup_.triangles[tri].draw];
+      any = true;
+    }
+  }
+  return any;
+}
+
+void TileRenderer::render(int tx, int ty, const std::vector<std::uint32_t>& triangles,
+                          TileCounters& counters) {
+  rect_ = grid_.tile_rect(tx, ty);
+  const int ts = grid_.tile_size;
+  const int bpp = bytes_per_texel(pass_.color->format);
+  const std::uint64_t pixels = static_cast<std::uint64_t>(rect_.x1 - rect_.x0) *
+                               static_cast<std::uint64_t>(rect_.y1 - rect_.y0);
+  tex_.set_counters(&counters.texture);
+
+  // Tile start: colour from a clear, or loaded from the target (costs DRAM reads).
+  for (int py = rect_.y0; py < rect_.y1; ++py) {
+    for (int px = rect_.x0; px < rect_.x1; ++px) {
+      const size_t i = static_cast<size_t>(py - rect_.y0) * ts + (px - rect_.x0);
+      color_[i] = pass_.color_load == LoadOp::kLoad ? pass_.color->at(px, py) : pass_.clear_color;
+      depth_[i] = 1.0f;
+      tag_[i] = 0;
+    }
+  }
+  if (pass_.color_load == LoadOp::kLoad) counters.color_load_bytes = pixels * bpp;
+
+  std::vector<std::uint64_t> shaded(pass_.draws.size(), 0);
+  for (const std::uint32_t tri : triangles) {
+    const TriangleSetup& t = setup_.triangles[tri];
+    const DrawCall& draw = pass_.draws[t.draw];
+    // Hidden-surface removal applies to opaque draws that write depth: their fragments
+    // only tag the pixel; shading waits until the tile's visibility is final.
+    const bool deferred = draw.blend == BlendMode::kOpaque && draw.depth_write;
+    if (!deferred && flush_tags(counters, shaded)) ++counters.hsr_flushes;
+    rasterize(t, rect_, [&](int px, int py, float z) {
+      const size_t i = static_cast<size_t>(py - rect_.y0) * ts + (px - rect_.x0);
+      ++counters.fragments_depth_tested;
+      if (draw.depth_test && !(z < depth_[i])) return;
+      if (draw.depth_write) depth_[i] = z;
+      if (deferred) {
+        tag_[i] = tri + 1;
+        return;
+      }
+      const glm::vec4 src = shade(tri, px, py);
+      color_[i] = blend(draw.blend, src, color_[i]);
+      ++counters.fragments_shaded;
+      ++shaded[t.draw];
+      if (draw.blend != BlendMode::kOpaque) ++counters.fragments_blended;
+    });
+  }
+  flush_tags(counters, shaded);
+
+  for (std::uint32_t d = 0; d < shaded.size(); ++d) {
+    if (shaded[d]) counters.shaded_by_draw.push_back({d, shaded[d]});
+  }
+  // Tile end: resolve colour to the target; depth/stencil are discarded unless stored.
+  if (pass_.store_color) {
+    for (int py = rect_.y0; py < rect_.y1; ++py) {
+      for (int px = rect_.x0; px < rect_.x1; ++px) {
+        const size_t i = static_cast<size_t>(py - rect_.y0) * ts + (px - rect_.x0);
+        pass_.color->at(px, py) = quantize(color_[i], pass_.color->format);
+      }
+    }
+    counters.color_store_bytes = pixels * bpp;
+  }
+  if (pass_.store_depth) {
+    counters.depth_store_bytes = pixels * config_.depth_stencil_bytes_per_pixel;
+  }
+}
+
+}  // namespace skinsim::sim

@@ -1,0 +1,42 @@
+// The per-tile renderer (3D): for one tile, depth-tests every triangle of its list in
+// on-chip tile memory, shades only the visible fragment of each pixel for opaque draws
+// (deferred hidden-surface removal), shades blended draws in order, and resolves the tile
+// to the render target.
+#pragma once
+
+#include <vector>
+
+#include "sim/binner.h"
+#include "sim/counters.h"
+#include "sim/geometry.h"
+#include "sim/render_pass.h"
+#include "sim/texture_unit.h"
+
+namespace skinsim::sim {
+
+class TileRenderer {
+ public:
+  TileRenderer(const RenderPassDesc& pass, const SetupTriangles& setup, const TileGrid& grid,
+               const GpuConfig& config, TextureCache& cache);
+
+  // Renders tile (tx, ty) with the given triangle list; fills `counters`.
+  void render(int tx, int ty, const std::vector<std::uint32_t>& triangles,
+              TileCounters& counters);
+
+ private:
+  // Shades every tagged pixel; returns whether there was any.
+  bool flush_tags(TileCounters& counters, std::vector<std::uint64_t>& shaded_by_draw);
+  glm::vec4 shade(std::uint32_t triangle, int px, int py);
+
+  const RenderPassDesc& pass_;
+  const SetupTriangles& setup_;
+  const TileGrid& grid_;
+  const GpuConfig& config_;
+  ExecTexUnit tex_;
+  PixelRect rect_{};
+  std::vector<glm::vec4> color_;
+  std::vector<float> depth_;
+  std::vector<std::uint32_t> tag_;  // visible triangle + 1 per pixel, 0 = none
+};
+
+}  // namespace skinsim::sim

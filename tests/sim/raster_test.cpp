@@ -1,0 +1,239 @@
+// Exact counter checks of the emulated GPU on hand-checkable scenes.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "sim/gpu.h"
+#include "tests/sim/test_shaders.h"
+
+namespace skinsim::sim {
+namespace {
+
+using testing::FlatColorFS;
+using testing::PassThroughVS;
+using testing::TexturedFS;
+
+struct Mesh {
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec2> uvs;
+  std::vector<std::uint32_t> indices;
+  Geometry geometry() const {
+    Geometry g;
+    g.attributes.positions = positions.data();
+    g.attributes.uvs = uvs.data();
+    g.vertex_count = positions.size();
+    g.indices = indices.data();
+    g.index_count = indices.size();
+    return g;
+  }
+};
+
+// An n x n grid over clip-space [x0,x1]x[y0,y1] at depth z, counter-clockwise triangles;
+// interior vertices jittered (shared edges at arbitrary sub-pixel positions).
+Mesh grid_mesh(int n, float z, float jitter, unsigned seed, float x0 = -1, float y0 = -1,
+               float x1 = 1, float y1 = 1) {
+  Mesh m;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> d(-jitter, jitter);
+  for (int j = 0; j <= n; ++j) {
+    for (int i = 0; i <= n; ++i) {
+      float x = x0 + (x1 - x0) * i / n, y = y0 + (y1 - y0) * j / n;
+      if (i > 0 && i < n && j > 0 && j < n) {
+        x += d(rng) * (x1 - x0) / n;
+        y += d(rng) * (y1 - y0) / n;
+      }
+      m.positions.emplace_back(x, y, z);
+      m.uvs.emplace_back(static_cast<float>(i) / n, static_cast<float>(j) / n);
+    }
+  }
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      const std::uint32_t a = j * (n + 1) + i, b = a + 1, c = a + n + 1, e = c + 1;
+      m.indices.insert(m.indices.end(), {a, b, e, a, e, c});
+    }
+  }
+  return m;
+}
+
+DrawCall flat_draw(const Mesh& m, glm::vec4 color, BlendMode blend = BlendMode::kOpaque) {
+  DrawCall d;
+  d.geometry = m.geometry();
+  d.vertex_program = make_vertex_program<PassThroughVS>({});
+  d.fragment_program = make_fragment_program<FlatColorFS>({color});
+  d.blend = blend;
+  return d;
+}
+
+GpuConfig config(int threads) {
+  GpuConfig c;
+  c.threads = threads;
+  return c;
+}
+
+TEST(Raster, FullScreenQuadShadesEveryPixelOnce) {
+  RenderTarget rt("rt", 100, 70, TexelFormat::kRGBA8);
+  const Mesh quad = grid_mesh(1, 0.5f, 0.0f, 1);
+  RenderPassDesc pass;
+  pass.name = "quad";
+  pass.color = &rt;
+  pass.draws.push_back(flat_draw(quad, glm::vec4(1.0f)));
+  const PassCounters c = Gpu(config(1)).execute(pass);
+  EXPECT_EQ(c.fragments_shaded, 100u * 70u);
+  EXPECT_EQ(c.fragments_depth_tested, 100u * 70u);
+  EXPECT_EQ(c.triangles_in, 2u);
+  EXPECT_EQ(c.triangles_binned, 2u);
+  EXPECT_EQ(c.tiles_rendered, 4u * 3u);
+  EXPECT_EQ(c.color_store_bytes, 100u * 70u * 4u);
+  EXPECT_EQ(c.draws[0].fragments_shaded, 100u * 70u);
+  for (const glm::vec4& p : rt.pixels) ASSERT_EQ(p, glm::vec4(1.0f));
+}
+
+TEST(Raster, HiddenSurfaceRemovalShadesOnlyVisibleFragments) {
+  RenderTarget rt("rt", 96, 64, TexelFormat::kRGBA8);
+  const Mesh back = grid_mesh(1, 0.8f, 0.0f, 1), front = grid_mesh(1, 0.2f, 0.0f, 1);
+  RenderPassDesc pass;
+  pass.name = "overdraw";
+  pass.color = &rt;
+  // Back to front: the worst case for an immediate-mode GPU, free for deferred HSR.
+  pass.draws.push_back(flat_draw(back, glm::vec4(1, 0, 0, 1)));
+  pass.draws.push_back(flat_draw(front, glm::vec4(0, 1, 0, 1)));
+  const PassCounters c = Gpu(config(1)).execute(pass);
+  EXPECT_EQ(c.fragments_depth_tested, 2u * 96u * 64u);
+  EXPECT_EQ(c.fragments_shaded, 96u * 64u);
+  EXPECT_EQ(c.draws[0].fragments_shaded, 0u);
+  EXPECT_EQ(c.draws[1].fragments_shaded, 96u * 64u);
+  EXPECT_EQ(c.hsr_flushes, 0u);
+  EXPECT_EQ(rt.at(50, 30), glm::vec4(0, 1, 0, 1));
+}
+
+TEST(Raster, BlendingDefeatsHiddenSurfaceRemoval) {
+  RenderTarget rt("rt", 64, 64, TexelFormat::kRGBA8);
+  const Mesh back = grid_mesh(1, 0.8f, 0.0f, 1), front = grid_mesh(1, 0.2f, 0.0f, 1);
+  RenderPassDesc pass;
+  pass.name = "blend";
+  pass.color = &rt;
+  pass.draws.push_back(flat_draw(back, glm::vec4(1, 0, 0, 1)));
+  pass.draws.push_back(flat_draw(front, glm::vec4(0, 0, 1, 0.5f), BlendMode::kAlpha));
+  const PassCounters c = Gpu(config(1)).execute(pass);
+  EXPECT_EQ(c.fragments_shaded, 2u * 64u * 64u);
+  EXPECT_EQ(c.fragments_blended, 64u * 64u);
+  EXPECT_EQ(c.hsr_flushes, 4u);  // one per tile, before its first blended triangle
+  const glm::vec4 p = rt.at(10, 10);
+  EXPECT_NEAR(p.r, 0.5f, 1.0f / 255);
+  EXPECT_NEAR(p.b, 0.5f, 1.0f / 255);
+}
+
+TEST(Raster, SharedEdgesTouchEveryPixelExactlyOnce) {
+  RenderTarget rt("rt", 157, 93, TexelFormat::kRGBA32F);
+  const Mesh mesh = grid_mesh(17, 0.5f, 0.2f, 7);  // jitter small enough not to fold
+  RenderPassDesc pass;
+  pass.name = "edges";
+  pass.color = &rt;
+  DrawCall d = flat_draw(mesh, glm::vec4(1.0f), BlendMode::kAdditive);
+  d.depth_test = false;
+  d.depth_write = false;
+  pass.draws.push_back(d);
+  const PassCounters c = Gpu(config(1)).execute(pass);
+  EXPECT_EQ(c.fragments_shaded, 157u * 93u);
+  for (int y = 0; y < rt.height; ++y) {
+    for (int x = 0; x < rt.width; ++x) ASSERT_EQ(rt.at(x, y).r, 1.0f) << x << "," << y;
+  }
+}
+
+TEST(Raster, BackFacesAreCulledAndCounted) {
+  RenderTarget rt("rt", 32, 32, TexelFormat::kRGBA8);
+  Mesh quad = grid_mesh(1, 0.5f, 0.0f, 1);
+  std::swap(quad.indices[1], quad.indices[2]);  // first triangle now clockwise
+  RenderPassDesc pass;
+  pass.name = "cull";
+  pass.color = &rt;
+  pass.draws.push_back(flat_draw(quad, glm::vec4(1.0f)));
+  const PassCounters culled = Gpu(config(1)).execute(pass);
+  EXPECT_EQ(culled.triangles_culled_backface, 1u);
+  EXPECT_EQ(culled.triangles_binned, 1u);
+  EXPECT_LT(culled.fragments_shaded, 32u * 32u);
+  pass.draws[0].cull = CullMode::kNone;  // both windings drawn: the fill rule still holds
+  const PassCounters both = Gpu(config(1)).execute(pass);
+  EXPECT_EQ(both.triangles_culled_backface, 0u);
+  EXPECT_EQ(both.fragments_shaded, 32u * 32u);
+}
+
+TEST(Raster, NearPlaneCrossingTriangleIsClipped) {
+  RenderTarget rt("rt", 64, 64, TexelFormat::kRGBA8);
+  Mesh tri;
+  // PassThroughVS sets w = 1, so z < -1 is in front of the near plane.
+  tri.positions = {{-0.5f, -0.5f, -3.0f}, {0.5f, -0.5f, 0.0f}, {0.0f, 0.5f, 0.0f}};
+  tri.uvs.assign(3, glm::vec2(0.0f));
+  tri.indices = {0, 1, 2};
+  RenderPassDesc pass;
+  pass.name = "clip";
+  pass.color = &rt;
+  pass.draws.push_back(flat_draw(tri, glm::vec4(1.0f)));
+  const PassCounters c = Gpu(config(1)).execute(pass);
+  EXPECT_EQ(c.triangles_clipped, 1u);
+  EXPECT_EQ(c.triangles_binned, 2u);  // the clipped quad becomes two triangles
+  EXPECT_GT(c.fragments_shaded, 0u);
+}
+
+TEST(Raster, RenderAreaLimitsTilesAndResolves) {
+  RenderTarget rt("rt", 128, 128, TexelFormat::kRGBA8);
+  const Mesh quad = grid_mesh(1, 0.5f, 0.0f, 1);
+  RenderPassDesc pass;
+  pass.name = "area";
+  pass.color = &rt;
+  pass.render_area = PixelRect{40, 40, 70, 60};  // snaps to tiles [32,96) x [32,64)
+  pass.draws.push_back(flat_draw(quad, glm::vec4(1.0f)));
+  const PassCounters c = Gpu(config(1)).execute(pass);
+  EXPECT_EQ(c.tiles_rendered, 2u);
+  EXPECT_EQ(c.fragments_shaded, 2u * 32u * 32u);
+  EXPECT_EQ(c.color_store_bytes, 2u * 32u * 32u * 4u);
+  EXPECT_EQ(rt.at(0, 0), glm::vec4(0.0f));
+  EXPECT_EQ(rt.at(33, 33), glm::vec4(1.0f));
+}
+
+TEST(Raster, ImagesAndCountersIdenticalForAnyThreadCount) {
+  std::vector<glm::vec4> texels(64 * 64);
+  for (int i = 0; i < 64 * 64; ++i) {
+    texels[i] = glm::vec4((i % 64) / 63.0f, (i / 64) / 63.0f, ((i * 37) % 17) / 16.0f, 1.0f);
+  }
+  const Texture2D tex("checker", 64, 64, texels, TexelFormat::kRGBA8, {}, true);
+  const Mesh back = grid_mesh(9, 0.7f, 0.4f, 3);
+  const Mesh front = grid_mesh(13, 0.3f, 0.4f, 5, -0.6f, -0.5f, 0.7f, 0.8f);
+
+  auto render = [&](int threads, std::vector<glm::vec4>& pixels) {
+    RenderTarget rt("rt", 301, 187, TexelFormat::kRGBA8);
+    RenderPassDesc pass;
+    pass.name = "determinism";
+    pass.color = &rt;
+    for (const Mesh* m : {&back, &front}) {
+      DrawCall d;
+      d.geometry = m->geometry();
+      d.vertex_program = make_vertex_program<PassThroughVS>({});
+      d.fragment_program = make_fragment_program<TexturedFS>({});
+      d.textures.textures[0] = &tex;
+      pass.draws.push_back(d);
+    }
+    const PassCounters c = Gpu(config(threads)).execute(pass);
+    pixels = rt.pixels;
+    return c;
+  };
+  std::vector<glm::vec4> p1, p2, p4;
+  const PassCounters c1 = render(1, p1), c2 = render(2, p2), c4 = render(4, p4);
+  EXPECT_EQ(p1, p2);
+  EXPECT_EQ(p1, p4);
+  for (const PassCounters* c : {&c2, &c4}) {
+    EXPECT_EQ(c->fragments_shaded, c1.fragments_shaded);
+    EXPECT_EQ(c->texture.cache_misses, c1.texture.cache_misses);
+    EXPECT_EQ(c->texture.texels_touched, c1.texture.texels_touched);
+    ASSERT_EQ(c->tiles.size(), c1.tiles.size());
+    for (size_t i = 0; i < c1.tiles.size(); ++i) {
+      EXPECT_EQ(c->tiles[i].texture.cache_misses, c1.tiles[i].texture.cache_misses);
+      EXPECT_EQ(c->tiles[i].fragments_depth_tested, c1.tiles[i].fragments_depth_tested);
+    }
+  }
+  EXPECT_GT(c1.texture.cache_misses, 0u);
+  EXPECT_EQ(c1.texture.samples(), c1.fragments_shaded);
+}
+
+}  // namespace
+}  // namespace skinsim::sim

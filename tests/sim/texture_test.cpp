@@ -1,0 +1,96 @@
+#include <gtest/gtest.h>
+
+#include "sim/texture.h"
+#include "sim/texture_cache.h"
+#include "sim/texture_unit.h"
+
+namespace skinsim::sim {
+namespace {
+
+TEST(Texture, QuantizesToFormat) {
+  EXPECT_EQ(quantize(glm::vec4(0.5f), TexelFormat::kRGBA8), glm::vec4(128.0f / 255.0f));
+  EXPECT_EQ(quantize(glm::vec4(2.0f), TexelFormat::kRGBA8), glm::vec4(1.0f));
+  EXPECT_EQ(quantize(glm::vec4(1.0f / 3.0f), TexelFormat::kRGBA16F).x, 0.333251953125f);
+  EXPECT_EQ(quantize(glm::vec4(1e6f), TexelFormat::kRGBA16F).x, 65504.0f);
+  EXPECT_EQ(quantize(glm::vec4(0.1f), TexelFormat::kRGBA32F).x, 0.1f);
+}
+
+TEST(Texture, BuildsFullMipChain) {
+  const Texture2D t("t", 16, 4, std::vector<glm::vec4>(64, glm::vec4(0.25f)),
+                    TexelFormat::kRGBA8, {}, true);
+  ASSERT_EQ(t.level_count(), 5);
+  EXPECT_EQ(t.level(4).width, 1);
+  EXPECT_EQ(t.level(4).height, 1);
+  EXPECT_EQ(t.level(2).at(0, 0), quantize(glm::vec4(0.25f), TexelFormat::kRGBA8));
+}
+
+TEST(Texture, RejectsLevelsOfWrongSize) {
+  std::vector<MipLevel> levels = {{4, 4, std::vector<glm::vec4>(16)}, {3, 2, std::vector<glm::vec4>(6)}};
+  EXPECT_THROW(Texture2D("lut", levels, TexelFormat::kRGBA8, {}), std::invalid_argument);
+}
+
+TEST(Texture, CubeCoordinatesFollowOpenGLFaces) {
+  EXPECT_EQ(cube_coord({1, 0, 0}).face, 0);
+  EXPECT_EQ(cube_coord({-1, 0, 0}).face, 1);
+  EXPECT_EQ(cube_coord({0, 1, 0}).face, 2);
+  EXPECT_EQ(cube_coord({0, -1, 0}).face, 3);
+  EXPECT_EQ(cube_coord({0, 0, 1}).face, 4);
+  EXPECT_EQ(cube_coord({0, 0, -1}).face, 5);
+  EXPECT_EQ(cube_coord({0, 0, 1}).uv, glm::vec2(0.5f));
+}
+
+TEST(TextureCache, HitsAfterFillAndEvictsLeastRecentlyUsed) {
+  TextureCache cache({256, 64, 2});  // 2 sets x 2 ways
+  EXPECT_FALSE(cache.access(0));
+  EXPECT_TRUE(cache.access(63));
+  EXPECT_FALSE(cache.access(128));  // same set (line 2), second way
+  EXPECT_TRUE(cache.access(0));
+  EXPECT_FALSE(cache.access(256));  // same set: evicts line 2 (least recent)
+  EXPECT_TRUE(cache.access(0));
+  EXPECT_FALSE(cache.access(128));
+}
+
+TEST(TextureCache, RejectsImpossibleGeometry) {
+  EXPECT_THROW(TextureCache({1000, 64, 4}), std::invalid_argument);
+  EXPECT_THROW(TextureCache({1024, 48, 4}), std::invalid_argument);
+}
+
+TEST(TextureUnit, BilinearOfConstantIsConstantAndCountsFootprint) {
+  const Texture2D t("t", 8, 8, std::vector<glm::vec4>(64, glm::vec4(0.5f)), TexelFormat::kRGBA8,
+                    {Filter::kBilinear, Wrap::kRepeat}, false);
+  TextureCache cache({8192, 64, 4});
+  TextureCounters counters;
+  ExecTexUnit unit(&cache, &counters);
+  TextureBindings b;
+  b.textures[0] = &t;
+  unit.bind(&b);
+  const glm::vec4 v = unit.sample(0, glm::vec2(0.3f, 0.6f));
+  EXPECT_EQ(v, quantize(glm::vec4(0.5f), TexelFormat::kRGBA8));
+  EXPECT_EQ(counters.samples_by_filter[1], 1u);
+  EXPECT_EQ(counters.samples_dependent, 1u);
+  EXPECT_EQ(counters.texels_touched, 4u);
+  EXPECT_EQ(counters.cache_misses, 1u);  // 8x8 RGBA8 twiddled = 256 B: 2x2 footprint in one line
+  EXPECT_EQ(counters.dram_bytes, 64u);
+}
+
+TEST(TextureUnit, TrilinearReadsTwoLevels) {
+  const Texture2D t("t", 64, 64, std::vector<glm::vec4>(64 * 64, glm::vec4(1.0f)),
+                    TexelFormat::kRGBA8, {Filter::kTrilinear, Wrap::kClamp}, true);
+  TextureCache cache({8192, 64, 4});
+  TextureCounters counters;
+  ExecTexUnit unit(&cache, &counters);
+  TextureBindings b;
+  b.textures[0] = &t;
+  unit.bind(&b);
+  Varying<2> uv;
+  uv.value = {0.5f, 0.5f};
+  uv.ddx = {2.5f / 64, 0};  // ~1.3 levels down
+  uv.ddy = {0, 2.5f / 64};
+  unit.sample(0, uv);
+  EXPECT_EQ(counters.samples_by_filter[2], 1u);
+  EXPECT_EQ(counters.samples_dependent, 0u);
+  EXPECT_EQ(counters.texels_touched, 8u);
+}
+
+}  // namespace
+}  // namespace skinsim::sim
