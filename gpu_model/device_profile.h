@@ -1,0 +1,123 @@
+// A device profile: every hardware figure the cost model and the emulator use, each with
+// where it comes from, how sure it is, and (for uncertain figures) a plausible range that
+// sensitivity analysis sweeps. Profiles are data files: data/devices/<name>.toml.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace skinsim::gpu_model {
+
+enum class Confidence { kLow, kMedium, kHigh, kCertain };
+
+const char* confidence_name(Confidence c);
+
+struct Figure {
+  double value = 0.0;
+  // Plausible range; min == max == value when the profile gives none.
+  double min = 0.0;
+  double max = 0.0;
+  bool has_range = false;
+  Confidence confidence = Confidence::kLow;
+  std::string source;
+};
+
+struct DeviceProfile {
+  std::string name;         // file stem, e.g. "ipad4"
+  std::string source_path;  // file it was loaded from
+  std::string device;       // e.g. "iPad (4th generation)"
+  std::string soc;          // e.g. "Apple A6X"
+  std::string gpu;          // e.g. "PowerVR SGX554MP4"
+
+  // [display]
+  Figure display_width;  // pixels
+  Figure display_height;
+
+  // [gpu]
+  Figure clock_mhz;
+  Figure cores;
+  Figure pipes_per_core;  // USSE pipes per core
+
+  // [alu]: cycles per instruction per pipe.
+  Figure vector_op_cycles;
+  Figure scalar_op_cycles;
+  Figure transcendental_op_cycles;
+  Figure texture_issue_cycles;  // issue slot of a texture instruction in the program
+  Figure blend_cycles;          // per blended fragment (SGX blends in the USSE)
+
+  // [texture]
+  Figure tmus_per_core;
+  Figure bilinear_per_tmu_clock;       // bilinear texel-quads per TMU per clock
+  Figure trilinear_bilinear_ops;       // bilinear operations per trilinear sample
+  Figure wide_format_bilinear_ops;     // cost multiplier of an FP16/FP32 sample
+  Figure dependent_read_stall_cycles;  // exposed TMU cycles per dependent read
+  Figure texture_cache_bytes;          // per core
+  Figure texture_cache_line_bytes;
+  Figure texture_cache_ways;
+
+  // [tile]
+  Figure tile_width;
+  Figure tile_height;
+  Figure tile_color_bytes_per_pixel;  // on-chip storage
+  Figure tile_depth_stencil_bytes_per_pixel;
+
+  // [memory]
+  Figure dram_peak_gb_per_s;  // 1 GB = 1e9 bytes
+  Figure dram_achievable_fraction;
+
+  // [tiler]
+  Figure tiler_triangles_per_clock_per_core;  // setup + cull
+  Figure tiler_tile_refs_per_clock_per_core;  // binning
+
+  // [parameter_buffer]
+  Figure pb_vertex_position_bytes;
+  Figure pb_bytes_per_varying_float;
+  Figure pb_bytes_per_triangle;
+  Figure pb_bytes_per_tile_ref;
+  Figure pb_vertices_read_per_tile_ref;
+
+  // [isp]
+  Figure isp_fragments_per_clock_per_core;
+  Figure isp_hsr_flush_cycles;
+
+  // [overhead]
+  Figure render_overhead_cycles;
+  Figure tile_overhead_cycles;
+};
+
+// What kind of number a figure is; decides validation.
+enum class FigureKind {
+  kCount,     // positive integer
+  kBytes,     // positive integer
+  kRate,      // > 0
+  kCycles,    // >= 0
+  kFraction,  // in (0, 1]
+};
+
+struct FigureSpec {
+  const char* path;  // dotted TOML path, e.g. "gpu.clock_mhz"
+  Figure DeviceProfile::*member;
+  FigureKind kind;
+  const char* unit;
+  // True when the emulator's counters depend on the figure, so varying it needs a re-run.
+  bool affects_counters;
+};
+
+// Every figure of a profile, in file order.
+const std::vector<FigureSpec>& figure_specs();
+
+// What the emulator needs from a profile.
+struct SimParameters {
+  int tile_width = 0;
+  int tile_height = 0;
+  int cores = 0;
+  int texture_cache_bytes = 0;  // per core
+  int texture_cache_line_bytes = 0;
+  int texture_cache_ways = 0;
+  int tile_color_bytes_per_pixel = 0;
+  int tile_depth_stencil_bytes_per_pixel = 0;
+};
+
+SimParameters sim_parameters(const DeviceProfile& profile);
+
+}  // namespace skinsim::gpu_model

@@ -1,0 +1,28 @@
+// User-facing errors of the cost model. Each message names the file (profiles) or the pass
+// and field (counters) at fault.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace skinsim::gpu_model {
+
+// Base of every error this module throws.
+class Error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// A device profile could not be found, parsed or validated.
+class ProfileError : public Error {
+ public:
+  using Error::Error;
+};
+
+// Pass counters are inconsistent with themselves or with the device profile.
+class CounterError : public Error {
+ public:
+  using Error::Error;
+};
+
+}  // namespace skinsim::gpu_model

@@ -1,0 +1,27 @@
+#include "gpu_model/model_terms.h"
+
+namespace skinsim::gpu_model {
+
+double shader_cycles(const sim::OpProfile& ops, const DeviceProfile& p) {
+  // Instruction count x issue cycles per class, as an offline shader compiler reports
+  // cycles (PVRShaderEditor); texture instructions take an issue slot (Imagination forum).
+  return ops.vector_ops * p.vector_op_cycles.value + ops.scalar_ops * p.scalar_op_cycles.value +
+         ops.transcendental_ops * p.transcendental_op_cycles.value +
+         ops.texture_reads() * p.texture_issue_cycles.value;
+}
+
+double cycles_per_ms(const DeviceProfile& p) {
+  return p.clock_mhz.value * 1e3;
+}
+
+double dram_bytes_per_ms(const DeviceProfile& p) {
+  // Peak GB/s x achievable fraction; 1 GB/s = 1e6 bytes per ms.
+  return p.dram_peak_gb_per_s.value * p.dram_achievable_fraction.value * 1e6;
+}
+
+double pb_vertex_bytes(const DeviceProfile& p, double varying_floats) {
+  // Position plus varyings, as the TA writes them to the parameter buffer.
+  return p.pb_vertex_position_bytes.value + varying_floats * p.pb_bytes_per_varying_float.value;
+}
+
+}  // namespace skinsim::gpu_model

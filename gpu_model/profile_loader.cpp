@@ -1,0 +1,266 @@
+#include "gpu_model/profile_loader.h"
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "gpu_model/errors.h"
+
+namespace skinsim::gpu_model {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* type_name(toml::node_type t) {
+  switch (t) {
+    case toml::node_type::table:
+      return "table";
+    case toml::node_type::array:
+      return "array";
+    case toml::node_type::string:
+      return "string";
+    case toml::node_type::integer:
+      return "integer";
+    case toml::node_type::floating_point:
+      return "float";
+    case toml::node_type::boolean:
+      return "boolean";
+    default:
+      return "date/time";
+  }
+}
+
+// Builds errors that name the file, the dotted field and the line.
+class Reporter {
+ public:
+  explicit Reporter(std::string file) : file_(std::move(file)) {}
+
+  [[noreturn]] void fail(const std::string& field, const toml::node* node,
+                         const std::string& what) const {
+    std::string where = file_;
+    if (node != nullptr && node->source().begin.line > 0) {
+      where += fmt::format(":{}", node->source().begin.line);
+    }
+    throw ProfileError(fmt::format("{}: field '{}': {}", where, field, what));
+  }
+
+  const std::string& file() const { return file_; }
+
+ private:
+  std::string file_;
+};
+
+const toml::table& require_table(const Reporter& r, const toml::table& parent,
+                                 const std::string& key, const std::string& path) {
+  const toml::node* node = parent.get(key);
+  if (node == nullptr) r.fail(path, nullptr, "missing");
+  if (!node->is_table()) {
+    r.fail(path, node, fmt::format("must be a table, got {}", type_name(node->type())));
+  }
+  return *node->as_table();
+}
+
+std::string require_string(const Reporter& r, const toml::table& parent, const std::string& key,
+                           const std::string& path) {
+  const toml::node* node = parent.get(key);
+  if (node == nullptr) r.fail(path, nullptr, "missing");
+  if (!node->is_string()) {
+    r.fail(path, node, fmt::format("must be a string, got {}", type_name(node->type())));
+  }
+  std::string s = node->as_string()->get();
+  if (s.empty()) r.fail(path, node, "must not be empty");
+  return s;
+}
+
+double require_number(const Reporter& r, const toml::node* node, const std::string& path) {
+  if (node == nullptr) r.fail(path, nullptr, "missing");
+  if (node->is_integer()) return static_cast<double>(node->as_integer()->get());
+  if (node->is_floating_point()) return node->as_floating_point()->get();
+  r.fail(path, node, fmt::format("must be a number, got {}", type_name(node->type())));
+}
+
+void check_unknown_keys(const Reporter& r, const toml::table& table,
+                        const std::set<std::string>& known, const std::string& prefix) {
+  for (const auto& [key, node] : table) {
+    if (known.count(std::string(key.str())) == 0) {
+      std::string path =
+          prefix.empty() ? std::string(key.str()) : fmt::format("{}.{}", prefix, key.str());
+      r.fail(path, &node, "unknown key");
+    }
+  }
+}
+
+// Checks a number against what its kind allows.
+void check_kind(const Reporter& r, const toml::node* node, const std::string& path, FigureKind kind,
+                double v) {
+  if (!std::isfinite(v)) r.fail(path, node, "must be finite");
+  switch (kind) {
+    case FigureKind::kCount:
+    case FigureKind::kBytes:
+      if (v < 1.0 || v != std::floor(v)) {
+        r.fail(path, node, fmt::format("must be a positive integer, got {}", v));
+      }
+      break;
+    case FigureKind::kRate:
+      if (v <= 0.0) r.fail(path, node, fmt::format("must be > 0, got {}", v));
+      break;
+    case FigureKind::kCycles:
+      if (v < 0.0) r.fail(path, node, fmt::format("must be >= 0, got {}", v));
+      break;
+    case FigureKind::kFraction:
+      if (v <= 0.0 || v > 1.0) r.fail(path, node, fmt::format("must be in (0, 1], got {}", v));
+      break;
+  }
+}
+
+Confidence parse_confidence(const Reporter& r, const toml::table& fig, const std::string& path) {
+  const std::string c = require_string(r, fig, "confidence", path);
+  if (c == "low") return Confidence::kLow;
+  if (c == "medium") return Confidence::kMedium;
+  if (c == "high") return Confidence::kHigh;
+  if (c == "certain") return Confidence::kCertain;
+  r.fail(path, fig.get("confidence"),
+         fmt::format("must be one of low, medium, high, certain; got '{}'", c));
+}
+
+Figure parse_figure(const Reporter& r, const toml::table& fig, const FigureSpec& spec) {
+  const std::string base = spec.path;
+  check_unknown_keys(r, fig, {"value", "range", "confidence", "source"}, base);
+  Figure f;
+  const std::string value_path = base + ".value";
+  f.value = require_number(r, fig.get("value"), value_path);
+  check_kind(r, fig.get("value"), value_path, spec.kind, f.value);
+  f.source = require_string(r, fig, "source", base + ".source");
+  f.confidence = parse_confidence(r, fig, base + ".confidence");
+  f.min = f.max = f.value;
+
+  const std::string range_path = base + ".range";
+  const toml::node* range = fig.get("range");
+  if (range == nullptr) {
+    // An uncertain figure without a range would escape the sensitivity analysis.
+    if (f.confidence == Confidence::kLow) {
+      r.fail(range_path, nullptr, "missing (required when confidence is low)");
+    }
+    return f;
+  }
+  const toml::array* arr = range->as_array();
+  if (arr == nullptr || arr->size() != 2) {
+    r.fail(range_path, range, "must be an array [min, max]");
+  }
+  f.min = require_number(r, arr->get(0), range_path + "[0]");
+  f.max = require_number(r, arr->get(1), range_path + "[1]");
+  check_kind(r, arr->get(0), range_path + "[0]", spec.kind, f.min);
+  check_kind(r, arr->get(1), range_path + "[1]", spec.kind, f.max);
+  if (!(f.min <= f.value && f.value <= f.max)) {
+    r.fail(range_path, range,
+           fmt::format("must satisfy min <= value <= max, got [{}, {}] with value {}", f.min, f.max,
+                       f.value));
+  }
+  f.has_range = true;
+  return f;
+}
+
+DeviceProfile parse_root(const Reporter& r, const toml::table& root) {
+  DeviceProfile p;
+  p.source_path = r.file();
+  p.name = fs::path(r.file()).stem().string();
+
+  // Section names and their keys, derived from the figure table.
+  std::set<std::string> sections = {"device"};
+  for (const FigureSpec& spec : figure_specs()) {
+    const std::string path = spec.path;
+    sections.insert(path.substr(0, path.find('.')));
+  }
+  check_unknown_keys(r, root, sections, "");
+
+  const toml::table& device = require_table(r, root, "device", "device");
+  check_unknown_keys(r, device, {"name", "soc", "gpu"}, "device");
+  p.device = require_string(r, device, "name", "device.name");
+  p.soc = require_string(r, device, "soc", "device.soc");
+  p.gpu = require_string(r, device, "gpu", "device.gpu");
+
+  for (const std::string& section : sections) {
+    if (section == "device") continue;
+    const toml::table& table = require_table(r, root, section, section);
+    std::set<std::string> keys;
+    for (const FigureSpec& spec : figure_specs()) {
+      const std::string path = spec.path;
+      if (path.substr(0, path.find('.')) == section) keys.insert(path.substr(path.find('.') + 1));
+    }
+    check_unknown_keys(r, table, keys, section);
+  }
+
+  for (const FigureSpec& spec : figure_specs()) {
+    const std::string path = spec.path;
+    const std::string section = path.substr(0, path.find('.'));
+    const std::string key = path.substr(path.find('.') + 1);
+    const toml::table& fig = require_table(r, *root.get(section)->as_table(), key, path);
+    p.*spec.member = parse_figure(r, fig, spec);
+  }
+  return p;
+}
+
+}  // namespace
+
+DeviceProfile parse_device_profile(std::string_view toml_text, const std::string& file_name) {
+  const Reporter reporter(file_name);
+  toml::table root;
+  try {
+    root = toml::parse(toml_text, file_name);
+  } catch (const toml::parse_error& e) {
+    throw ProfileError(fmt::format("{}:{}:{}: TOML syntax error: {}", file_name,
+                                   e.source().begin.line, e.source().begin.column,
+                                   e.description()));
+  }
+  return parse_root(reporter, root);
+}
+
+std::vector<std::string> list_devices(const std::string& data_dir) {
+  const fs::path dir = fs::path(data_dir) / "devices";
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) {
+    throw ProfileError(fmt::format("{}: device profile directory does not exist", dir.string()));
+  }
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    if (entry.is_regular_file() && entry.path().extension() == ".toml") {
+      names.push_back(entry.path().stem().string());
+    }
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+DeviceProfile load_device_profile(const std::string& name_or_path, const std::string& data_dir) {
+  const bool is_path =
+      name_or_path.find('/') != std::string::npos || fs::path(name_or_path).extension() == ".toml";
+  const fs::path path =
+      is_path ? fs::path(name_or_path) : fs::path(data_dir) / "devices" / (name_or_path + ".toml");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    std::string hint;
+    if (!is_path) {
+      std::string names;
+      try {
+        for (const std::string& n : list_devices(data_dir))
+          names += (names.empty() ? "" : ", ") + n;
+      } catch (const ProfileError&) {
+        names = "none";
+      }
+      hint = fmt::format(" (known devices: {})", names.empty() ? "none" : names);
+    }
+    throw ProfileError(
+        fmt::format("{}: cannot open device profile '{}'{}", path.string(), name_or_path, hint));
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_device_profile(text.str(), path.string());
+}
+
+}  // namespace skinsim::gpu_model

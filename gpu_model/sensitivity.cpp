@@ -1,0 +1,43 @@
+#include "gpu_model/sensitivity.h"
+
+#include "gpu_model/frame_cost.h"
+
+namespace skinsim::gpu_model {
+namespace {
+
+std::optional<double> frame_ms_with(const std::vector<sim::PassCounters>& passes,
+                                    const DeviceProfile& base, const FigureSpec& spec, double value,
+                                    const Recount& recount) {
+  DeviceProfile varied = base;
+  (varied.*spec.member).value = value;
+  if (!spec.affects_counters) return estimate_frame(passes, varied).frame_ms;
+  if (!recount) return std::nullopt;
+  return estimate_frame(recount(varied), varied).frame_ms;
+}
+
+}  // namespace
+
+std::vector<SensitivityRow> sensitivity(const std::vector<sim::PassCounters>& passes,
+                                        const DeviceProfile& profile, const Recount& recount) {
+  const double base_ms = estimate_frame(passes, profile).frame_ms;
+  std::vector<SensitivityRow> rows;
+  for (const FigureSpec& spec : figure_specs()) {
+    const Figure& f = profile.*spec.member;
+    if (!f.has_range) continue;
+    SensitivityRow row;
+    row.figure = spec.path;
+    row.unit = spec.unit;
+    row.confidence = f.confidence;
+    row.value_min = f.min;
+    row.value_base = f.value;
+    row.value_max = f.max;
+    row.needs_recount = spec.affects_counters;
+    row.frame_ms_base = base_ms;
+    row.frame_ms_min = frame_ms_with(passes, profile, spec, f.min, recount);
+    row.frame_ms_max = frame_ms_with(passes, profile, spec, f.max, recount);
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+}  // namespace skinsim::gpu_model

@@ -1,0 +1,38 @@
+// Sensitivity of the frame time to each uncertain profile figure.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gpu_model/device_profile.h"
+#include "sim/counters.h"
+
+namespace skinsim::gpu_model {
+
+struct SensitivityRow {
+  std::string figure;  // dotted path, e.g. "gpu.clock_mhz"
+  std::string unit;
+  Confidence confidence = Confidence::kLow;
+  double value_min = 0.0;
+  double value_base = 0.0;
+  double value_max = 0.0;
+  // Frame time with the figure at min / base / max. min and max are empty when the figure
+  // changes what the emulator counts and no recount was supplied.
+  std::optional<double> frame_ms_min;
+  double frame_ms_base = 0.0;
+  std::optional<double> frame_ms_max;
+  bool needs_recount = false;  // the figure affects the counters (see FigureSpec)
+};
+
+// Re-runs the emulator for a varied profile and returns that frame's pass counters.
+using Recount = std::function<std::vector<sim::PassCounters>(const DeviceProfile&)>;
+
+// One row per figure that has a range, in profile order. Figures that the emulator's counters
+// depend on (texture cache size/line/ways, tile size) are evaluated through `recount` when
+// given; without it their rows carry only the base time. Deterministic.
+std::vector<SensitivityRow> sensitivity(const std::vector<sim::PassCounters>& passes,
+                                        const DeviceProfile& profile, const Recount& recount = {});
+
+}  // namespace skinsim::gpu_model

@@ -1,0 +1,96 @@
+#include "gpu_model/tile_cost.h"
+
+#include <algorithm>
+
+#include "gpu_model/model_terms.h"
+
+namespace skinsim::gpu_model {
+namespace {
+
+bool has_work(const sim::TileCounters& t) {
+  return t.triangle_refs != 0 || t.fragments_depth_tested != 0 || t.fragments_shaded != 0 ||
+         t.texture.samples() != 0 || t.color_load_bytes != 0 || t.color_store_bytes != 0 ||
+         t.depth_load_bytes != 0 || t.depth_store_bytes != 0;
+}
+
+double texture_cycles(const sim::TextureCounters& tex, const DeviceProfile& p) {
+  const auto nearest = static_cast<double>(tex.samples_by_filter[0]);
+  const auto bilinear = static_cast<double>(tex.samples_by_filter[1]);
+  const auto trilinear = static_cast<double>(tex.samples_by_filter[2]);
+  const auto samples = static_cast<double>(tex.samples());
+  // A TMU delivers one bilinear quad per clock; nearest takes the same slot, trilinear two
+  // (two mip levels).
+  double ops = nearest + bilinear + trilinear * p.trilinear_bilinear_ops.value;
+  // Wide formats run at a fraction of the rate. The counters do not split wide samples by
+  // filter, so wide samples are assumed to have the tile's average filter mix.
+  if (samples > 0.0) {
+    ops += static_cast<double>(tex.samples_wide_format) * (p.wide_format_bilinear_ops.value - 1.0) *
+           (ops / samples);
+  }
+  const double tmus = p.tmus_per_core.value;
+  // Dependent reads cannot be prefetched before the program runs (Imagination forum): each
+  // adds exposed stall cycles, spread over the core's TMUs.
+  return ops / (tmus * p.bilinear_per_tmu_clock.value) +
+         static_cast<double>(tex.samples_dependent) * p.dependent_read_stall_cycles.value / tmus;
+}
+
+}  // namespace
+
+double TileWork::cycles() const {
+  if (!rendered) return 0.0;
+  return overhead_cycles + std::max({isp_cycles, alu_cycles, texture_cycles});
+}
+
+Unit TileWork::bottleneck() const {
+  Unit unit = Unit::kOverhead;
+  double most = overhead_cycles;
+  // Fixed order keeps ties deterministic.
+  for (const auto& [u, c] : {std::pair{Unit::kIsp, isp_cycles}, std::pair{Unit::kAlu, alu_cycles},
+                             std::pair{Unit::kTexture, texture_cycles}}) {
+    if (c > most) {
+      most = c;
+      unit = u;
+    }
+  }
+  return unit;
+}
+
+TileWork estimate_tile(const sim::TileCounters& tile, const sim::PassCounters& pass,
+                       const std::vector<double>& fragment_cycles, const DeviceProfile& p) {
+  TileWork w;
+  w.rendered = has_work(tile);
+  if (!w.rendered) return w;
+
+  // ISP: every rasterised fragment is depth/stencil tested before shading (deferred HSR,
+  // PowerVR Architecture Guide); blended draws force tag-buffer flushes.
+  w.isp_cycles =
+      static_cast<double>(tile.fragments_depth_tested) / p.isp_fragments_per_clock_per_core.value +
+      tile.hsr_flushes * p.isp_hsr_flush_cycles.value;
+
+  // USSE: visible fragments x their program's issue cycles, plus blending, which SGX runs as
+  // appended USSE code; spread over the core's pipes.
+  double pipe_cycles = static_cast<double>(tile.fragments_blended) * p.blend_cycles.value;
+  for (const sim::DrawFragments& df : tile.shaded_by_draw) {
+    pipe_cycles += static_cast<double>(df.fragments_shaded) * fragment_cycles[df.draw];
+  }
+  w.alu_cycles = pipe_cycles / p.pipes_per_core.value;
+
+  w.texture_cycles = texture_cycles(tile.texture, p);
+  w.overhead_cycles = p.tile_overhead_cycles.value;
+
+  // The 3D reads the tile's control stream and the primitive data it references back from
+  // the parameter buffer (hardware.md).
+  const double vertex_bytes =
+      pb_vertex_bytes(p, static_cast<double>(pass.varying_floats_per_vertex));
+  w.dram.parameter_read = static_cast<double>(tile.triangle_refs) *
+                          (p.pb_bytes_per_tile_ref.value + p.pb_bytes_per_triangle.value +
+                           p.pb_vertices_read_per_tile_ref.value * vertex_bytes);
+  w.dram.texture = static_cast<double>(tile.texture.dram_bytes);
+  w.dram.color_load = static_cast<double>(tile.color_load_bytes);
+  w.dram.color_store = static_cast<double>(tile.color_store_bytes);
+  w.dram.depth_load = static_cast<double>(tile.depth_load_bytes);
+  w.dram.depth_store = static_cast<double>(tile.depth_store_bytes);
+  return w;
+}
+
+}  // namespace skinsim::gpu_model

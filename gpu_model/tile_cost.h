@@ -1,0 +1,32 @@
+// Cost of one tile on a 3D core: depth test (ISP), shading (USSE), texturing (TMU), and the
+// DRAM bytes the tile moves.
+#pragma once
+
+#include <vector>
+
+#include "gpu_model/device_profile.h"
+#include "gpu_model/timing.h"
+#include "sim/counters.h"
+
+namespace skinsim::gpu_model {
+
+struct TileWork {
+  bool rendered = false;  // false: no work and no traffic (outside the render area)
+  double isp_cycles = 0.0;
+  double alu_cycles = 0.0;
+  double texture_cycles = 0.0;
+  double overhead_cycles = 0.0;
+  DramBytes dram;  // parameter_write stays 0
+
+  // ISP, USSE and TMU pipeline within a tile (a TBDR streams depth-tested fragments into the
+  // USSE, whose texture requests go to the TMUs), so the tile takes as long as its busiest
+  // unit, assuming perfect overlap, plus a fixed per-tile cost.
+  double cycles() const;
+  Unit bottleneck() const;
+};
+
+// `fragment_cycles` holds, per draw of the pass, one fragment's issue cycles on one pipe.
+TileWork estimate_tile(const sim::TileCounters& tile, const sim::PassCounters& pass,
+                       const std::vector<double>& fragment_cycles, const DeviceProfile& profile);
+
+}  // namespace skinsim::gpu_model

@@ -1,0 +1,84 @@
+#include "gpu_model/timing_table.h"
+
+#include <fmt/format.h>
+
+#include "gpu_model/profile_loader.h"
+
+namespace skinsim::gpu_model {
+namespace {
+
+constexpr double kMegabyte = 1e6;
+
+double util(const PassTiming& p, Unit u) {
+  return 100.0 * p.utilisation[static_cast<int>(u)];
+}
+
+std::string ms_or_dash(const std::optional<double>& ms) {
+  return ms ? fmt::format("{:.3f}", *ms) : std::string("re-run");
+}
+
+}  // namespace
+
+std::string format_frame_table(const FrameTiming& frame) {
+  std::string out = fmt::format(
+      "{:<24} {:>8} {:>8} {:>8} {:>10} {:>5} {:>5} {:>5} {:>5} {:>5} {:>9}\n", "pass", "TA ms",
+      "3D ms", "frame ms", "bottleneck", "ALU%", "TEX%", "ISP%", "BW%", "bal%", "DRAM MB");
+  for (std::size_t i = 0; i < frame.passes.size(); ++i) {
+    const PassTiming& p = frame.passes[i];
+    out += fmt::format(
+        "{:<24} {:>8.3f} {:>8.3f} {:>8.3f} {:>10} {:>5.0f} {:>5.0f} {:>5.0f} {:>5.0f} {:>5.0f} "
+        "{:>9.2f}\n",
+        p.name, p.ta_ms, p.render_ms, frame.schedule[i].exposed_ms, unit_name(p.bottleneck),
+        util(p, Unit::kAlu), util(p, Unit::kTexture), util(p, Unit::kIsp),
+        util(p, Unit::kBandwidth), 100.0 * p.balance, p.dram.total() / kMegabyte);
+  }
+  out +=
+      fmt::format("{:<24} {:>8} {:>8} {:>8.3f} {:>10} {:>29} {:>9.2f}\n", "frame", "", "",
+                  frame.frame_ms, frame.bandwidth_ms > frame.pipeline_ms ? "bandwidth" : "pipeline",
+                  "", frame.dram_bytes / kMegabyte);
+  out += fmt::format("{} at {:.1f} fps on {}\n", fmt::format("{:.3f} ms", frame.frame_ms),
+                     frame.fps, frame.device);
+  return out;
+}
+
+std::string format_sensitivity_table(const std::vector<SensitivityRow>& rows) {
+  std::string out = fmt::format("{:<44} {:>8} {:>27} {:>10} {:>10} {:>10}\n", "figure", "conf.",
+                                "min / base / max", "ms @min", "ms @base", "ms @max");
+  for (const SensitivityRow& r : rows) {
+    out += fmt::format("{:<44} {:>8} {:>27} {:>10} {:>10.3f} {:>10}\n",
+                       fmt::format("{} ({})", r.figure, r.unit), confidence_name(r.confidence),
+                       fmt::format("{:g} / {:g} / {:g}", r.value_min, r.value_base, r.value_max),
+                       ms_or_dash(r.frame_ms_min), r.frame_ms_base, ms_or_dash(r.frame_ms_max));
+  }
+  return out;
+}
+
+std::string format_device_table(const std::vector<DeviceProfile>& profiles) {
+  std::string out = fmt::format(
+      "{:<9} {:<22} {:<18} {:>10} {:>7} {:>6} {:>7} {:>4} {:>12} {:>6} {:>9}\n", "name", "device",
+      "GPU", "display", "cores", "MHz", "GFLOPS", "TMUs", "DRAM GB/s", "tile", "tex$ KiB");
+  for (const DeviceProfile& p : profiles) {
+    // Peak FP32: cores x pipes x 8 FLOP (vec4 multiply-add) per clock (hardware.md).
+    const double gflops = p.cores.value * p.pipes_per_core.value * 8.0 * p.clock_mhz.value / 1e3;
+    out += fmt::format(
+        "{:<9} {:<22} {:<18} {:>10} {:>7} {:>6g} {:>7.1f} {:>4g} {:>12} {:>6} {:>9g}\n", p.name,
+        p.device, p.gpu, fmt::format("{:g}x{:g}", p.display_width.value, p.display_height.value),
+        fmt::format("{:g}x{:g}", p.cores.value, p.pipes_per_core.value), p.clock_mhz.value, gflops,
+        p.cores.value * p.tmus_per_core.value,
+        fmt::format("{:.1f} ({:.1f})", p.dram_peak_gb_per_s.value,
+                    p.dram_peak_gb_per_s.value * p.dram_achievable_fraction.value),
+        fmt::format("{:g}x{:g}", p.tile_width.value, p.tile_height.value),
+        p.texture_cache_bytes.value / 1024.0);
+  }
+  return out;
+}
+
+std::string format_device_table(const std::string& data_dir) {
+  std::vector<DeviceProfile> profiles;
+  for (const std::string& name : list_devices(data_dir)) {
+    profiles.push_back(load_device_profile(name, data_dir));
+  }
+  return format_device_table(profiles);
+}
+
+}  // namespace skinsim::gpu_model

@@ -1,0 +1,194 @@
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "gpu_model/device_profile.h"
+#include "gpu_model/errors.h"
+#include "gpu_model/profile_loader.h"
+#include "gpu_model/timing_table.h"
+#include "test_support.h"
+
+namespace skinsim::gpu_model {
+namespace {
+
+using testing::kDataDir;
+
+std::string shipped_text(const std::string& name) {
+  std::ifstream in(kDataDir + "/devices/" + name + ".toml");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string replace_once(std::string text, const std::string& from, const std::string& to) {
+  const auto pos = text.find(from);
+  EXPECT_NE(pos, std::string::npos) << from;
+  if (pos != std::string::npos) text.replace(pos, from.size(), to);
+  return text;
+}
+
+// Parses `text` and returns the error message (empty when it parsed).
+std::string parse_error(const std::string& text) {
+  try {
+    parse_device_profile(text, "edited.toml");
+  } catch (const ProfileError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Profile, ShippedProfilesLoadAndAreListed) {
+  const auto names = list_devices(kDataDir);
+  ASSERT_EQ(names, (std::vector<std::string>{"ipad3", "ipad4", "iphone5"}));
+  for (const std::string& name : names) {
+    const DeviceProfile p = load_device_profile(name, kDataDir);
+    EXPECT_EQ(p.name, name);
+    EXPECT_FALSE(p.gpu.empty());
+    for (const FigureSpec& spec : figure_specs()) {
+      const Figure& f = p.*spec.member;
+      EXPECT_FALSE(f.source.empty()) << name << " " << spec.path;
+      EXPECT_LE(f.min, f.value) << spec.path;
+      EXPECT_GE(f.max, f.value) << spec.path;
+    }
+  }
+}
+
+TEST(Profile, Ipad4KeyFigures) {
+  const DeviceProfile p = load_device_profile("ipad4", kDataDir);
+  EXPECT_EQ(p.gpu, "PowerVR SGX554MP4");
+  EXPECT_EQ(p.display_width.value, 2048);
+  EXPECT_EQ(p.display_height.value, 1536);
+  EXPECT_EQ(p.cores.value, 4);
+  EXPECT_EQ(p.pipes_per_core.value, 8);
+  EXPECT_EQ(p.clock_mhz.confidence, Confidence::kLow);
+  EXPECT_TRUE(p.clock_mhz.has_range);
+  EXPECT_DOUBLE_EQ(p.dram_peak_gb_per_s.value, 17.06);
+  const SimParameters s = sim_parameters(p);
+  EXPECT_EQ(s.tile_width, 32);
+  EXPECT_EQ(s.tile_height, 32);
+  EXPECT_EQ(s.cores, 4);
+  EXPECT_EQ(s.texture_cache_bytes, 8192);
+  EXPECT_EQ(s.texture_cache_line_bytes, 64);
+  EXPECT_EQ(s.texture_cache_ways, 4);
+}
+
+TEST(Profile, PathAndNameResolveToTheSameFile) {
+  const DeviceProfile by_name = load_device_profile("iphone5", kDataDir);
+  const DeviceProfile by_path =
+      load_device_profile(kDataDir + "/devices/iphone5.toml", "/nonexistent");
+  EXPECT_EQ(by_name.display_width.value, by_path.display_width.value);
+  EXPECT_EQ(by_path.name, "iphone5");
+}
+
+TEST(Profile, UnknownDeviceNamesTheFileAndKnownDevices) {
+  try {
+    load_device_profile("ipad9", kDataDir);
+    FAIL() << "expected ProfileError";
+  } catch (const ProfileError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("ipad9.toml"), std::string::npos) << m;
+    EXPECT_NE(m.find("ipad4"), std::string::npos) << m;
+  }
+}
+
+TEST(Profile, ShippedTextParses) {
+  EXPECT_EQ(parse_error(shipped_text("ipad4")), "");
+}
+
+TEST(Profile, MissingFieldIsNamed) {
+  std::string text = shipped_text("ipad4");
+  const auto begin = text.find("[isp.hsr_flush_cycles]");
+  const auto end = text.find("[overhead.render_cycles]");
+  ASSERT_NE(begin, std::string::npos);
+  text.erase(begin, end - begin);
+  const std::string m = parse_error(text);
+  EXPECT_NE(m.find("edited.toml"), std::string::npos) << m;
+  EXPECT_NE(m.find("isp.hsr_flush_cycles"), std::string::npos) << m;
+  EXPECT_NE(m.find("missing"), std::string::npos) << m;
+
+  const std::string source = parse_error(
+      replace_once(shipped_text("ipad4"),
+                   "source = \"SGX554MP4: four cores (AnandTech iPad 4 review, GPU page)\"\n", ""));
+  EXPECT_NE(source.find("gpu.cores.source"), std::string::npos) << source;
+  EXPECT_NE(source.find("missing"), std::string::npos) << source;
+}
+
+TEST(Profile, UnknownKeyIsNamed) {
+  const std::string m =
+      parse_error(replace_once(shipped_text("ipad4"), "[gpu.cores]\n", "[gpu.cores]\nvalu = 4\n"));
+  EXPECT_NE(m.find("gpu.cores.valu"), std::string::npos) << m;
+  EXPECT_NE(m.find("unknown key"), std::string::npos) << m;
+
+  const std::string section = parse_error(replace_once(shipped_text("ipad4"), "[gpu.cores]\n",
+                                                       "[gpu.shader_cores]\nvalue = 4\n"
+                                                       "[gpu.cores]\n"));
+  EXPECT_NE(section.find("gpu.shader_cores"), std::string::npos) << section;
+}
+
+TEST(Profile, WrongTypeIsNamed) {
+  const std::string m = parse_error(replace_once(
+      shipped_text("ipad4"), "[gpu.clock_mhz]\nvalue = 300.0", "[gpu.clock_mhz]\nvalue = \"300\""));
+  EXPECT_NE(m.find("gpu.clock_mhz.value"), std::string::npos) << m;
+  EXPECT_NE(m.find("must be a number, got string"), std::string::npos) << m;
+}
+
+TEST(Profile, NonPositiveRateIsNamed) {
+  const std::string m = parse_error(
+      replace_once(shipped_text("ipad4"), "[isp.fragments_per_clock_per_core]\nvalue = 16.0",
+                   "[isp.fragments_per_clock_per_core]\nvalue = -16.0"));
+  EXPECT_NE(m.find("isp.fragments_per_clock_per_core.value"), std::string::npos) << m;
+  EXPECT_NE(m.find("must be > 0"), std::string::npos) << m;
+  const std::string zero = parse_error(
+      replace_once(shipped_text("ipad4"), "[gpu.clock_mhz]\nvalue = 300.0\nrange = [280.0, 300.0]",
+                   "[gpu.clock_mhz]\nvalue = 0\nrange = [0, 300.0]"));
+  EXPECT_NE(zero.find("gpu.clock_mhz.value"), std::string::npos) << zero;
+}
+
+TEST(Profile, FractionOutsideUnitIntervalIsNamed) {
+  const std::string m = parse_error(replace_once(
+      shipped_text("ipad4"), "[memory.achievable_fraction]\nvalue = 0.6\nrange = [0.4, 0.8]",
+      "[memory.achievable_fraction]\nvalue = 1.5\nrange = [0.4, 1.8]"));
+  EXPECT_NE(m.find("memory.achievable_fraction.value"), std::string::npos) << m;
+  EXPECT_NE(m.find("(0, 1]"), std::string::npos) << m;
+}
+
+TEST(Profile, NonIntegerCountIsNamed) {
+  const std::string m = parse_error(
+      replace_once(shipped_text("ipad4"), "[gpu.cores]\nvalue = 4", "[gpu.cores]\nvalue = 3.5"));
+  EXPECT_NE(m.find("gpu.cores.value"), std::string::npos) << m;
+  EXPECT_NE(m.find("positive integer"), std::string::npos) << m;
+}
+
+TEST(Profile, RangeMustContainValueAndIsRequiredWhenLowConfidence) {
+  const std::string outside = parse_error(
+      replace_once(shipped_text("ipad4"), "range = [280.0, 300.0]", "range = [200.0, 250.0]"));
+  EXPECT_NE(outside.find("gpu.clock_mhz.range"), std::string::npos) << outside;
+
+  const std::string missing =
+      parse_error(replace_once(shipped_text("ipad4"), "range = [280.0, 300.0]\n", ""));
+  EXPECT_NE(missing.find("gpu.clock_mhz.range"), std::string::npos) << missing;
+  EXPECT_NE(missing.find("confidence is low"), std::string::npos) << missing;
+}
+
+TEST(Profile, BadConfidenceAndSyntaxAreReported) {
+  const std::string conf = parse_error(
+      replace_once(shipped_text("ipad4"), "confidence = \"certain\"", "confidence = \"sure\""));
+  EXPECT_NE(conf.find("display.width.confidence"), std::string::npos) << conf;
+
+  const std::string syntax = parse_error("[gpu\nvalue = 1\n");
+  EXPECT_NE(syntax.find("edited.toml:1"), std::string::npos) << syntax;
+  EXPECT_NE(syntax.find("TOML syntax error"), std::string::npos) << syntax;
+}
+
+TEST(Profile, DeviceTableListsShippedProfiles) {
+  const std::string table = format_device_table(kDataDir);
+  for (const char* text : {"ipad3", "ipad4", "iphone5", "SGX554MP4", "SGX543MP3", "2048x1536",
+                           "1136x640", "4x8", "76.8"}) {
+    EXPECT_NE(table.find(text), std::string::npos) << text << "\n" << table;
+  }
+}
+
+}  // namespace
+}  // namespace skinsim::gpu_model

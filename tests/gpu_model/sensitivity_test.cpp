@@ -1,0 +1,107 @@
+#include "gpu_model/sensitivity.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "gpu_model/frame_cost.h"
+#include "gpu_model/timing_json.h"
+#include "gpu_model/timing_table.h"
+#include "test_support.h"
+
+namespace skinsim::gpu_model {
+namespace {
+
+using testing::add_draw;
+using testing::make_pass;
+using testing::shade;
+using testing::sum_tiles;
+
+// A texture-heavy pass whose misses scale inversely with the texture cache size, standing in
+// for an emulator re-run.
+sim::PassCounters pass_for_cache(double cache_bytes) {
+  sim::PassCounters pass = make_pass(8, 6, 4);
+  const auto draw = add_draw(pass, 8);
+  for (std::size_t i = 0; i < pass.tiles.size(); ++i) {
+    shade(pass, i, draw, 1024);
+    sim::TileCounters& tile = pass.tiles[i];
+    tile.texture.samples_by_filter[2] = 2048;
+    tile.texture.dram_bytes = static_cast<std::uint64_t>(64 * 8192 * 4096.0 / cache_bytes);
+    tile.color_store_bytes = 4096;
+    tile.triangle_refs = 10;
+  }
+  pass.vertices_shaded = 2000;
+  pass.triangles_in = 4000;
+  pass.triangles_binned = 3000;
+  sum_tiles(pass);
+  return pass;
+}
+
+const SensitivityRow& row(const std::vector<SensitivityRow>& rows, const std::string& figure) {
+  const auto it = std::find_if(rows.begin(), rows.end(),
+                               [&](const SensitivityRow& r) { return r.figure == figure; });
+  EXPECT_NE(it, rows.end()) << figure;
+  return *it;
+}
+
+TEST(Sensitivity, OneRowPerRangedFigureWithFrameTimesAtTheEnds) {
+  const DeviceProfile p = load_device_profile("ipad4", testing::kDataDir);
+  const std::vector<sim::PassCounters> passes = {pass_for_cache(8192)};
+  const auto rows = sensitivity(passes, p);
+  std::size_t ranged = 0;
+  for (const FigureSpec& spec : figure_specs()) ranged += (p.*spec.member).has_range ? 1 : 0;
+  EXPECT_EQ(rows.size(), ranged);
+
+  const double base = estimate_frame(passes, p).frame_ms;
+  const SensitivityRow& clock = row(rows, "gpu.clock_mhz");
+  EXPECT_DOUBLE_EQ(clock.frame_ms_base, base);
+  EXPECT_DOUBLE_EQ(clock.value_min, 280.0);
+  ASSERT_TRUE(clock.frame_ms_min && clock.frame_ms_max);
+  EXPECT_GT(*clock.frame_ms_min, base);  // slower clock, longer frame
+  EXPECT_DOUBLE_EQ(*clock.frame_ms_max, base);
+
+  const SensitivityRow& fraction = row(rows, "memory.achievable_fraction");
+  ASSERT_TRUE(fraction.frame_ms_min && fraction.frame_ms_max);
+  EXPECT_GE(*fraction.frame_ms_min, base);
+  EXPECT_LE(*fraction.frame_ms_max, base);
+
+  const SensitivityRow& cache = row(rows, "texture.cache_bytes");
+  EXPECT_TRUE(cache.needs_recount);
+  EXPECT_FALSE(cache.frame_ms_min.has_value());
+  EXPECT_FALSE(cache.frame_ms_max.has_value());
+
+  const std::string table = format_sensitivity_table(rows);
+  EXPECT_NE(table.find("gpu.clock_mhz"), std::string::npos) << table;
+  EXPECT_NE(table.find("re-run"), std::string::npos) << table;
+  EXPECT_EQ(to_json(rows).size(), rows.size());
+}
+
+TEST(Sensitivity, CacheFiguresUseTheRecountHook) {
+  const DeviceProfile p = load_device_profile("ipad4", testing::kDataDir);
+  int calls = 0;
+  const Recount recount = [&](const DeviceProfile& varied) {
+    ++calls;
+    return std::vector<sim::PassCounters>{pass_for_cache(varied.texture_cache_bytes.value)};
+  };
+  const auto rows = sensitivity({pass_for_cache(8192)}, p, recount);
+  int affecting = 0;
+  for (const FigureSpec& spec : figure_specs()) {
+    affecting += (spec.affects_counters && (p.*spec.member).has_range) ? 2 : 0;
+  }
+  EXPECT_EQ(calls, affecting);
+  const SensitivityRow& cache = row(rows, "texture.cache_bytes");
+  ASSERT_TRUE(cache.frame_ms_min && cache.frame_ms_max);
+  EXPECT_GT(*cache.frame_ms_min, cache.frame_ms_base);  // smaller cache, more misses
+  EXPECT_LT(*cache.frame_ms_max, cache.frame_ms_base);
+}
+
+TEST(Sensitivity, IsDeterministic) {
+  const DeviceProfile p = load_device_profile("ipad3", testing::kDataDir);
+  sim::PassCounters pass = pass_for_cache(8192);
+  const auto a = sensitivity({pass}, p);
+  const auto b = sensitivity({pass}, p);
+  EXPECT_EQ(to_json(a), to_json(b));
+}
+
+}  // namespace
+}  // namespace skinsim::gpu_model
