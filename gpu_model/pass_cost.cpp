@@ -50,7 +50,7 @@ PassTiming estimate_pass(const sim::PassCounters& pass, const DeviceProfile& p) 
     tt.isp_cycles = w.isp_cycles;
     tt.alu_cycles = w.alu_cycles;
     tt.texture_cycles = w.texture_cycles;
-    tt.overhead_cycles = w.rendered ? w.overhead_cycles : 0.0;
+    tt.overhead_cycles = w.overhead_cycles;
     t.tiles.push_back(tt);
     isp += w.isp_cycles;
     alu += w.alu_cycles;

@@ -203,6 +203,14 @@ DeviceProfile parse_root(const Reporter& r, const toml::table& root) {
     const toml::table& fig = require_table(r, *root.get(section)->as_table(), key, path);
     p.*spec.member = parse_figure(r, fig, spec);
   }
+
+  // The emulator builds a set-associative cache: whole lines in whole sets.
+  const double set_bytes = p.texture_cache_line_bytes.value * p.texture_cache_ways.value;
+  if (std::fmod(p.texture_cache_bytes.value, set_bytes) != 0.0) {
+    r.fail("texture.cache_bytes", root.at_path("texture.cache_bytes").node(),
+           fmt::format("{} is not a multiple of cache_line_bytes x cache_ways = {}",
+                       p.texture_cache_bytes.value, set_bytes));
+  }
   return p;
 }
 

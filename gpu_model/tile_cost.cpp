@@ -37,7 +37,6 @@ double texture_cycles(const sim::TextureCounters& tex, const DeviceProfile& p) {
 }  // namespace
 
 double TileWork::cycles() const {
-  if (!rendered) return 0.0;
   return overhead_cycles + std::max({isp_cycles, alu_cycles, texture_cycles});
 }
 
@@ -58,8 +57,7 @@ Unit TileWork::bottleneck() const {
 TileWork estimate_tile(const sim::TileCounters& tile, const sim::PassCounters& pass,
                        const std::vector<double>& fragment_cycles, const DeviceProfile& p) {
   TileWork w;
-  w.rendered = has_work(tile);
-  if (!w.rendered) return w;
+  if (!has_work(tile)) return w;
 
   // ISP: every rasterised fragment is depth/stencil tested before shading (deferred HSR,
   // PowerVR Architecture Guide); blended draws force tag-buffer flushes.

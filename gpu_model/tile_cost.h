@@ -11,7 +11,6 @@
 namespace skinsim::gpu_model {
 
 struct TileWork {
-  bool rendered = false;  // false: no work and no traffic (outside the render area)
   double isp_cycles = 0.0;
   double alu_cycles = 0.0;
   double texture_cycles = 0.0;
@@ -25,6 +24,7 @@ struct TileWork {
   Unit bottleneck() const;
 };
 
+// A tile with no work and no traffic lies outside the render area and costs nothing.
 // `fragment_cycles` holds, per draw of the pass, one fragment's issue cycles on one pipe.
 TileWork estimate_tile(const sim::TileCounters& tile, const sim::PassCounters& pass,
                        const std::vector<double>& fragment_cycles, const DeviceProfile& profile);

@@ -22,7 +22,7 @@ std::string ms_or_dash(const std::optional<double>& ms) {
 std::string format_frame_table(const FrameTiming& frame) {
   std::string out = fmt::format(
       "{:<24} {:>8} {:>8} {:>8} {:>10} {:>5} {:>5} {:>5} {:>5} {:>5} {:>9}\n", "pass", "TA ms",
-      "3D ms", "frame ms", "bottleneck", "ALU%", "TEX%", "ISP%", "BW%", "bal%", "DRAM MB");
+      "3D ms", "exposed", "bottleneck", "ALU%", "TEX%", "ISP%", "BW%", "bal%", "DRAM MB");
   for (std::size_t i = 0; i < frame.passes.size(); ++i) {
     const PassTiming& p = frame.passes[i];
     out += fmt::format(
@@ -42,11 +42,12 @@ std::string format_frame_table(const FrameTiming& frame) {
 }
 
 std::string format_sensitivity_table(const std::vector<SensitivityRow>& rows) {
-  std::string out = fmt::format("{:<44} {:>8} {:>27} {:>10} {:>10} {:>10}\n", "figure", "conf.",
+  std::string out = fmt::format("{:<58} {:>8} {:>22} {:>9} {:>9} {:>9}\n", "figure", "conf.",
                                 "min / base / max", "ms @min", "ms @base", "ms @max");
   for (const SensitivityRow& r : rows) {
-    out += fmt::format("{:<44} {:>8} {:>27} {:>10} {:>10.3f} {:>10}\n",
-                       fmt::format("{} ({})", r.figure, r.unit), confidence_name(r.confidence),
+    out += fmt::format("{:<58} {:>8} {:>22} {:>9} {:>9.3f} {:>9}\n",
+                       r.unit.empty() ? r.figure : fmt::format("{} ({})", r.figure, r.unit),
+                       confidence_name(r.confidence),
                        fmt::format("{:g} / {:g} / {:g}", r.value_min, r.value_base, r.value_max),
                        ms_or_dash(r.frame_ms_min), r.frame_ms_base, ms_or_dash(r.frame_ms_max));
   }

@@ -69,6 +69,18 @@ TEST(PassCost, BandwidthBoundPassTakesBytesOverBandwidth) {
   EXPECT_EQ(t.bottleneck, Unit::kBandwidth);
 }
 
+TEST(PassCost, TilesWithoutWorkOrTrafficCostNothing) {
+  const DeviceProfile p = round_profile();
+  sim::PassCounters pass = make_pass(3, 1, 4);
+  pass.tiles[1].color_store_bytes = 4096;  // a cleared tile is still stored
+  sum_tiles(pass);
+  const PassTiming t = estimate_pass(pass, p);
+  EXPECT_DOUBLE_EQ(t.tiles[0].ms, 0.0);
+  EXPECT_DOUBLE_EQ(t.tiles[1].ms, 32 / kCyclesPerMs);
+  EXPECT_DOUBLE_EQ(t.tiles[2].ms, 0.0);
+  EXPECT_DOUBLE_EQ(busy(t, Unit::kOverhead), 32 / kCyclesPerMs / 4 + kRenderOverheadMs);
+}
+
 TEST(PassCost, TextureTermCountsBilinearOpsAndDependentStalls) {
   const DeviceProfile p = round_profile();
   sim::PassCounters pass = make_pass(1, 1, 4);

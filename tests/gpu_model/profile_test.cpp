@@ -172,6 +172,14 @@ TEST(Profile, RangeMustContainValueAndIsRequiredWhenLowConfidence) {
   EXPECT_NE(missing.find("confidence is low"), std::string::npos) << missing;
 }
 
+TEST(Profile, CacheSizeMustHoldWholeSets) {
+  const std::string m =
+      parse_error(replace_once(shipped_text("ipad4"), "[texture.cache_bytes]\nvalue = 8192",
+                               "[texture.cache_bytes]\nvalue = 8000"));
+  EXPECT_NE(m.find("texture.cache_bytes"), std::string::npos) << m;
+  EXPECT_NE(m.find("multiple"), std::string::npos) << m;
+}
+
 TEST(Profile, BadConfidenceAndSyntaxAreReported) {
   const std::string conf = parse_error(
       replace_once(shipped_text("ipad4"), "confidence = \"certain\"", "confidence = \"sure\""));
