@@ -200,7 +200,14 @@ DeviceProfile parse_root(const Reporter& r, const toml::table& root) {
     const std::string path = spec.path;
     const std::string section = path.substr(0, path.find('.'));
     const std::string key = path.substr(path.find('.') + 1);
-    const toml::table& fig = require_table(r, *root.get(section)->as_table(), key, path);
+    const toml::node* node = root.get(section)->as_table()->get(key);
+    if (node == nullptr) r.fail(path, nullptr, "missing");
+    if (!node->is_table()) {
+      r.fail(path, node,
+             fmt::format("must be a table with value, source, confidence (and range), got {}",
+                         type_name(node->type())));
+    }
+    const toml::table& fig = *node->as_table();
     p.*spec.member = parse_figure(r, fig, spec);
   }
 

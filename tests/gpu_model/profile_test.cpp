@@ -132,6 +132,14 @@ TEST(Profile, WrongTypeIsNamed) {
       shipped_text("ipad4"), "[gpu.clock_mhz]\nvalue = 300.0", "[gpu.clock_mhz]\nvalue = \"300\""));
   EXPECT_NE(m.find("gpu.clock_mhz.value"), std::string::npos) << m;
   EXPECT_NE(m.find("must be a number, got string"), std::string::npos) << m;
+
+  const std::string bare =
+      parse_error(replace_once(shipped_text("ipad4"),
+                               "[gpu.cores]\nvalue = 4\nconfidence = \"certain\"\nsource = "
+                               "\"SGX554MP4: four cores (AnandTech iPad 4 review, GPU page)\"\n",
+                               "[gpu]\ncores = 4\n"));
+  EXPECT_NE(bare.find("field 'gpu.cores'"), std::string::npos) << bare;
+  EXPECT_NE(bare.find("must be a table with value"), std::string::npos) << bare;
 }
 
 TEST(Profile, NonPositiveRateIsNamed) {
