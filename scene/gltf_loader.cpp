@@ -1,0 +1,228 @@
+#include "scene/gltf_loader.h"
+
+#include <fmt/format.h>
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+#include "scene/bounds.h"
+#include "scene/camera_framing.h"
+#include "scene/gltf_materials.h"
+#include "scene/gltf_nodes.h"
+#include "scene/gltf_primitive.h"
+#include "scene/scene_error.h"
+#include "scene/studio_lighting.h"
+#include "scene/validate.h"
+
+namespace skinsim::scene {
+namespace {
+
+using Warn = std::function<void(const std::string&)>;
+
+tinygltf::Model parse_file(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) {
+    throw SceneError(fmt::format("{}: file not found (or not a regular file)", path));
+  }
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  if (ext != ".gltf" && ext != ".glb") {
+    throw SceneError(fmt::format("{}: expected a .gltf or .glb file", path));
+  }
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(&gltf::decode_unless_in_buffer_view, nullptr);
+  tinygltf::Model model;
+  std::string err, warn;
+  bool ok = false;
+  try {
+    ok = ext == ".glb" ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
+                       : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+  } catch (const std::exception& e) {  // tinygltf's JSON layer may throw on odd input
+    throw SceneError(fmt::format("{}: cannot parse glTF: {}", path, e.what()));
+  }
+  if (!ok) {
+    if (err.empty()) err = warn;
+    while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
+    throw SceneError(
+        fmt::format("{}: cannot parse glTF: {}", path, err.empty() ? "unknown error" : err));
+  }
+  return model;
+}
+
+// Extensions this loader understands well enough that a file may require them.
+void check_required_extensions(const tinygltf::Model& model, const std::string& path) {
+  static const std::set<std::string> kSupported = {"KHR_lights_punctual"};
+  for (const std::string& ext : model.extensionsRequired) {
+    if (!kSupported.count(ext)) {
+      throw SceneError(fmt::format(
+          "{}: extensionsRequired lists {}, which skinsim does not support", path, ext));
+    }
+  }
+}
+
+int pick_scene(const tinygltf::Model& model, const std::string& path) {
+  if (model.scenes.empty()) throw SceneError(fmt::format("{}: the file defines no scene", path));
+  const int s = model.defaultScene < 0 ? 0 : model.defaultScene;
+  if (static_cast<std::size_t>(s) >= model.scenes.size()) {
+    throw SceneError(
+        fmt::format("{}: scene {} out of range ({} scenes)", path, s, model.scenes.size()));
+  }
+  return s;
+}
+
+// The camera of the first node (pre-order) that has one, if it is a perspective camera.
+bool apply_file_camera(const tinygltf::Model& model, const std::vector<gltf::PlacedNode>& nodes,
+                       const Bounds& bounds, const std::string& path, const Warn& warn,
+                       Camera& cam) {
+  for (const auto& placed : nodes) {
+    const int index = model.nodes[static_cast<std::size_t>(placed.node)].camera;
+    if (index < 0) continue;
+    if (static_cast<std::size_t>(index) >= model.cameras.size()) {
+      throw SceneError(fmt::format("{}: nodes[{}].camera {} out of range ({} cameras)", path,
+                                   placed.node, index, model.cameras.size()));
+    }
+    const tinygltf::Camera& c = model.cameras[static_cast<std::size_t>(index)];
+    if (c.type != "perspective") {
+      warn(fmt::format("{}: cameras[{}] is {}, not perspective; framing the scene instead", path,
+                       index, c.type));
+      return false;
+    }
+    const auto& p = c.perspective;
+    if (!(p.yfov > 0.0 && p.yfov < M_PI) || !(p.znear > 0.0) ||
+        (p.zfar != 0.0 && !(p.zfar > p.znear))) {
+      throw SceneError(
+          fmt::format("{}: cameras[{}].perspective: need 0 < yfov < pi, znear > 0, "
+                      "zfar > znear (or absent)",
+                      path, index));
+    }
+    const glm::mat4& w = placed.world;
+    cam.position = glm::vec3(w[3]);
+    const glm::vec3 forward = glm::normalize(glm::vec3(w * glm::vec4(0, 0, -1, 0)));
+    cam.up = glm::normalize(glm::vec3(w * glm::vec4(0, 1, 0, 0)));
+    const float to_center = glm::dot(bounds.center() - cam.position, forward);
+    cam.target = cam.position + forward * (to_center > 0.0f ? to_center : 1.0f);
+    cam.yfov_radians = static_cast<float>(p.yfov);
+    cam.znear = static_cast<float>(p.znear);
+    // zfar absent means an infinite projection; use a far plane well past the scene.
+    const float reach = glm::length(bounds.center() - cam.position) + glm::length(bounds.extent());
+    cam.zfar = p.zfar > 0.0 ? static_cast<float>(p.zfar) : std::max(reach * 2.0f, cam.znear * 2.0f);
+    return true;
+  }
+  return false;
+}
+
+// The first KHR_lights_punctual directional light (spec: it shines along the node's -Z).
+bool apply_file_light(const tinygltf::Model& model, const std::vector<gltf::PlacedNode>& nodes,
+                      const std::string& path, const Warn& warn, DirectionalLight& light) {
+  bool found = false;
+  for (const auto& placed : nodes) {
+    const auto& ext = model.nodes[static_cast<std::size_t>(placed.node)].extensions;
+    auto it = ext.find("KHR_lights_punctual");
+    if (it == ext.end() || !it->second.IsObject() || !it->second.Has("light")) continue;
+    const tinygltf::Value& v = it->second.Get("light");
+    const int index = v.IsInt() ? v.Get<int>() : -1;
+    if (index < 0 || static_cast<std::size_t>(index) >= model.lights.size()) {
+      throw SceneError(
+          fmt::format("{}: nodes[{}].extensions.KHR_lights_punctual.light out of "
+                      "range ({} lights)",
+                      path, placed.node, model.lights.size()));
+    }
+    const tinygltf::Light& l = model.lights[static_cast<std::size_t>(index)];
+    if (l.type != "directional" || found) {
+      warn(fmt::format("{}: lights[{}] ({}) ignored: skinsim uses one directional key light", path,
+                       index, l.type));
+      continue;
+    }
+    glm::vec3 color(1.0f);
+    if (l.color.size() == 3) color = glm::vec3(l.color[0], l.color[1], l.color[2]);
+    const glm::vec3 shine = glm::vec3(placed.world * glm::vec4(0, 0, -1, 0));
+    light.direction = glm::normalize(-shine);
+    // Intensity is taken as a plain multiplier of linear RGB (the spec's lux have no
+    // meaning without an exposure, which skinsim does not model).
+    light.radiance = color * static_cast<float>(l.intensity);
+    if (!std::isfinite(light.direction.x) ||
+        !std::isfinite(light.radiance.x + light.radiance.y + light.radiance.z)) {
+      throw SceneError(
+          fmt::format("{}: lights[{}]: direction or colour is not finite", path, index));
+    }
+    found = true;
+  }
+  return found;
+}
+
+}  // namespace
+
+Scene load_gltf(const std::string& path, const LoadOptions& opts) {
+  const Warn warn =
+      opts.warn ? opts.warn
+                : Warn([](const std::string& msg) { fmt::print(stderr, "warning: {}\n", msg); });
+  if (!(opts.aspect > 0.0f) ||
+      !(opts.auto_camera_yfov_radians > 0.0f && opts.auto_camera_yfov_radians < 3.0f)) {
+    throw SceneError(fmt::format(
+        "{}: LoadOptions: aspect must be > 0 and auto_camera_yfov_radians in (0, 3)", path));
+  }
+  tinygltf::Model model = parse_file(path);
+  check_required_extensions(model, path);
+  const int scene_index = pick_scene(model, path);
+  const std::vector<gltf::PlacedNode> nodes = gltf::flatten_scene(model, scene_index, path);
+
+  Scene scene;
+  scene.source = path;
+  gltf::convert_materials(model, path, scene, warn);
+  int default_material = -1;  // glTF's default material (spec 3.9.6), added on first use
+  for (const auto& placed : nodes) {
+    const int mesh = model.nodes[static_cast<std::size_t>(placed.node)].mesh;
+    if (mesh < 0) continue;
+    if (static_cast<std::size_t>(mesh) >= model.meshes.size()) {
+      throw SceneError(fmt::format("{}: nodes[{}].mesh {} out of range ({} meshes)", path,
+                                   placed.node, mesh, model.meshes.size()));
+    }
+    const auto& prims = model.meshes[static_cast<std::size_t>(mesh)].primitives;
+    for (std::size_t p = 0; p < prims.size(); ++p) {
+      int material = prims[p].material;
+      if (material >= static_cast<int>(model.materials.size()) || material < -1) {
+        throw SceneError(
+            fmt::format("{}: meshes[{}].primitives[{}].material {} out of range ({} "
+                        "materials)",
+                        path, mesh, p, material, model.materials.size()));
+      }
+      if (material < 0) {
+        if (default_material < 0) {
+          Material d;
+          d.name = "default";
+          d.metallic_factor = 1.0f;
+          scene.materials.push_back(d);
+          default_material = static_cast<int>(scene.materials.size()) - 1;
+        }
+        material = default_material;
+      }
+      if (auto m = gltf::convert_primitive(model, mesh, static_cast<int>(p), placed.world, material,
+                                           path, warn)) {
+        scene.meshes.push_back(std::move(*m));
+      }
+    }
+  }
+  if (scene.meshes.empty()) {
+    throw SceneError(fmt::format("{}: scenes[{}] contains no triangles", path, scene_index));
+  }
+
+  const Bounds bounds = scene_bounds(scene);
+  if (!apply_file_camera(model, nodes, bounds, path, warn, scene.camera)) {
+    scene.camera = frame_front(bounds, opts.auto_camera_yfov_radians, opts.aspect, 0.05f);
+  }
+  scene.key_light = default_key_light();
+  scene.ambient = default_ambient();
+  apply_file_light(model, nodes, path, warn, scene.key_light);
+  scene.environment = make_studio_environment(opts.environment_size, scene.key_light);
+  scene.units_per_mm = opts.units_per_mm > 0.0f ? opts.units_per_mm : 0.001f;
+  classify_materials(scene, opts.skin_materials);
+  validate_scene(scene);
+  return scene;
+}
+
+}  // namespace skinsim::scene

@@ -1,0 +1,106 @@
+#include "scene/head_mesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "scene/head_shape.h"
+#include "scene/mesh_attributes.h"
+
+namespace skinsim::scene::head {
+namespace {
+
+void finish(Mesh& m) {
+  m.normals = compute_smooth_normals(m.positions, m.indices);
+  m.tangents = compute_tangents(m.positions, m.normals, m.uvs, m.indices);
+}
+
+// Two counter-clockwise (seen from outside) triangles for a grid cell whose corners are
+// a = (row, col), b = (row + 1, col), c = (row, col + 1), d = (row + 1, col + 1), when
+// columns run to the right and rows run down the outside of the surface.
+void add_cell(std::vector<std::uint32_t>& idx, std::uint32_t a, std::uint32_t b, std::uint32_t c,
+              std::uint32_t d) {
+  idx.insert(idx.end(), {a, b, c, c, b, d});
+}
+
+}  // namespace
+
+Mesh make_head_mesh(int target_triangles) {
+  // The grid gives 2 * columns * rows triangles (crown fan + cells + neck cap); rows are
+  // 0.6 x columns, which keeps the quads roughly square on the head.
+  const int columns = std::max(8, static_cast<int>(std::lround(std::sqrt(target_triangles / 1.2))));
+  const int rows = std::max(4, static_cast<int>(std::lround(target_triangles / (2.0 * columns))));
+  Mesh m;
+  m.name = "head";
+  const int stride = columns + 1;  // the seam column is duplicated
+  for (int r = 0; r <= rows; ++r) {
+    const float v = static_cast<float>(r) / rows;
+    for (int c = 0; c <= columns; ++c) {
+      // Row 0 is the crown pole: give each copy the u of the middle of its fan triangle.
+      const float u = (c + (r == 0 ? 0.5f : 0.0f)) / columns;
+      m.positions.push_back(surface_point(u, v));
+      m.uvs.emplace_back(u, v);
+    }
+  }
+  const auto at = [&](int r, int c) { return static_cast<std::uint32_t>(r * stride + c); };
+  for (int c = 0; c < columns; ++c) {  // crown fan
+    m.indices.insert(m.indices.end(), {at(0, c), at(1, c), at(1, c + 1)});
+  }
+  for (int r = 1; r < rows; ++r) {
+    for (int c = 0; c < columns; ++c)
+      add_cell(m.indices, at(r, c), at(r + 1, c), at(r, c + 1), at(r + 1, c + 1));
+  }
+  // Cap under the neck: one centre vertex per column (its own u), facing down.
+  const std::uint32_t cap0 = static_cast<std::uint32_t>(m.positions.size());
+  for (int c = 0; c < columns; ++c) {
+    m.positions.emplace_back(0.0f, neck_bottom_y(), neck_center_z());
+    m.uvs.emplace_back((c + 0.5f) / columns, 1.0f);
+    m.indices.insert(m.indices.end(), {at(rows, c), cap0 + c, at(rows, c + 1)});
+  }
+  finish(m);
+  return m;
+}
+
+Mesh make_ellipsoid(const std::string& name, const glm::vec3& center, const glm::vec3& radii,
+                    int slices, int stacks) {
+  constexpr float kPi = std::numbers::pi_v<float>;
+  Mesh m;
+  m.name = name;
+  const int stride = slices + 1;
+  for (int s = 0; s <= stacks; ++s) {
+    const float v = static_cast<float>(s) / stacks;
+    const float theta = v * kPi;  // from the +Z pole
+    for (int c = 0; c <= slices; ++c) {
+      const float u = static_cast<float>(c) / slices;
+      // Azimuth runs clockwise seen from +Z so that u grows to +X at the top of the eye.
+      const float phi = 2.0f * kPi * u;
+      const glm::vec3 d(std::sin(theta) * std::cos(phi), -std::sin(theta) * std::sin(phi),
+                        std::cos(theta));
+      m.positions.push_back(center + d * radii);
+      m.uvs.emplace_back(u, v);
+    }
+  }
+  const auto at = [&](int s, int c) { return static_cast<std::uint32_t>(s * stride + c); };
+  for (int s = 0; s < stacks; ++s) {
+    for (int c = 0; c < slices; ++c) {
+      // Rows run from the +Z pole outwards; columns turn clockwise seen from +Z.
+      const std::uint32_t a = at(s, c), b = at(s + 1, c), cc = at(s, c + 1), d = at(s + 1, c + 1);
+      if (s > 0) m.indices.insert(m.indices.end(), {a, cc, b});
+      if (s + 1 < stacks) m.indices.insert(m.indices.end(), {cc, d, b});
+    }
+  }
+  finish(m);
+  return m;
+}
+
+Mesh make_wall(const std::string& name, float z, float x0, float x1, float y0, float y1) {
+  Mesh m;
+  m.name = name;
+  m.positions = {{x0, y1, z}, {x1, y1, z}, {x0, y0, z}, {x1, y0, z}};
+  m.uvs = {{0.0f, 0.0f}, {1.0f, 0.0f}, {0.0f, 1.0f}, {1.0f, 1.0f}};
+  m.indices = {0, 2, 1, 1, 2, 3};
+  finish(m);
+  return m;
+}
+
+}  // namespace skinsim::scene::head
