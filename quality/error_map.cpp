@@ -1,0 +1,63 @@
+#include "quality/error_map.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "quality/error.h"
+
+namespace skinsim::quality {
+namespace {
+
+// Degree-6 polynomial fits of matplotlib's magma and viridis (Matt Zucker, CC0,
+// shadertoy.com/view/WlfXRN); coefficients c0..c6 of t^0..t^6, per channel.
+using Polynomial = std::array<glm::dvec3, 7>;
+
+constexpr Polynomial kMagma{{
+    {-0.002136485053939582, -0.000749655052795221, -0.005386127855323933},
+    {0.2516605407371642, 0.6775232436837668, 2.494026599312351},
+    {8.353717279216625, -3.577719514958484, 0.3144679030132573},
+    {-27.66873308576866, 14.26473078096533, -13.64921318813922},
+    {52.17613981234068, -27.94360607168351, 12.94416944238394},
+    {-50.76852536473588, 29.04658282127291, 4.23415299384598},
+    {18.65570506591883, -11.48977351997711, -5.601961508734096},
+}};
+
+constexpr Polynomial kViridis{{
+    {0.2777273272234177, 0.005407344544966578, 0.3340998053353061},
+    {0.1050930431085774, 1.404613529898575, 1.384590162594685},
+    {-0.3308618287255563, 0.214847559468213, 0.09509516302823659},
+    {-4.634230498983486, -5.799100973351585, -19.33244095627987},
+    {6.228269936347081, 14.17993336680509, 56.69055260068105},
+    {4.776384997670288, -13.74514537774601, -65.35303263337234},
+    {-5.435455855934631, 4.645852612178535, 26.3124352495832},
+}};
+
+}  // namespace
+
+glm::vec3 color_map(ColorMap map, float t) {
+  const Polynomial& c = map == ColorMap::kMagma ? kMagma : kViridis;
+  const double x = std::isnan(t) ? 0.0 : std::clamp(static_cast<double>(t), 0.0, 1.0);
+  glm::dvec3 value = c[6];
+  for (int i = 5; i >= 0; --i) value = c[i] + x * value;  // Horner
+  // The fits overshoot [0,1] by a few 1e-3 at the ends.
+  return glm::clamp(glm::vec3(value), glm::vec3(0.0f), glm::vec3(1.0f));
+}
+
+Image false_colour(const ScalarMap& map, ColorMap colors) {
+  if (map.width <= 0 || map.height <= 0 ||
+      map.values.size() != static_cast<std::size_t>(map.width) * map.height) {
+    throw QualityError("false_colour: map of " + std::to_string(map.width) + "x" +
+                       std::to_string(map.height) + " holds " + std::to_string(map.values.size()) +
+                       " values");
+  }
+  Image image;
+  image.width = map.width;
+  image.height = map.height;
+  image.rgb.resize(map.values.size());
+  std::transform(map.values.begin(), map.values.end(), image.rgb.begin(),
+                 [&](float v) { return color_map(colors, v); });
+  return image;
+}
+
+}  // namespace skinsim::quality

@@ -1,0 +1,259 @@
+// FLIP LDR, following Andersson, Nilsson, Akenine-Moller, Oskarsson, Astrom and Fairchild,
+// "FLIP: A Difference Evaluator for Alternating Images", HPG 2020, with the constants of the
+// paper and its reference implementation (github.com/NVlabs/flip). Convolutions clamp at the
+// image border (the reference's C++ code does the same).
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "quality/error.h"
+#include "quality/flip_color.h"
+#include "quality/metric_inputs.h"
+#include "quality/metrics.h"
+#include "quality/separable_stream.h"
+
+namespace skinsim::quality {
+namespace {
+
+using flip_color::dvec3;
+constexpr double kPi = std::numbers::pi;
+
+// Colour pipeline exponent and error redistribution (section 4.3): qc, pc, pt.
+constexpr double kQc = 0.7;
+constexpr double kPc = 0.4;
+constexpr double kPt = 0.95;
+// Feature pipeline exponent (section 4.4) and the width of a digit, 0.082 degrees, which sets
+// the feature filters' standard deviation 0.5 * w * ppd.
+constexpr double kQf = 0.5;
+static_assert(kQf == 0.5, "the feature error below uses sqrt for the power qf");
+constexpr double kDigitWidthDegrees = 0.082;
+
+// Contrast sensitivity functions as sums of Gaussians a * sqrt(pi / b) * exp(-pi^2 x^2 / b)
+// (x in degrees), one set per opponent channel (section 4.1; constants from the paper's code).
+struct CsfTerm {
+  double a;
+  double b;
+};
+constexpr std::array<CsfTerm, 2> kCsfAchromatic{{{1.0, 0.0047}, {0.0, 1e-5}}};
+constexpr std::array<CsfTerm, 2> kCsfRedGreen{{{1.0, 0.0053}, {0.0, 1e-5}}};
+constexpr std::array<CsfTerm, 2> kCsfBlueYellow{{{34.1, 0.04}, {13.5, 0.025}}};
+constexpr double kCsfLargestB = 0.04;
+
+// The 1D factor of one CSF term, normalised to sum 1, and the term's share of the 2D kernel's
+// sum: the 2D kernel sum_t a_t sqrt(pi/b_t) G_t(x) G_t(y), normalised to sum 1 over its
+// (2r+1)^2 taps as in the paper's code, equals sum_t share_t * (g_t(x) g_t(y)).
+struct CsfFactor {
+  std::vector<float> kernel;
+  double share;
+};
+
+std::vector<CsfFactor> csf_factors(const std::array<CsfTerm, 2>& terms, double ppd) {
+  const int radius =
+      static_cast<int>(std::ceil(3.0 * std::sqrt(kCsfLargestB / (2.0 * kPi * kPi)) * ppd));
+  std::vector<CsfFactor> factors;
+  double total = 0.0;
+  for (const CsfTerm& term : terms) {
+    if (term.a == 0.0) continue;
+    std::vector<double> taps(2 * radius + 1);
+    double sum = 0.0;
+    for (int i = -radius; i <= radius; ++i) {
+      const double x_degrees = i / ppd;
+      taps[i + radius] = std::exp(-kPi * kPi * x_degrees * x_degrees / term.b);
+      sum += taps[i + radius];
+    }
+    CsfFactor factor{std::vector<float>(taps.size()), term.a * std::sqrt(kPi / term.b) * sum * sum};
+    for (std::size_t i = 0; i < taps.size(); ++i)
+      factor.kernel[i] = static_cast<float>(taps[i] / sum);
+    total += factor.share;
+    factors.push_back(std::move(factor));
+  }
+  for (CsfFactor& factor : factors) factor.share /= total;
+  return factors;
+}
+
+// Scales the positive taps to sum 1 and the negative taps to sum -1 (as FLIP's code).
+std::vector<float> normalise_signed(const std::vector<double>& taps) {
+  double positive = 0.0;
+  double negative = 0.0;
+  for (double t : taps) (t > 0.0 ? positive : negative) += t;
+  std::vector<float> kernel(taps.size());
+  for (std::size_t i = 0; i < taps.size(); ++i) {
+    kernel[i] = static_cast<float>(taps[i] > 0.0 ? taps[i] / positive : taps[i] / -negative);
+  }
+  return kernel;
+}
+
+struct FeatureKernels {
+  std::vector<float> smooth;  // Gaussian, sum 1
+  std::vector<float> edge;    // first derivative of the Gaussian, -x g(x)
+  std::vector<float> point;   // second derivative, (x^2 / sd^2 - 1) g(x)
+};
+
+// The 2D edge and point filters of section 4.4 are separable: (derivative along x) times
+// (Gaussian along y). Normalising the 1D derivative's positive/negative taps and the 1D
+// Gaussian to sum 1 gives exactly the 2D filter normalised as in the paper's code.
+FeatureKernels feature_kernels(double ppd) {
+  const double sd = 0.5 * kDigitWidthDegrees * ppd;
+  const int radius = static_cast<int>(std::ceil(3.0 * sd));
+  std::vector<double> edge(2 * radius + 1);
+  std::vector<double> point(2 * radius + 1);
+  for (int i = -radius; i <= radius; ++i) {
+    const double g = std::exp(-(i * i) / (2.0 * sd * sd));
+    edge[i + radius] = -i * g;
+    point[i + radius] = (i * i / (sd * sd) - 1.0) * g;
+  }
+  return {gaussian_kernel(sd, radius), normalise_signed(edge), normalise_signed(point)};
+}
+
+// Source channels per image: Y, Cx, Cz of YCxCz, and the luminance Y / Y_white in [0,1].
+constexpr int kSourcesPerImage = 4;
+constexpr int kLuminance = 3;
+
+// Which filtered outputs (column filter indices) make up one image's FLIP inputs.
+struct ImageOutputs {
+  std::array<std::vector<std::pair<int, double>>, 3> opponent;  // (filter, share) per channel
+  int edge_x, edge_y, point_x, point_y;
+};
+
+// Adds one image's filters to the stream; `image` selects its block of source channels.
+ImageOutputs add_image_filters(SeparableStream& stream, int image, double ppd,
+                               const FeatureKernels& features) {
+  const auto add_row = [&](int source, const std::vector<float>& along_x) {
+    stream.row_filters.push_back({image * kSourcesPerImage + source, along_x});
+    return static_cast<int>(stream.row_filters.size()) - 1;
+  };
+  const auto add_column = [&](int row_filter, const std::vector<float>& along_y) {
+    stream.column_filters.push_back({row_filter, along_y});
+    return static_cast<int>(stream.column_filters.size()) - 1;
+  };
+  ImageOutputs out{};
+  const std::array<const std::array<CsfTerm, 2>*, 3> csf{&kCsfAchromatic, &kCsfRedGreen,
+                                                         &kCsfBlueYellow};
+  for (int c = 0; c < 3; ++c) {
+    for (const CsfFactor& f : csf_factors(*csf[c], ppd)) {
+      out.opponent[c].emplace_back(add_column(add_row(c, f.kernel), f.kernel), f.share);
+    }
+  }
+  const int smooth_rows = add_row(kLuminance, features.smooth);
+  out.edge_x = add_column(add_row(kLuminance, features.edge), features.smooth);
+  out.edge_y = add_column(smooth_rows, features.edge);
+  out.point_x = add_column(add_row(kLuminance, features.point), features.smooth);
+  out.point_y = add_column(smooth_rows, features.point);
+  return out;
+}
+
+// sRGB decoding of the 256 values an 8-bit image holds, which is what rendered frames
+// usually are; other values take the pow() path. Both give identical results.
+class SrgbDecoder {
+ public:
+  SrgbDecoder() {
+    for (int i = 0; i < 256; ++i) table_[i] = decode(static_cast<float>(i / 255.0));
+  }
+  double operator()(float encoded) const {
+    const long code = std::lround(static_cast<double>(encoded) * 255.0);
+    const bool eight_bit = code >= 0 && code <= 255 && static_cast<float>(code / 255.0) == encoded;
+    return eight_bit ? table_[code] : decode(encoded);
+  }
+
+ private:
+  static double decode(float encoded) {
+    return flip_color::srgb_to_linear(std::clamp(static_cast<double>(encoded), 0.0, 1.0));
+  }
+  std::array<double, 256> table_;
+};
+
+void write_source_row(const Image& image, int y, const SrgbDecoder& decode, float* const* rows) {
+  const std::size_t begin = static_cast<std::size_t>(y) * image.width;
+  for (int x = 0; x < image.width; ++x) {
+    const glm::vec3& p = image.rgb[begin + x];
+    const dvec3 linear(decode(p.r), decode(p.g), decode(p.b));
+    const dvec3 opponent = flip_color::xyz_to_ycxcz(flip_color::linear_rgb_to_xyz(linear));
+    for (int c = 0; c < 3; ++c) rows[c][x] = static_cast<float>(opponent[c]);
+    rows[kLuminance][x] = static_cast<float>((opponent.x + 16.0) / 116.0);
+  }
+}
+
+struct PixelFeatures {
+  dvec3 hunt_lab;
+  double edge;
+  double point;
+};
+
+PixelFeatures pixel_features(const ImageOutputs& o, std::span<const float* const> f, int x) {
+  dvec3 opponent(0.0);
+  for (int c = 0; c < 3; ++c) {
+    for (const auto& [filter, share] : o.opponent[c]) opponent[c] += share * f[filter][x];
+  }
+  const auto length = [](double a, double b) { return std::sqrt(a * a + b * b); };
+  return {flip_color::ycxcz_to_hunt_lab(opponent), length(f[o.edge_x][x], f[o.edge_y][x]),
+          length(f[o.point_x][x], f[o.point_y][x])};
+}
+
+// Largest colour difference FLIP expects: HyAB between Hunt-adjusted green and blue, to qc.
+double max_colour_difference() {
+  const auto hunt_lab = [](const dvec3& rgb) {
+    return flip_color::hunt_adjust(flip_color::xyz_to_lab(flip_color::linear_rgb_to_xyz(rgb)));
+  };
+  return std::pow(flip_color::hyab(hunt_lab({0, 1, 0}), hunt_lab({0, 0, 1})), kQc);
+}
+
+}  // namespace
+
+double pixels_per_degree(double distance_m, double monitor_width_m, int monitor_width_px) {
+  return distance_m * (monitor_width_px / monitor_width_m) * (kPi / 180.0);
+}
+
+FlipResult flip(const Image& test, const Image& reference, const Mask* mask,
+                const FlipParams& params) {
+  check_metric_inputs("FLIP", test, reference, mask);
+  if (!(params.pixels_per_degree > 0.0) || !std::isfinite(params.pixels_per_degree)) {
+    throw QualityError("FLIP: pixels_per_degree must be a positive number, got " +
+                       std::to_string(params.pixels_per_degree));
+  }
+  const double ppd = params.pixels_per_degree;
+  const FeatureKernels features = feature_kernels(ppd);
+  SeparableStream stream{test.width, test.height, 2 * kSourcesPerImage, {}, {}};
+  const ImageOutputs test_outputs = add_image_filters(stream, 0, ppd, features);
+  const ImageOutputs reference_outputs = add_image_filters(stream, 1, ppd, features);
+
+  const double cmax = max_colour_difference();
+  const double pccmax = kPc * cmax;
+  FlipResult result;
+  result.map = ScalarMap{test.width, test.height, std::vector<float>(test.pixel_count())};
+  const SrgbDecoder decode;
+  const auto source = [&](int y, std::span<float* const> rows) {
+    write_source_row(test, y, decode, rows.data());
+    write_source_row(reference, y, decode, rows.data() + kSourcesPerImage);
+  };
+  const auto sink = [&](int y, std::span<const float* const> filtered) {
+    float* out = &result.map.values[static_cast<std::size_t>(y) * test.width];
+    for (int x = 0; x < test.width; ++x) {
+      const PixelFeatures t = pixel_features(test_outputs, filtered, x);
+      const PixelFeatures r = pixel_features(reference_outputs, filtered, x);
+      const double distance = flip_color::hyab(t.hunt_lab, r.hunt_lab);
+      if (distance == 0.0) {  // no colour difference: the error is 0 whatever the features
+        out[x] = 0.0f;
+        continue;
+      }
+      const double colour = std::pow(distance, kQc);
+      // Section 4.3: compress small differences into [0, pt) and large ones into [pt, 1].
+      const double colour_error = colour < pccmax
+                                      ? kPt / pccmax * colour
+                                      : kPt + (colour - pccmax) / (cmax - pccmax) * (1.0 - kPt);
+      const double feature_difference =
+          std::max(std::abs(t.edge - r.edge), std::abs(t.point - r.point));
+      const double feature_error = std::sqrt(feature_difference / std::numbers::sqrt2);  // ^qf
+      // Section 4.5: features amplify the colour error.
+      out[x] = static_cast<float>(std::pow(colour_error, 1.0 - feature_error));
+    }
+  };
+  run_separable_stream(stream, source, sink);
+  result.mean = masked_mean(result.map.values, test.width, test.height, mask);
+  return result;
+}
+
+}  // namespace skinsim::quality

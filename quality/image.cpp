@@ -1,0 +1,152 @@
+#include "quality/image.h"
+
+#include <OpenImageIO/imageio.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <string>
+#include <system_error>
+
+#include "quality/error.h"
+
+namespace skinsim::quality {
+namespace {
+
+std::uint8_t to_u8(float value) {
+  if (!(value > 0.0f)) return 0;  // also maps NaN to 0
+  if (value >= 1.0f) return 255;
+  return static_cast<std::uint8_t>(std::lround(value * 255.0f));
+}
+
+// Reads all pixels as normalised floats; returns the channel count.
+int read_floats(const std::filesystem::path& path, int& width, int& height,
+                std::vector<float>& pixels) {
+  auto input = OIIO::ImageInput::open(path.string());
+  if (!input) {
+    throw QualityError("cannot open image '" + path.string() + "': " + OIIO::geterror());
+  }
+  const OIIO::ImageSpec& spec = input->spec();
+  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
+    throw QualityError("image '" + path.string() + "' has no pixels");
+  }
+  width = spec.width;
+  height = spec.height;
+  const int channels = spec.nchannels;
+  pixels.resize(static_cast<std::size_t>(width) * height * channels);
+  if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data())) {
+    throw QualityError("cannot read pixels of '" + path.string() + "': " + input->geterror());
+  }
+  input->close();
+  return channels;
+}
+
+}  // namespace
+
+Image Image::filled(int width, int height, const glm::vec3& value) {
+  Image image;
+  image.width = width;
+  image.height = height;
+  image.rgb.assign(static_cast<std::size_t>(width) * height, value);
+  return image;
+}
+
+Mask Mask::filled(int width, int height, std::uint8_t value) {
+  Mask mask;
+  mask.width = width;
+  mask.height = height;
+  mask.values.assign(static_cast<std::size_t>(width) * height, value);
+  return mask;
+}
+
+std::size_t Mask::count() const {
+  return static_cast<std::size_t>(
+      std::count_if(values.begin(), values.end(), [](std::uint8_t v) { return v != 0; }));
+}
+
+Image load_png(const std::filesystem::path& path) {
+  Image image;
+  std::vector<float> pixels;
+  const int channels = read_floats(path, image.width, image.height, pixels);
+  image.rgb.resize(image.pixel_count());
+  for (std::size_t i = 0; i < image.rgb.size(); ++i) {
+    const float* p = &pixels[i * channels];
+    // 1 = grey, 2 = grey + alpha: replicate grey; 3 or more: the first three are RGB.
+    image.rgb[i] = channels < 3 ? glm::vec3(p[0]) : glm::vec3(p[0], p[1], p[2]);
+  }
+  return image;
+}
+
+void save_png(const Image& image, const std::filesystem::path& path) {
+  if (image.rgb.size() != image.pixel_count()) {
+    throw QualityError("cannot write '" + path.string() + "': image holds " +
+                       std::to_string(image.rgb.size()) + " pixels, expected " +
+                       std::to_string(image.width) + "x" + std::to_string(image.height));
+  }
+  std::vector<std::uint8_t> bytes(image.rgb.size() * 3);
+  for (std::size_t i = 0; i < image.rgb.size(); ++i) {
+    for (int c = 0; c < 3; ++c) bytes[i * 3 + c] = to_u8(image.rgb[i][c]);
+  }
+  write_png_u8(path, image.width, image.height, 3, bytes);
+}
+
+Mask load_mask_png(const std::filesystem::path& path) {
+  Mask mask;
+  std::vector<float> pixels;
+  const int channels = read_floats(path, mask.width, mask.height, pixels);
+  mask.values.resize(static_cast<std::size_t>(mask.width) * mask.height);
+  for (std::size_t i = 0; i < mask.values.size(); ++i) {
+    mask.values[i] = pixels[i * channels] != 0.0f ? 1 : 0;
+  }
+  return mask;
+}
+
+void save_mask_png(const Mask& mask, const std::filesystem::path& path) {
+  std::vector<std::uint8_t> bytes(mask.values.size());
+  std::transform(mask.values.begin(), mask.values.end(), bytes.begin(),
+                 [](std::uint8_t v) -> std::uint8_t { return v != 0 ? 255 : 0; });
+  write_png_u8(path, mask.width, mask.height, 1, bytes);
+}
+
+void write_png_u8(const std::filesystem::path& path, int width, int height, int channels,
+                  std::span<const std::uint8_t> data) {
+  if (width <= 0 || height <= 0 || channels < 1 || channels > 4) {
+    throw QualityError("cannot write '" + path.string() + "': invalid size " +
+                       std::to_string(width) + "x" + std::to_string(height) + "x" +
+                       std::to_string(channels));
+  }
+  if (data.size() != static_cast<std::size_t>(width) * height * channels) {
+    throw QualityError("cannot write '" + path.string() + "': " + std::to_string(data.size()) +
+                       " bytes given for " + std::to_string(width) + "x" + std::to_string(height) +
+                       "x" + std::to_string(channels));
+  }
+  // The temporary name keeps the extension so OpenImageIO picks the PNG writer; the pid and a
+  // counter keep concurrent writers (threads or processes) from sharing one temp file.
+  static std::atomic<unsigned> counter{0};
+  std::filesystem::path temp = path;
+  temp += ".tmp" + std::to_string(::getpid()) + "_" + std::to_string(counter++) + ".png";
+
+  auto output = OIIO::ImageOutput::create(temp.string());
+  if (!output) {
+    throw QualityError("cannot write '" + path.string() + "': " + OIIO::geterror());
+  }
+  const OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::UINT8);
+  const bool ok = output->open(temp.string(), spec) &&
+                  output->write_image(OIIO::TypeDesc::UINT8, data.data()) && output->close();
+  if (!ok) {
+    const std::string why = output->geterror();
+    std::error_code ignored;
+    std::filesystem::remove(temp, ignored);
+    throw QualityError("cannot write '" + path.string() + "': " + why);
+  }
+  std::error_code error;
+  std::filesystem::rename(temp, path, error);
+  if (error) {
+    const std::string why = error.message();
+    std::filesystem::remove(temp, error);
+    throw QualityError("cannot move finished image onto '" + path.string() + "': " + why);
+  }
+}
+
+}  // namespace skinsim::quality

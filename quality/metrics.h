@@ -1,0 +1,42 @@
+// Full-reference image-quality metrics on display-referred sRGB images: PSNR, SSIM and FLIP.
+// All take an optional mask (only pixels with mask value != 0 count in the mean) and are
+// deterministic: per-pixel values do not depend on the thread count and means are reduced in
+// a fixed order. Bad input (size mismatch, empty mask, NaN) throws QualityError.
+#pragma once
+
+#include "quality/image.h"
+
+namespace skinsim::quality {
+
+// Peak signal-to-noise ratio in dB with peak 1.0 over the R, G and B values of the counted
+// pixels: -10 log10(MSE). Identical images give +infinity (see docs/quality-metrics.md for
+// how JSON output represents it).
+double psnr(const Image& test, const Image& reference, const Mask* mask = nullptr);
+
+// Structural similarity (Wang, Bovik, Sheikh, Simoncelli 2004) of the luma
+// Y' = 0.299 R' + 0.587 G' + 0.114 B' of the encoded values (as MATLAB's rgb2gray): 11x11
+// Gaussian window (sigma 1.5), K1 = 0.01, K2 = 0.03, L = 1, edge-clamped borders. Returns the
+// mean of the SSIM map over the mask; writes the full map to `map` if given.
+double ssim(const Image& test, const Image& reference, const Mask* mask = nullptr,
+            ScalarMap* map = nullptr);
+
+// Pixels per degree of visual angle for an observer `distance_m` from a monitor
+// `monitor_width_m` wide with `monitor_width_px` pixels across (small-angle approximation, as
+// FLIP's reference implementation).
+double pixels_per_degree(double distance_m, double monitor_width_m, int monitor_width_px);
+
+// FLIP LDR (Andersson et al., "FLIP: A Difference Evaluator for Alternating Images", HPG 2020).
+struct FlipParams {
+  // The paper's default observer: 0.7 m from a 0.7 m wide 3840-pixel monitor (about 67.0).
+  double pixels_per_degree = skinsim::quality::pixels_per_degree(0.7, 0.7, 3840);
+};
+
+struct FlipResult {
+  double mean = 0.0;  // mean error over the mask, in [0,1]
+  ScalarMap map;      // per-pixel error in [0,1], every pixel (the mask only affects the mean)
+};
+
+FlipResult flip(const Image& test, const Image& reference, const Mask* mask = nullptr,
+                const FlipParams& params = {});
+
+}  // namespace skinsim::quality

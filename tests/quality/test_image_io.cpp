@@ -1,0 +1,132 @@
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+
+#include "quality/error.h"
+#include "quality/error_map.h"
+#include "quality/image.h"
+#include "quality/json_value.h"
+#include "tests/quality/test_image.h"
+
+namespace skinsim::quality {
+namespace {
+
+class TempDir : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("skinsim_quality_test_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  std::filesystem::path dir_;
+};
+
+using ImageIo = TempDir;
+
+TEST_F(ImageIo, PngRoundTripKeepsEightBitValues) {
+  Image image = testing::pattern_image(37, 23);
+  for (glm::vec3& p : image.rgb) p = glm::round(p * 255.0f) / 255.0f;  // representable
+  const auto path = dir_ / "pattern.png";
+  save_png(image, path);
+  const Image loaded = load_png(path);
+  ASSERT_EQ(loaded.width, 37);
+  ASSERT_EQ(loaded.height, 23);
+  for (std::size_t i = 0; i < image.rgb.size(); ++i) {
+    for (int c = 0; c < 3; ++c) ASSERT_NEAR(loaded.rgb[i][c], image.rgb[i][c], 1e-6);
+  }
+  // Only the finished file is left: the temporary was renamed over it.
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir_),
+                          std::filesystem::directory_iterator()),
+            1);
+}
+
+TEST_F(ImageIo, SaveClampsOutOfRangeValues) {
+  Image image = Image::filled(2, 1, glm::vec3(0.0f));
+  image.rgb[0] = glm::vec3(-0.5f, 1.5f, std::nanf(""));
+  image.rgb[1] = glm::vec3(0.5f);
+  const auto path = dir_ / "clamped.png";
+  save_png(image, path);
+  const Image loaded = load_png(path);
+  EXPECT_EQ(loaded.rgb[0], glm::vec3(0.0f, 1.0f, 0.0f));
+  EXPECT_NEAR(loaded.rgb[1].r, 128.0f / 255.0f, 1e-6);  // 127.5 rounds up
+}
+
+TEST_F(ImageIo, MaskRoundTrip) {
+  Mask mask = Mask::filled(5, 4, 0);
+  mask.values[3] = 1;
+  mask.values[17] = 1;
+  const auto path = dir_ / "mask.png";
+  save_mask_png(mask, path);
+  const Mask loaded = load_mask_png(path);
+  EXPECT_EQ(loaded.width, 5);
+  EXPECT_EQ(loaded.values, mask.values);
+  EXPECT_EQ(loaded.count(), 2u);
+}
+
+TEST_F(ImageIo, ErrorsNameTheFile) {
+  const auto missing = dir_ / "missing.png";
+  try {
+    load_png(missing);
+    FAIL() << "missing file accepted";
+  } catch (const QualityError& e) {
+    EXPECT_NE(std::string(e.what()).find("missing.png"), std::string::npos) << e.what();
+  }
+  std::ofstream(dir_ / "garbage.png") << "not a png";
+  EXPECT_THROW(load_png(dir_ / "garbage.png"), QualityError);
+  const auto no_dir = dir_ / "no_such_dir" / "out.png";
+  EXPECT_THROW(save_png(Image::filled(2, 2, glm::vec3(0.5f)), no_dir), QualityError);
+  Image broken = Image::filled(2, 2, glm::vec3(0.5f));
+  broken.rgb.pop_back();
+  EXPECT_THROW(save_png(broken, dir_ / "broken.png"), QualityError);
+}
+
+TEST(ErrorMap, ColourMapsMatchMatplotlibEndpoints) {
+  // matplotlib's _cm_listed tables, first and last entries; the polynomial fits are within
+  // 0.02 of them.
+  const auto near = [](glm::vec3 a, glm::vec3 b) {
+    return glm::all(glm::lessThan(glm::abs(a - b), glm::vec3(0.02f)));
+  };
+  EXPECT_TRUE(near(color_map(ColorMap::kMagma, 0.0f), {0.001462f, 0.000466f, 0.013866f}));
+  EXPECT_TRUE(near(color_map(ColorMap::kMagma, 1.0f), {0.987053f, 0.991438f, 0.749504f}));
+  EXPECT_TRUE(near(color_map(ColorMap::kViridis, 0.0f), {0.267004f, 0.004874f, 0.329415f}));
+  EXPECT_TRUE(near(color_map(ColorMap::kViridis, 1.0f), {0.993248f, 0.906157f, 0.143936f}));
+}
+
+TEST(ErrorMap, BrightnessGrowsWithError) {
+  for (ColorMap map : {ColorMap::kMagma, ColorMap::kViridis}) {
+    float previous = -1.0f;
+    for (int i = 0; i <= 20; ++i) {
+      const glm::vec3 c = color_map(map, i / 20.0f);
+      const float luma = 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
+      EXPECT_GT(luma, previous) << "t = " << i / 20.0f;
+      previous = luma;
+    }
+  }
+}
+
+TEST(ErrorMap, FalseColourKeepsSizeAndClamps) {
+  const ScalarMap map{3, 1, {-1.0f, 0.5f, 7.0f}};
+  const Image image = false_colour(map, ColorMap::kViridis);
+  ASSERT_EQ(image.width, 3);
+  EXPECT_EQ(image.rgb[0], color_map(ColorMap::kViridis, 0.0f));
+  EXPECT_EQ(image.rgb[2], color_map(ColorMap::kViridis, 1.0f));
+  EXPECT_THROW(false_colour(ScalarMap{3, 2, {0.0f}}), QualityError);
+}
+
+TEST(JsonValue, InfinityRoundTripsAsString) {
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(metric_to_json(inf).dump(), "\"inf\"");
+  EXPECT_EQ(metric_from_json(metric_to_json(inf)), inf);
+  EXPECT_EQ(metric_from_json(metric_to_json(-inf)), -inf);
+  EXPECT_TRUE(std::isnan(metric_from_json(metric_to_json(std::nan("")))));
+  EXPECT_EQ(metric_from_json(metric_to_json(31.5)), 31.5);
+  EXPECT_THROW(metric_from_json(nlohmann::json("big")), nlohmann::json::type_error);
+}
+
+}  // namespace
+}  // namespace skinsim::quality

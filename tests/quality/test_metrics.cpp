@@ -1,0 +1,193 @@
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <cmath>
+#include <limits>
+
+#include "quality/error.h"
+#include "quality/metrics.h"
+#include "tests/quality/test_image.h"
+
+namespace skinsim::quality {
+namespace {
+
+using testing::add_noise;
+using testing::box_blur;
+using testing::pattern_image;
+
+TEST(Psnr, IdenticalImagesGiveInfinity) {
+  const Image image = pattern_image(64, 48);
+  EXPECT_EQ(psnr(image, image), std::numeric_limits<double>::infinity());
+}
+
+TEST(Psnr, UniformOffsetGivesMinus20Log10) {
+  const Image reference = Image::filled(40, 30, glm::vec3(0.25f, 0.5f, 0.625f));
+  for (float d : {0.5f, 0.125f, 0.0078125f}) {
+    Image test = reference;
+    for (glm::vec3& p : test.rgb) p += glm::vec3(d);
+    EXPECT_NEAR(psnr(test, reference), -20.0 * std::log10(static_cast<double>(d)), 1e-9)
+        << "offset " << d;
+  }
+}
+
+TEST(Psnr, MaskRestrictsTheStatistic) {
+  const Image reference = pattern_image(64, 48);
+  Image test = reference;
+  Mask mask = Mask::filled(64, 48, 0);
+  for (int y = 0; y < 48; ++y) {
+    for (int x = 0; x < 64; ++x) {
+      if (x < 32)
+        test.at(x, y) += glm::vec3(0.1f);  // changed, but masked out
+      else
+        mask.values[y * 64 + x] = 1;
+    }
+  }
+  EXPECT_EQ(psnr(test, reference, &mask), std::numeric_limits<double>::infinity());
+  EXPECT_LT(psnr(test, reference), 30.0);
+}
+
+TEST(Ssim, IdenticalImagesGiveOne) {
+  const Image image = pattern_image(64, 48);
+  ScalarMap map;
+  EXPECT_EQ(ssim(image, image, nullptr, &map), 1.0);
+  ASSERT_EQ(map.values.size(), 64u * 48u);
+  for (float v : map.values) ASSERT_EQ(v, 1.0f);
+}
+
+TEST(Ssim, MoreNoiseLowersSsim) {
+  const Image reference = pattern_image(96, 64);
+  const double low = ssim(add_noise(reference, 0.02f), reference);
+  const double mid = ssim(add_noise(reference, 0.08f), reference);
+  const double high = ssim(add_noise(reference, 0.25f), reference);
+  EXPECT_LT(low, 1.0);
+  EXPECT_GT(low, mid);
+  EXPECT_GT(mid, high);
+}
+
+TEST(Ssim, BlurLowersSsim) {
+  const Image reference = pattern_image(96, 64);
+  const double blurred = ssim(box_blur(reference), reference);
+  EXPECT_LT(blurred, 0.999);
+  EXPECT_GT(blurred, 0.0);
+}
+
+TEST(Ssim, MaskRestrictsTheStatistic) {
+  const Image reference = pattern_image(96, 64);
+  Image test = reference;
+  Mask mask = Mask::filled(96, 64, 0);
+  for (int y = 0; y < 64; ++y) {
+    for (int x = 0; x < 96; ++x) {
+      if (x < 40) test.at(x, y) = add_noise(reference, 0.2f).at(x, y);
+      if (x >= 46) mask.values[y * 96 + x] = 1;  // beyond the 5-pixel window radius
+    }
+  }
+  EXPECT_EQ(ssim(test, reference, &mask), 1.0);
+  EXPECT_LT(ssim(test, reference), 0.9);
+}
+
+TEST(Flip, IdenticalImagesGiveZero) {
+  const Image image = pattern_image(64, 48);
+  const FlipResult result = flip(image, image);
+  EXPECT_EQ(result.mean, 0.0);
+  for (float v : result.map.values) ASSERT_EQ(v, 0.0f);
+}
+
+TEST(Flip, DefaultPixelsPerDegreeIsThePapers) {
+  EXPECT_NEAR(FlipParams{}.pixels_per_degree, 67.0206, 1e-3);
+}
+
+TEST(Flip, BlackVersusWhiteIsNearOne) {
+  const Image black = Image::filled(48, 48, glm::vec3(0.0f));
+  const Image white = Image::filled(48, 48, glm::vec3(1.0f));
+  const FlipResult result = flip(black, white);
+  EXPECT_GT(result.mean, 0.9);
+  EXPECT_LE(result.mean, 1.0);
+}
+
+TEST(Flip, MoreNoiseRaisesError) {
+  const Image reference = pattern_image(96, 64);
+  const double low = flip(add_noise(reference, 0.02f), reference).mean;
+  const double mid = flip(add_noise(reference, 0.08f), reference).mean;
+  const double high = flip(add_noise(reference, 0.25f), reference).mean;
+  EXPECT_GT(low, 0.0);
+  EXPECT_LT(low, mid);
+  EXPECT_LT(mid, high);
+}
+
+TEST(Flip, BiggerColourShiftBiggerError) {
+  const Image reference = pattern_image(64, 48);
+  double previous = 0.0;
+  for (float shift : {0.02f, 0.06f, 0.15f, 0.3f}) {
+    Image test = reference;
+    for (glm::vec3& p : test.rgb) p.r = std::min(1.0f, p.r + shift);
+    const double error = flip(test, reference).mean;
+    EXPECT_GT(error, previous) << "red shift " << shift;
+    // The magnitude does not depend much on which image is the reference.
+    EXPECT_NEAR(flip(reference, test).mean, error, 0.25 * error) << "red shift " << shift;
+    previous = error;
+  }
+}
+
+TEST(Flip, MaskRestrictsTheStatistic) {
+  const Image reference = pattern_image(128, 48);
+  Image test = reference;
+  Mask mask = Mask::filled(128, 48, 0);
+  for (int y = 0; y < 48; ++y) {
+    for (int x = 0; x < 128; ++x) {
+      if (x < 40) test.at(x, y) = glm::vec3(1.0f) - reference.at(x, y);
+      if (x >= 80) mask.values[y * 128 + x] = 1;  // beyond the filters' reach (about 10 px)
+    }
+  }
+  EXPECT_EQ(flip(test, reference, &mask).mean, 0.0);
+  EXPECT_GT(flip(test, reference).mean, 0.1);
+}
+
+TEST(Metrics, ResultsDoNotDependOnThreadCount) {
+  const Image reference = pattern_image(200, 150);
+  const Image test = add_noise(reference, 0.1f);
+  FlipResult one_thread;
+  ScalarMap ssim_one;
+  double ssim_mean_one = 0.0;
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+    one_thread = flip(test, reference);
+    ssim_mean_one = ssim(test, reference, nullptr, &ssim_one);
+  }
+  const FlipResult many = flip(test, reference);
+  ScalarMap ssim_many;
+  const double ssim_mean_many = ssim(test, reference, nullptr, &ssim_many);
+  EXPECT_EQ(one_thread.mean, many.mean);
+  EXPECT_EQ(one_thread.map.values, many.map.values);
+  EXPECT_EQ(ssim_mean_one, ssim_mean_many);
+  EXPECT_EQ(ssim_one.values, ssim_many.values);
+}
+
+TEST(Metrics, BadInputNamesTheProblem) {
+  const Image a = pattern_image(32, 32);
+  const Image b = pattern_image(32, 16);
+  try {
+    psnr(a, b);
+    FAIL() << "size mismatch accepted";
+  } catch (const QualityError& e) {
+    EXPECT_NE(std::string(e.what()).find("32x16"), std::string::npos) << e.what();
+  }
+  const Mask empty = Mask::filled(32, 32, 0);
+  EXPECT_THROW(ssim(a, a, &empty), QualityError);
+  const Mask wrong_size = Mask::filled(8, 8, 1);
+  EXPECT_THROW(flip(a, a, &wrong_size), QualityError);
+  Image nan_image = a;
+  nan_image.at(3, 4).g = std::nanf("");
+  try {
+    flip(nan_image, a);
+    FAIL() << "NaN accepted";
+  } catch (const QualityError& e) {
+    EXPECT_NE(std::string(e.what()).find("(3, 4)"), std::string::npos) << e.what();
+  }
+  Image truncated = a;
+  truncated.rgb.pop_back();
+  EXPECT_THROW(psnr(truncated, a), QualityError);
+  EXPECT_THROW(flip(a, a, nullptr, FlipParams{0.0}), QualityError);
+}
+
+}  // namespace
+}  // namespace skinsim::quality
