@@ -1,0 +1,166 @@
+#include "reports/chart_canvas.h"
+
+#include <vtkAxis.h>
+#include <vtkChartLegend.h>
+#include <vtkChartXY.h>
+#include <vtkContextScene.h>
+#include <vtkContextView.h>
+#include <vtkDoubleArray.h>
+#include <vtkGL2PSExporter.h>
+#include <vtkNew.h>
+#include <vtkPNGWriter.h>
+#include <vtkPen.h>
+#include <vtkPlot.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkStringArray.h>
+#include <vtkTable.h>
+#include <vtkTextProperty.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <filesystem>
+
+#include "reports/atomic_file.h"
+#include "reports/display_check.h"
+#include "reports/report_error.h"
+
+namespace skinsim::reports {
+
+namespace fs = std::filesystem;
+
+Rgb palette_colour(std::size_t i) {
+  // Tableau 10 (Tableau Software's default categorical palette): distinct, colour-blind aware.
+  static constexpr Rgb kPalette[] = {
+      {78, 121, 167}, {242, 142, 43},  {225, 87, 89},   {118, 183, 178}, {89, 161, 79},
+      {237, 201, 72}, {176, 122, 161}, {255, 157, 167}, {156, 117, 95},  {186, 176, 172}};
+  return kPalette[i % std::size(kPalette)];
+}
+
+vtkSmartPointer<vtkContextView> make_chart_view(const ChartOptions& options) {
+  require_charts_available();  // VTK aborts the process if it cannot open a display
+  if (options.width < 200 || options.height < 150) {
+    throw ReportError("chart size " + std::to_string(options.width) + "x" +
+                      std::to_string(options.height) + " is too small (minimum 200x150)");
+  }
+  auto view = vtkSmartPointer<vtkContextView>::New();
+  view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
+  view->GetRenderWindow()->SetOffScreenRendering(1);
+  view->GetRenderWindow()->SetSize(options.width, options.height);
+  view->GetRenderWindow()->SetMultiSamples(0);  // GL2PS and PNG readback agree without MSAA
+  return view;
+}
+
+void style_chart(vtkChart* chart, const std::string& title, const ChartOptions& options) {
+  chart->SetTitle(title);
+  chart->GetTitleProperties()->SetFontSize(options.title_font_size);
+  chart->GetTitleProperties()->SetBold(true);
+  chart->GetTitleProperties()->SetColor(0.1, 0.1, 0.1);
+}
+
+void style_axis(vtkAxis* axis, const std::string& title, const ChartOptions& options) {
+  axis->SetTitle(title);
+  axis->GetTitleProperties()->SetFontSize(options.axis_title_font_size);
+  axis->GetTitleProperties()->SetBold(false);
+  axis->GetTitleProperties()->SetColor(0.1, 0.1, 0.1);
+  axis->GetLabelProperties()->SetFontSize(options.label_font_size);
+  axis->GetLabelProperties()->SetColor(0.15, 0.15, 0.15);
+  axis->GetGridPen()->SetColor(225, 225, 225);
+}
+
+vtkSmartPointer<vtkDoubleArray> make_column(const std::string& name,
+                                            const std::vector<double>& values) {
+  auto column = vtkSmartPointer<vtkDoubleArray>::New();
+  column->SetName(name.c_str());
+  column->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    column->SetValue(static_cast<vtkIdType>(i), values[i]);
+  }
+  return column;
+}
+
+void set_ticks(vtkAxis* axis, const std::vector<double>& positions,
+               const std::vector<std::string>& labels) {
+  vtkNew<vtkDoubleArray> where;
+  vtkNew<vtkStringArray> text;
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    where->InsertNextValue(positions[i]);
+    text->InsertNextValue(labels[i]);
+  }
+  axis->SetCustomTickPositions(where, text);
+}
+
+void add_vertical_line(vtkChartXY* chart, double at, double y_lo, double y_hi,
+                       const std::string& legend, const Rgb& colour) {
+  vtkNew<vtkTable> table;
+  table->AddColumn(make_column("x", {at, at}));
+  table->AddColumn(make_column(legend, {y_lo, y_hi}));
+  vtkPlot* line = chart->AddPlot(vtkChart::LINE);
+  line->SetInputData(table, 0, 1);
+  line->SetColor(colour[0], colour[1], colour[2], 255);
+  line->SetWidth(3.0);
+  line->GetPen()->SetLineType(vtkPen::DASH_LINE);
+}
+
+namespace {
+
+void write_png(vtkRenderWindow* window, const std::string& path) {
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  const std::string tmp = temporary_path_beside(path);
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetFileName(tmp.c_str());
+  writer->SetInputConnection(grab->GetOutputPort());
+  writer->Write();
+  if (writer->GetErrorCode() != 0 || !fs::exists(tmp)) {
+    std::error_code ec;
+    fs::remove(tmp, ec);
+    throw ReportError("cannot write chart " + path);
+  }
+  replace_file(tmp, path);
+}
+
+void write_svg(vtkRenderWindow* window, const std::string& path) {
+  const std::string tmp = temporary_path_beside(path);  // ends in .svg
+  const std::string tmp_prefix = tmp.substr(0, tmp.size() - 4);
+  vtkNew<vtkGL2PSExporter> exporter;
+  exporter->SetRenderWindow(window);
+  exporter->SetFileFormatToSVG();
+  exporter->SetFilePrefix(tmp_prefix.c_str());
+  exporter->CompressOff();
+  // The OpenGL2 backend always hands GL2PS the background as an image, which Debian's libgl2ps
+  // (built without PNG) cannot embed: it warns once and the SVG background stays transparent.
+  exporter->UsePainterSettings();  // chart items are painted back to front: no depth sort
+  exporter->Write();
+  if (!fs::exists(tmp) || fs::file_size(tmp) == 0) {
+    std::error_code ec;
+    fs::remove(tmp, ec);
+    throw ReportError("cannot write chart " + path + " (GL2PS export failed)");
+  }
+  replace_file(tmp, path);
+}
+
+}  // namespace
+
+ChartFiles save_chart(vtkContextView* view, const std::string& path_stem,
+                      const ChartOptions& options) {
+  const fs::path dir = fs::path(path_stem).parent_path();
+  std::error_code ec;
+  if (!dir.empty()) fs::create_directories(dir, ec);
+  if (ec) throw ReportError("cannot create directory " + dir.string() + ": " + ec.message());
+  vtkRenderWindow* window = view->GetRenderWindow();
+  window->Render();
+  ChartFiles files;
+  files.png = path_stem + ".png";
+  write_png(window, files.png);
+  if (options.write_svg) {
+    files.svg = path_stem + ".svg";
+    write_svg(window, files.svg);
+    window->Render();  // GL2PS re-renders in feedback mode; leave the window as it was
+  }
+  return files;
+}
+
+}  // namespace skinsim::reports

@@ -1,0 +1,107 @@
+#include "reports/csv_writer.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <set>
+
+#include "reports/atomic_file.h"
+#include "reports/report_error.h"
+
+namespace skinsim::reports {
+
+namespace {
+
+struct Columns {
+  std::vector<std::string> knobs;
+  std::vector<std::string> passes;
+  std::vector<std::string> metrics;
+};
+
+Columns collect_columns(const SweepTable& table) {
+  std::set<std::string> knobs;
+  std::set<std::string> metrics;
+  Columns c;
+  for (const ConfigResult& r : table.rows) {
+    for (const auto& [k, v] : r.knobs) knobs.insert(k);
+    for (const auto& [k, v] : r.quality) metrics.insert(k);
+    for (const PassCost& p : r.passes) {
+      if (std::find(c.passes.begin(), c.passes.end(), p.name) == c.passes.end()) {
+        c.passes.push_back(p.name);
+      }
+    }
+  }
+  c.knobs.assign(knobs.begin(), knobs.end());
+  c.metrics.assign(metrics.begin(), metrics.end());
+  return c;
+}
+
+// Shortest text that reads back to the same double.
+std::string number(double v) {
+  return fmt::format("{}", v);
+}
+
+}  // namespace
+
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string out = "\"";
+  for (char ch : text) {
+    if (ch == '"') out += '"';
+    out += ch;
+  }
+  return out + "\"";
+}
+
+std::vector<std::string> sweep_csv_columns(const SweepTable& table) {
+  const Columns c = collect_columns(table);
+  std::vector<std::string> cols = {"id", "label"};
+  cols.insert(cols.end(), c.knobs.begin(), c.knobs.end());
+  cols.insert(cols.end(), {"frame_ms", "fps", "dram_bytes"});
+  for (const std::string& p : c.passes) {
+    cols.push_back(p + ".ms");
+    cols.push_back(p + ".bottleneck");
+  }
+  cols.insert(cols.end(), c.metrics.begin(), c.metrics.end());
+  std::set<std::string> seen;
+  for (const std::string& col : cols) {
+    if (!seen.insert(col).second) {
+      throw ReportError("sweep CSV: column '" + col +
+                        "' would appear twice (a knob, pass or quality metric reuses the name)");
+    }
+  }
+  return cols;
+}
+
+std::string sweep_csv(const SweepTable& table) {
+  const std::vector<std::string> cols = sweep_csv_columns(table);
+  const Columns c = collect_columns(table);
+  std::string out;
+  for (std::size_t i = 0; i < cols.size(); ++i) out += (i ? "," : "") + csv_field(cols[i]);
+  out += "\n";
+  for (const ConfigResult& r : table.rows) {
+    const std::vector<PassCost> passes = merged_passes(r);
+    std::vector<std::string> cells = {r.id, r.label};
+    for (const std::string& k : c.knobs) cells.push_back(knob_value(r, k));
+    cells.insert(cells.end(), {number(r.frame_ms), number(r.fps), number(r.dram_bytes)});
+    for (const std::string& name : c.passes) {
+      auto it = std::find_if(passes.begin(), passes.end(),
+                             [&](const PassCost& p) { return p.name == name; });
+      cells.push_back(it == passes.end() ? "" : number(it->ms));
+      cells.push_back(it == passes.end() ? "" : it->bottleneck);
+    }
+    for (const std::string& m : c.metrics) {
+      auto it = r.quality.find(m);
+      cells.push_back(it == r.quality.end() ? "" : number(it->second));
+    }
+    for (std::size_t i = 0; i < cells.size(); ++i) out += (i ? "," : "") + csv_field(cells[i]);
+    out += "\n";
+  }
+  return out;
+}
+
+void write_sweep_csv(const SweepTable& table, const std::string& path) {
+  write_file_atomically(path, sweep_csv(table));
+}
+
+}  // namespace skinsim::reports

@@ -1,0 +1,265 @@
+#include "reports/html_report.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <optional>
+#include <set>
+
+#include "reports/atomic_file.h"
+#include "reports/csv_writer.h"
+#include "reports/pareto.h"
+#include "reports/report_charts.h"
+#include "reports/report_error.h"
+
+namespace skinsim::reports {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kStyle = R"(
+body { font-family: system-ui, sans-serif; margin: 2em auto; max-width: 1400px; color: #222; }
+h1 { font-size: 1.6em; } h2 { margin-top: 1.6em; border-bottom: 1px solid #ccc; }
+.summary { background: #f4f7fb; border-left: 5px solid #4e79a7; padding: 0.8em 1.2em; }
+.recommend { background: #fff5f5; border-left: 5px solid #c80000; padding: 0.8em 1.2em; }
+table { border-collapse: collapse; font-size: 0.9em; }
+th, td { border: 1px solid #ccc; padding: 0.25em 0.6em; text-align: right; }
+th { background: #eee; } td.text { text-align: left; }
+tr.chosen { background: #ffe9e9; font-weight: bold; } tr.over { color: #888; }
+figure { margin: 1.5em 0; } figure img { width: 100%; border: 1px solid #ddd; }
+.thumbs { display: flex; flex-wrap: wrap; gap: 1em; }
+.thumb { font-size: 0.8em; width: 330px; } .thumb img { width: 160px; border: 1px solid #ccc; }
+)";
+
+std::string esc(const std::string& s) {
+  return html_escape(s);
+}
+std::string link(const std::string& path) {
+  return esc(url_encode_path(path));
+}
+std::string ms(double v) {
+  return fmt::format("{:.2f}", v);
+}
+std::string metric_text(double v) {
+  return fmt::format("{:.4g}", v);
+}
+std::string name_of(const ConfigResult& r) {
+  return r.label.empty() ? r.id : r.label;
+}
+
+// Knobs whose value differs between rows (shown per row) and knobs with one value (shown once).
+std::pair<std::vector<std::string>, std::map<std::string, std::string>> split_knobs(
+    const SweepTable& t) {
+  std::map<std::string, std::set<std::string>> values;
+  for (const ConfigResult& r : t.rows) {
+    for (const auto& [k, v] : r.knobs) values[k].insert(v);
+  }
+  std::vector<std::string> varying;
+  std::map<std::string, std::string> fixed;
+  for (const auto& [k, vs] : values) {
+    const bool everywhere = std::all_of(t.rows.begin(), t.rows.end(),
+                                        [&](const ConfigResult& r) { return r.knobs.count(k); });
+    if (vs.size() == 1 && everywhere)
+      fixed[k] = *vs.begin();
+    else
+      varying.push_back(k);
+  }
+  return {varying, fixed};
+}
+
+std::vector<std::string> metric_names(const SweepTable& t) {
+  std::set<std::string> names;
+  for (const ConfigResult& r : t.rows) {
+    for (const auto& [k, v] : r.quality) names.insert(k);
+  }
+  return {names.begin(), names.end()};
+}
+
+std::string header_section(const SweepTable& t, const ReportOptions& o) {
+  std::size_t within = 0;
+  for (const ConfigResult& r : t.rows) within += r.frame_ms <= t.budget_ms;
+  std::string h = "<h1>" + esc(o.title) + "</h1>\n<div class=\"summary\">\n";
+  h += "<b>Device:</b> " + esc(t.device) + "<br>\n<b>Scene:</b> " + esc(t.scene) +
+       " &nbsp; <b>Resolution:</b> " + esc(t.resolution) + "<br>\n";
+  h += "<b>Frame budget:</b> " +
+       esc(fmt::format("{:.1f} ms ({:.0f} fps)", t.budget_ms, 1000.0 / t.budget_ms)) + "<br>\n";
+  h +=
+      fmt::format("<b>Configurations:</b> {} swept, {} within budget<br>\n", t.rows.size(), within);
+  h += "<b>Quality metric:</b> " + esc(o.metric_label) + "\n</div>\n";
+  return h;
+}
+
+std::string recommendation_section(const SweepTable& t, const ReportOptions& o,
+                                   const std::optional<std::size_t>& knee) {
+  std::string h = "<h2>Recommendation</h2>\n<div class=\"recommend\">\n";
+  if (knee) {
+    const ConfigResult& r = t.rows[*knee];
+    h += "<p><b>" + esc(name_of(r)) + "</b> (id <code>" + esc(r.id) + "</code>): " +
+         esc(fmt::format("{:.2f} ms, {:.1f} fps, {} = {:.4g}, {:.1f} MB DRAM per frame", r.frame_ms,
+                         r.fps, o.quality_metric, r.quality.at(o.quality_metric),
+                         r.dram_bytes / 1e6)) +
+         ".</p>\n<p>Knobs: ";
+    for (const auto& [k, v] : r.knobs) h += "<code>" + esc(k) + "=" + esc(v) + "</code> ";
+    h += "</p>\n";
+  } else {
+    h += "<p><b>No configuration with " + esc(o.quality_metric) +
+         " fits the frame budget.</b></p>\n";
+  }
+  const auto fastest = std::min_element(
+      t.rows.begin(), t.rows.end(),
+      [](const ConfigResult& a, const ConfigResult& b) { return a.frame_ms < b.frame_ms; });
+  if (fastest != t.rows.end()) {
+    h += "<p>For comparison, the fastest configuration is " + esc(name_of(*fastest)) + " at " +
+         ms(fastest->frame_ms) + " ms.</p>\n";
+  }
+  h += "<p><i>How it is chosen:</i> " + esc(knee_rule_text()) + "</p>\n</div>\n";
+  return h;
+}
+
+std::string charts_section(const std::vector<ReportFigure>& figures, bool drawn) {
+  std::string h = "<h2>Charts</h2>\n";
+  if (!drawn) return h + "<p>Charts were not drawn (run without --no-charts to draw them).</p>\n";
+  for (const ReportFigure& f : figures) {
+    h += "<figure><a href=\"" + link(f.png) + "\"><img src=\"" + link(f.png) + "\" alt=\"" +
+         esc(f.caption) + "\"></a>\n<figcaption>" + esc(f.caption);
+    if (!f.svg.empty()) h += " (<a href=\"" + link(f.svg) + "\">SVG</a>)";
+    h += "</figcaption></figure>\n";
+  }
+  return h;
+}
+
+std::string table_section(const SweepTable& t, const ReportOptions& o,
+                          const std::optional<std::size_t>& knee) {
+  const auto [varying, fixed] = split_knobs(t);
+  const std::vector<std::string> metrics = metric_names(t);
+  std::set<std::size_t> front;
+  for (std::size_t i : pareto_front(t.rows, o.quality_metric, o.higher_is_better)) {
+    front.insert(i);
+  }
+  std::string h = "<h2>Configurations</h2>\n";
+  if (!fixed.empty()) {
+    h += "<p>Same for every configuration: ";
+    for (const auto& [k, v] : fixed) h += "<code>" + esc(k) + "=" + esc(v) + "</code> ";
+    h += "</p>\n";
+  }
+  h += "<p>Bold: recommended. Grey: over budget. Pareto: on the front of frame time vs " +
+       esc(o.quality_metric) + ".</p>\n<table>\n<tr><th>configuration</th>";
+  for (const std::string& k : varying) h += "<th>" + esc(k) + "</th>";
+  h += "<th>frame ms</th><th>fps</th><th>bottleneck</th><th>DRAM MB</th>";
+  for (const std::string& m : metrics) h += "<th>" + esc(m) + "</th>";
+  h += "<th>Pareto</th></tr>\n";
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    const ConfigResult& r = t.rows[i];
+    const char* cls = knee && *knee == i ? " class=\"chosen\""
+                                         : (r.frame_ms > t.budget_ms ? " class=\"over\"" : "");
+    h += std::string("<tr") + cls + "><td class=\"text\">" + esc(name_of(r)) + "</td>";
+    for (const std::string& k : varying)
+      h += "<td class=\"text\">" + esc(knob_value(r, k)) + "</td>";
+    h += "<td>" + ms(r.frame_ms) + "</td><td>" + fmt::format("{:.1f}", r.fps) +
+         "</td><td class=\"text\">" + esc(dominant_bottleneck(r)) + "</td><td>" +
+         fmt::format("{:.1f}", r.dram_bytes / 1e6) + "</td>";
+    for (const std::string& m : metrics) {
+      auto it = r.quality.find(m);
+      h += "<td>" + (it == r.quality.end() ? std::string("-") : metric_text(it->second)) + "</td>";
+    }
+    h += std::string("<td>") + (front.count(i) ? "yes" : "") + "</td></tr>\n";
+  }
+  return h + "</table>\n";
+}
+
+std::string thumbnails_section(const SweepTable& t) {
+  std::string cells;
+  for (const ConfigResult& r : t.rows) {
+    if (r.frame_image.empty() && r.error_image.empty()) continue;
+    cells += "<div class=\"thumb\"><div>" + esc(name_of(r)) + "</div>";
+    for (const std::string* path : {&r.frame_image, &r.error_image}) {
+      if (path->empty()) continue;
+      const char* what = path == &r.frame_image ? "frame" : "error map";
+      cells += "<a href=\"" + link(*path) + "\"><img src=\"" + link(*path) + "\" alt=\"" +
+               esc(std::string(what) + " of " + name_of(r)) + "\" loading=\"lazy\"></a> ";
+    }
+    cells += "</div>\n";
+  }
+  if (cells.empty()) return "";
+  return "<h2>Frames and error maps</h2>\n<p>Left: rendered frame; right: error map against the "
+         "reference. Click for full size.</p>\n<div class=\"thumbs\">\n" +
+         cells + "</div>\n";
+}
+
+std::string assumptions_section(const SweepTable& t) {
+  std::string h = "<h2>Model assumptions and sensitivity</h2>\n";
+  if (t.assumptions.empty()) {
+    h += "<p>The sweep recorded no assumptions.</p>\n";
+  } else {
+    h += "<ul>\n";
+    for (const std::string& a : t.assumptions) h += "<li>" + esc(a) + "</li>\n";
+    h += "</ul>\n";
+  }
+  if (t.sensitivity.empty()) return h + "<p>No sensitivity analysis was recorded.</p>\n";
+  h += "<p>Frame time of the base configuration when one uncertain figure moves over its "
+       "plausible range (others at their base values).</p>\n<table>\n<tr><th>figure</th>"
+       "<th>min</th><th>base</th><th>max</th><th>frame ms at min</th><th>at base</th>"
+       "<th>at max</th><th>swing ms</th></tr>\n";
+  for (const SensitivityRow& s : t.sensitivity) {
+    const std::string unit = s.unit.empty() ? "" : " " + s.unit;
+    const double lo = std::min({s.frame_ms_at_min, s.frame_ms_at_base, s.frame_ms_at_max});
+    const double hi = std::max({s.frame_ms_at_min, s.frame_ms_at_base, s.frame_ms_at_max});
+    h += "<tr><td class=\"text\">" + esc(s.figure) + "</td>";
+    for (double v : {s.min_value, s.base_value, s.max_value}) {
+      h += "<td>" + esc(fmt::format("{:g}", v) + unit) + "</td>";
+    }
+    for (double v : {s.frame_ms_at_min, s.frame_ms_at_base, s.frame_ms_at_max, hi - lo}) {
+      h += "<td>" + ms(v) + "</td>";
+    }
+    h += "</tr>\n";
+  }
+  return h + "</table>\n";
+}
+
+}  // namespace
+
+std::string write_report(const SweepTable& table, const std::string& dir,
+                         const ReportOptions& options) {
+  validate_sweep_table(table);
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw ReportError("cannot create report directory " + dir + ": " + ec.message());
+
+  const auto knee =
+      pareto_knee(table.rows, options.quality_metric, options.higher_is_better, table.budget_ms);
+  const ConfigResult* dram_row = knee ? &table.rows[*knee] : nullptr;
+  if (!dram_row && !table.rows.empty()) {
+    dram_row = &*std::min_element(
+        table.rows.begin(), table.rows.end(),
+        [](const ConfigResult& a, const ConfigResult& b) { return a.frame_ms < b.frame_ms; });
+  }
+  std::vector<ReportFigure> figures;
+  if (options.draw_charts && !table.rows.empty()) {
+    figures = draw_report_charts(table, dir, options, dram_row);
+  }
+  if (options.write_data_files) {
+    write_sweep_json(table, dir + "/results.json");
+    write_sweep_csv(table, dir + "/sweep.csv");
+  }
+
+  std::string page = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
+  page += "<title>" + esc(options.title) + "</title>\n<style>" + kStyle + "</style>\n</head>\n";
+  page += "<body>\n" + header_section(table, options) +
+          recommendation_section(table, options, knee) +
+          charts_section(figures, options.draw_charts) + table_section(table, options, knee) +
+          thumbnails_section(table) + assumptions_section(table);
+  if (options.write_data_files) {
+    page +=
+        "<h2>Data</h2>\n<p><a href=\"results.json\">results.json</a> (everything on this "
+        "page; regenerate the report from it) and <a href=\"sweep.csv\">sweep.csv</a> (one "
+        "row per configuration).</p>\n";
+  }
+  page += "</body>\n</html>\n";
+  const std::string path = (fs::path(dir) / "report.html").string();
+  write_file_atomically(path, page);
+  return path;
+}
+
+}  // namespace skinsim::reports

@@ -1,0 +1,90 @@
+#include "reports/report_charts.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <set>
+
+namespace skinsim::reports {
+
+namespace {
+
+ReportFigure relative(const ChartFiles& files, const std::string& caption) {
+  namespace fs = std::filesystem;
+  return {fs::path(files.png).filename().string(),
+          files.svg.empty() ? std::string() : fs::path(files.svg).filename().string(), caption};
+}
+
+std::size_t distinct_values(const SweepTable& table, const std::string& knob) {
+  std::set<std::string> values;
+  for (const ConfigResult& r : table.rows) {
+    if (r.knobs.count(knob)) values.insert(r.knobs.at(knob));
+  }
+  return values.size();
+}
+
+// A grouping is worth a chart if it compares series, or if its one series runs along a knob;
+// a single series in frame-time order would join unrelated configurations.
+bool worth_drawing(const SweepTable& table, const std::string& series, const std::string& order) {
+  const std::size_t n = distinct_values(table, series);
+  return n >= 2 || (n == 1 && !order.empty() && distinct_values(table, order) >= 2);
+}
+
+bool any_row_has_metric(const SweepTable& table, const std::string& metric) {
+  return std::any_of(table.rows.begin(), table.rows.end(),
+                     [&](const ConfigResult& r) { return r.quality.count(metric) > 0; });
+}
+
+bool has_dram_causes(const ConfigResult& row) {
+  return std::any_of(row.passes.begin(), row.passes.end(),
+                     [](const PassCost& p) { return !p.dram_bytes_by_cause.empty(); });
+}
+
+}  // namespace
+
+std::vector<ReportFigure> draw_report_charts(const SweepTable& table, const std::string& dir,
+                                             const ReportOptions& options,
+                                             const ConfigResult* dram_row) {
+  std::vector<ReportFigure> figures;
+  const std::string stem = dir + "/";
+  if (any_row_has_metric(table, options.quality_metric)) {
+    for (const auto& [series, order] : options.tradeoff_groupings) {
+      if (!worth_drawing(table, series, order)) continue;
+      TradeoffSpec spec;
+      spec.metric = options.quality_metric;
+      spec.higher_is_better = options.higher_is_better;
+      spec.metric_label = options.metric_label;
+      spec.series_knob = series;
+      spec.order_knob = order;
+      const std::string caption =
+          "Frame time vs " + options.metric_label + ", one line per " + series +
+          (order.empty() ? "" : " across " + order) +
+          ". Squares: Pareto front; diamond: recommended; dashed red: frame budget.";
+      figures.push_back(
+          relative(write_tradeoff_chart(table, spec, stem + "tradeoff_by_" + series, options.chart),
+                   caption));
+    }
+  }
+  figures.push_back(relative(
+      write_pass_stack_chart(table, stem + "pass_times", options.chart),
+      "Modelled time of each pass per configuration; the unit in parentheses is the bottleneck "
+      "of the configuration's costliest pass. Dashed red: frame budget."));
+  if (table.heatmap) {
+    figures.push_back(
+        relative(write_tile_cost_heatmap(*table.heatmap, stem + "tile_cost", options.chart),
+                 "Modelled cost per " + std::to_string(table.heatmap->tile_size) +
+                     " px tile of the " + table.heatmap->pass_name + " pass over the frame."));
+    if (!table.heatmap->bottleneck.empty()) {
+      figures.push_back(relative(
+          write_tile_bottleneck_map(*table.heatmap, stem + "tile_bottleneck", options.chart),
+          "Unit that bounds each tile of the " + table.heatmap->pass_name + " pass."));
+    }
+  }
+  if (dram_row && has_dram_causes(*dram_row)) {
+    figures.push_back(
+        relative(write_dram_by_cause_chart(*dram_row, stem + "dram_by_cause", options.chart),
+                 "DRAM traffic per pass by cause for " + dram_row->label + "."));
+  }
+  return figures;
+}
+
+}  // namespace skinsim::reports

@@ -1,0 +1,369 @@
+#include "reports/sweep_table.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "reports/atomic_file.h"
+#include "reports/report_error.h"
+
+namespace skinsim::reports {
+
+using nlohmann::json;
+
+namespace {
+
+std::string field_path(const std::string& where, const std::string& key) {
+  return where.empty() ? key : where + "." + key;
+}
+
+const json& require(const json& j, const std::string& where, const std::string& key) {
+  if (!j.is_object()) throw ReportError(where + ": expected an object");
+  auto it = j.find(key);
+  if (it == j.end()) throw ReportError(field_path(where, key) + ": missing");
+  return *it;
+}
+
+double number_at(const json& j, const std::string& where) {
+  if (!j.is_number()) throw ReportError(where + ": expected a number, got " + j.dump());
+  return j.get<double>();
+}
+
+std::string string_at(const json& j, const std::string& where) {
+  if (!j.is_string()) throw ReportError(where + ": expected a string, got " + j.dump());
+  return j.get<std::string>();
+}
+
+double req_number(const json& j, const std::string& where, const std::string& key) {
+  return number_at(require(j, where, key), field_path(where, key));
+}
+
+std::string req_string(const json& j, const std::string& where, const std::string& key) {
+  return string_at(require(j, where, key), field_path(where, key));
+}
+
+std::string opt_string(const json& j, const std::string& where, const std::string& key) {
+  auto it = j.find(key);
+  return it == j.end() ? std::string() : string_at(*it, field_path(where, key));
+}
+
+int req_int(const json& j, const std::string& where, const std::string& key) {
+  const json& v = require(j, where, key);
+  if (!v.is_number_integer()) {
+    throw ReportError(field_path(where, key) + ": expected an integer, got " + v.dump());
+  }
+  return v.get<int>();
+}
+
+const json& array_at(const json& j, const std::string& where) {
+  if (!j.is_array()) throw ReportError(where + ": expected an array");
+  return j;
+}
+
+std::string index_path(const std::string& where, std::size_t i) {
+  return where + "[" + std::to_string(i) + "]";
+}
+
+template <typename T>
+std::map<std::string, T> map_at(const json& j, const std::string& where) {
+  if (!j.is_object()) throw ReportError(where + ": expected an object");
+  std::map<std::string, T> out;
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    const std::string path = where + "." + it.key();
+    if constexpr (std::is_same_v<T, double>) {
+      out[it.key()] = number_at(it.value(), path);
+    } else {
+      out[it.key()] = string_at(it.value(), path);
+    }
+  }
+  return out;
+}
+
+std::vector<std::string> strings_at(const json& j, const std::string& where) {
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < array_at(j, where).size(); ++i) {
+    out.push_back(string_at(j[i], index_path(where, i)));
+  }
+  return out;
+}
+
+PassCost parse_pass(const json& j, const std::string& where) {
+  PassCost p;
+  p.name = req_string(j, where, "name");
+  p.ms = req_number(j, where, "ms");
+  p.bottleneck = opt_string(j, where, "bottleneck");
+  if (j.contains("dram_bytes_by_cause")) {
+    p.dram_bytes_by_cause =
+        map_at<double>(j["dram_bytes_by_cause"], field_path(where, "dram_bytes_by_cause"));
+  }
+  return p;
+}
+
+ConfigResult parse_config(const json& j, const std::string& where) {
+  ConfigResult c;
+  c.id = req_string(j, where, "id");
+  c.label = opt_string(j, where, "label");
+  if (j.contains("knobs")) c.knobs = map_at<std::string>(j["knobs"], field_path(where, "knobs"));
+  c.frame_ms = req_number(j, where, "frame_ms");
+  c.fps = req_number(j, where, "fps");
+  c.dram_bytes = req_number(j, where, "dram_bytes");
+  if (j.contains("passes")) {
+    const std::string p = field_path(where, "passes");
+    const json& passes = array_at(j["passes"], p);
+    for (std::size_t i = 0; i < passes.size(); ++i) {
+      c.passes.push_back(parse_pass(passes[i], index_path(p, i)));
+    }
+  }
+  if (j.contains("quality")) c.quality = map_at<double>(j["quality"], field_path(where, "quality"));
+  c.frame_image = opt_string(j, where, "frame_image");
+  c.error_image = opt_string(j, where, "error_image");
+  return c;
+}
+
+TileHeatmap parse_heatmap(const json& j, const std::string& where) {
+  TileHeatmap h;
+  h.tiles_x = req_int(j, where, "tiles_x");
+  h.tiles_y = req_int(j, where, "tiles_y");
+  h.tile_size = req_int(j, where, "tile_size");
+  const std::string ms_path = field_path(where, "ms");
+  const json& ms = array_at(require(j, where, "ms"), ms_path);
+  for (std::size_t i = 0; i < ms.size(); ++i)
+    h.ms.push_back(number_at(ms[i], index_path(ms_path, i)));
+  if (j.contains("bottleneck"))
+    h.bottleneck = strings_at(j["bottleneck"], field_path(where, "bottleneck"));
+  h.pass_name = opt_string(j, where, "pass_name");
+  h.config_id = opt_string(j, where, "config_id");
+  return h;
+}
+
+SensitivityRow parse_sensitivity(const json& j, const std::string& where) {
+  SensitivityRow s;
+  s.figure = req_string(j, where, "figure");
+  s.unit = opt_string(j, where, "unit");
+  s.min_value = req_number(j, where, "min_value");
+  s.base_value = req_number(j, where, "base_value");
+  s.max_value = req_number(j, where, "max_value");
+  s.frame_ms_at_min = req_number(j, where, "frame_ms_at_min");
+  s.frame_ms_at_base = req_number(j, where, "frame_ms_at_base");
+  s.frame_ms_at_max = req_number(j, where, "frame_ms_at_max");
+  return s;
+}
+
+SweepTable parse_table(const json& j) {
+  SweepTable t;
+  t.device = req_string(j, "", "device");
+  t.scene = req_string(j, "", "scene");
+  t.resolution = req_string(j, "", "resolution");
+  t.budget_ms = req_number(j, "", "budget_ms");
+  const json& rows = array_at(require(j, "", "rows"), "rows");
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    t.rows.push_back(parse_config(rows[i], index_path("rows", i)));
+  }
+  if (j.contains("heatmap") && !j["heatmap"].is_null()) {
+    t.heatmap = parse_heatmap(j["heatmap"], "heatmap");
+  }
+  if (j.contains("assumptions")) t.assumptions = strings_at(j["assumptions"], "assumptions");
+  if (j.contains("sensitivity")) {
+    const json& sens = array_at(j["sensitivity"], "sensitivity");
+    for (std::size_t i = 0; i < sens.size(); ++i) {
+      t.sensitivity.push_back(parse_sensitivity(sens[i], index_path("sensitivity", i)));
+    }
+  }
+  return t;
+}
+
+void check_time(double ms, const std::string& where) {
+  if (!std::isfinite(ms) || ms < 0.0) {
+    throw ReportError(where + ": must be a finite, non-negative time in ms, got " +
+                      std::to_string(ms));
+  }
+}
+
+// JSON has no NaN/infinity (nlohmann writes null), so a non-finite value would not round-trip.
+void check_finite(double v, const std::string& where) {
+  if (!std::isfinite(v)) throw ReportError(where + ": must be a finite number");
+}
+
+// Image paths are links in report.html, resolved against the sweep directory.
+void check_relative_path(const std::string& path, const std::string& where) {
+  if (path.empty()) return;
+  const std::filesystem::path p(path);
+  const bool escapes =
+      std::any_of(p.begin(), p.end(), [](const auto& part) { return part == ".."; });
+  if (p.is_absolute() || escapes) {
+    throw ReportError(where + ": '" + path +
+                      "' must be a relative path inside the sweep directory (no '..')");
+  }
+}
+
+}  // namespace
+
+void to_json(json& j, const PassCost& v) {
+  j = json{{"name", v.name},
+           {"ms", v.ms},
+           {"bottleneck", v.bottleneck},
+           {"dram_bytes_by_cause", v.dram_bytes_by_cause}};
+}
+
+void to_json(json& j, const ConfigResult& v) {
+  j = json{{"id", v.id},
+           {"label", v.label},
+           {"knobs", v.knobs},
+           {"frame_ms", v.frame_ms},
+           {"fps", v.fps},
+           {"dram_bytes", v.dram_bytes},
+           {"passes", v.passes},
+           {"quality", v.quality},
+           {"frame_image", v.frame_image},
+           {"error_image", v.error_image}};
+}
+
+void to_json(json& j, const TileHeatmap& v) {
+  j = json{{"tiles_x", v.tiles_x},       {"tiles_y", v.tiles_y},
+           {"tile_size", v.tile_size},   {"ms", v.ms},
+           {"bottleneck", v.bottleneck}, {"pass_name", v.pass_name},
+           {"config_id", v.config_id}};
+}
+
+void to_json(json& j, const SensitivityRow& v) {
+  j = json{{"figure", v.figure},
+           {"unit", v.unit},
+           {"min_value", v.min_value},
+           {"base_value", v.base_value},
+           {"max_value", v.max_value},
+           {"frame_ms_at_min", v.frame_ms_at_min},
+           {"frame_ms_at_base", v.frame_ms_at_base},
+           {"frame_ms_at_max", v.frame_ms_at_max}};
+}
+
+void to_json(json& j, const SweepTable& v) {
+  j = json{{"device", v.device},
+           {"scene", v.scene},
+           {"resolution", v.resolution},
+           {"budget_ms", v.budget_ms},
+           {"rows", v.rows},
+           {"heatmap", v.heatmap ? json(*v.heatmap) : json(nullptr)},
+           {"assumptions", v.assumptions},
+           {"sensitivity", v.sensitivity}};
+}
+
+void from_json(const json& j, PassCost& v) {
+  v = parse_pass(j, "pass");
+}
+void from_json(const json& j, ConfigResult& v) {
+  v = parse_config(j, "row");
+}
+void from_json(const json& j, TileHeatmap& v) {
+  v = parse_heatmap(j, "heatmap");
+}
+void from_json(const json& j, SensitivityRow& v) {
+  v = parse_sensitivity(j, "sensitivity");
+}
+
+void from_json(const json& j, SweepTable& v) {
+  SweepTable t = parse_table(j);
+  validate_sweep_table(t);
+  v = std::move(t);
+}
+
+void validate_sweep_table(const SweepTable& t) {
+  if (!std::isfinite(t.budget_ms) || t.budget_ms <= 0.0) {
+    throw ReportError("budget_ms: must be a positive number of ms, got " +
+                      std::to_string(t.budget_ms));
+  }
+  std::set<std::string> ids;
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    const ConfigResult& r = t.rows[i];
+    const std::string where = index_path("rows", i);
+    if (r.id.empty()) throw ReportError(where + ".id: must not be empty");
+    if (!ids.insert(r.id).second) throw ReportError(where + ".id: duplicate id '" + r.id + "'");
+    check_time(r.frame_ms, where + ".frame_ms");
+    check_finite(r.fps, where + ".fps");
+    check_finite(r.dram_bytes, where + ".dram_bytes");
+    for (const auto& [name, value] : r.quality) check_finite(value, where + ".quality." + name);
+    check_relative_path(r.frame_image, where + ".frame_image");
+    check_relative_path(r.error_image, where + ".error_image");
+    for (std::size_t p = 0; p < r.passes.size(); ++p) {
+      check_time(r.passes[p].ms, where + ".passes" + "[" + std::to_string(p) + "].ms");
+    }
+  }
+  if (t.heatmap) {
+    const TileHeatmap& h = *t.heatmap;
+    if (h.tiles_x <= 0 || h.tiles_y <= 0 || h.tile_size <= 0) {
+      throw ReportError("heatmap: tiles_x, tiles_y and tile_size must be positive");
+    }
+    const std::size_t n = static_cast<std::size_t>(h.tiles_x) * static_cast<std::size_t>(h.tiles_y);
+    if (h.ms.size() != n) {
+      throw ReportError("heatmap.ms: expected tiles_x * tiles_y = " + std::to_string(n) +
+                        " values, got " + std::to_string(h.ms.size()));
+    }
+    if (!h.bottleneck.empty() && h.bottleneck.size() != n) {
+      throw ReportError("heatmap.bottleneck: expected " + std::to_string(n) +
+                        " entries (or none), got " + std::to_string(h.bottleneck.size()));
+    }
+    for (std::size_t i = 0; i < n; ++i) check_time(h.ms[i], index_path("heatmap.ms", i));
+  }
+}
+
+void write_sweep_json(const SweepTable& table, const std::string& path) {
+  validate_sweep_table(table);
+  write_file_atomically(path, json(table).dump(2) + "\n");
+}
+
+SweepTable read_sweep_json(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ReportError(path + ": cannot open for reading");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  json j;
+  try {
+    j = json::parse(buffer.str());
+  } catch (const json::parse_error& e) {
+    throw ReportError(path + ": not valid JSON: " + e.what());
+  }
+  try {
+    return j.get<SweepTable>();
+  } catch (const ReportError& e) {
+    throw ReportError(path + ": " + e.what());
+  }
+}
+
+std::string dominant_bottleneck(const ConfigResult& row) {
+  auto it = std::max_element(row.passes.begin(), row.passes.end(),
+                             [](const PassCost& a, const PassCost& b) { return a.ms < b.ms; });
+  return it == row.passes.end() ? std::string() : it->bottleneck;
+}
+
+std::vector<PassCost> merged_passes(const ConfigResult& row) {
+  std::vector<PassCost> out;
+  std::vector<double> costliest;  // ms of the instance whose bottleneck out[i] carries
+  for (const PassCost& p : row.passes) {
+    auto it =
+        std::find_if(out.begin(), out.end(), [&](const PassCost& m) { return m.name == p.name; });
+    if (it == out.end()) {
+      out.push_back(p);
+      costliest.push_back(p.ms);
+      continue;
+    }
+    const std::size_t i = static_cast<std::size_t>(it - out.begin());
+    it->ms += p.ms;
+    for (const auto& [cause, bytes] : p.dram_bytes_by_cause)
+      it->dram_bytes_by_cause[cause] += bytes;
+    if (p.ms > costliest[i]) {
+      costliest[i] = p.ms;
+      it->bottleneck = p.bottleneck;
+    }
+  }
+  return out;
+}
+
+std::string knob_value(const ConfigResult& row, const std::string& knob) {
+  auto it = row.knobs.find(knob);
+  return it == row.knobs.end() ? std::string() : it->second;
+}
+
+}  // namespace skinsim::reports

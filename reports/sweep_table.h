@@ -1,0 +1,106 @@
+// The results of a sweep over pipeline configurations, as the reports module consumes them.
+// The sweep engine fills these structs; results.json (to_json/from_json) holds everything the
+// charts and the HTML report need, so both can be regenerated from that file alone.
+#pragma once
+
+#include <map>
+#include <nlohmann/json_fwd.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace skinsim::reports {
+
+// Modelled cost of one render pass of one configuration.
+struct PassCost {
+  std::string name;        // e.g. "irradiance", "blur_h", "blur_v", "skin_shade"
+  double ms = 0.0;         // modelled pass time
+  std::string bottleneck;  // unit that bounds the pass, e.g. "alu", "texture", "dram"
+  std::map<std::string, double> dram_bytes_by_cause;  // e.g. "color_store", "texture_miss"
+};
+
+// One configuration of the sweep and what it cost and bought.
+struct ConfigResult {
+  std::string id;     // unique within the sweep; used in file names and tables
+  std::string label;  // short human-readable name, e.g. "scale 0.5, LUT 32x128"
+  // Swept parameters: technique, scale, lut, lut_format, blur_iterations, device, resolution...
+  std::map<std::string, std::string> knobs;
+  double frame_ms = 0.0;
+  double fps = 0.0;
+  double dram_bytes = 0.0;  // per frame
+  std::vector<PassCost> passes;
+  // Image quality against the reference: psnr_skin, ssim_skin, flip_skin, psnr_frame, ...
+  std::map<std::string, double> quality;
+  std::string frame_image;  // relative path inside the sweep directory ("" if none)
+  std::string error_image;  // relative path inside the sweep directory ("" if none)
+};
+
+// Cost of one pass per screen tile. Row-major, row 0 is the TOP row of the frame:
+// ms[ty * tiles_x + tx]. `bottleneck` is empty or has one entry per tile.
+struct TileHeatmap {
+  int tiles_x = 0;
+  int tiles_y = 0;
+  int tile_size = 32;  // pixels per tile side
+  std::vector<double> ms;
+  std::vector<std::string> bottleneck;
+  std::string pass_name;
+  std::string config_id;  // configuration the map belongs to ("" if unspecified)
+};
+
+// How much the frame time moves when one uncertain model figure moves over its plausible
+// range (hardware.md: uncertain constants are picked, documented, and shown here).
+struct SensitivityRow {
+  std::string figure;  // e.g. "gpu_clock_mhz"
+  std::string unit;    // e.g. "MHz" ("" if dimensionless)
+  double min_value = 0.0;
+  double base_value = 0.0;
+  double max_value = 0.0;
+  double frame_ms_at_min = 0.0;
+  double frame_ms_at_base = 0.0;
+  double frame_ms_at_max = 0.0;
+};
+
+struct SweepTable {
+  std::string device;
+  std::string scene;
+  std::string resolution;  // e.g. "2048x1536"
+  double budget_ms = 33.3;
+  std::vector<ConfigResult> rows;
+  std::optional<TileHeatmap> heatmap;
+  std::vector<std::string> assumptions;
+  std::vector<SensitivityRow> sensitivity;
+};
+
+// JSON mapping (nlohmann ADL hooks). from_json throws ReportError naming the field at fault,
+// e.g. "rows[3].frame_ms: expected a number".
+void to_json(nlohmann::json& j, const PassCost& v);
+void to_json(nlohmann::json& j, const ConfigResult& v);
+void to_json(nlohmann::json& j, const TileHeatmap& v);
+void to_json(nlohmann::json& j, const SensitivityRow& v);
+void to_json(nlohmann::json& j, const SweepTable& v);
+void from_json(const nlohmann::json& j, PassCost& v);
+void from_json(const nlohmann::json& j, ConfigResult& v);
+void from_json(const nlohmann::json& j, TileHeatmap& v);
+void from_json(const nlohmann::json& j, SensitivityRow& v);
+void from_json(const nlohmann::json& j, SweepTable& v);
+
+// results.json on disk. Writing is atomic; reading throws ReportError naming the file and field.
+void write_sweep_json(const SweepTable& table, const std::string& path);
+SweepTable read_sweep_json(const std::string& path);
+
+// Checks what JSON cannot: unique ids, finite non-negative times, heat map sizes.
+// Throws ReportError naming the field. Called by from_json and by the writers.
+void validate_sweep_table(const SweepTable& table);
+
+// The bottleneck of the configuration's most expensive pass ("" if it has no passes).
+std::string dominant_bottleneck(const ConfigResult& row);
+
+// The row's passes with same-named passes merged (e.g. blur iterations run as repeated
+// "blur_h"/"blur_v" passes): ms and DRAM bytes summed, bottleneck of the costliest instance.
+// First-appearance order.
+std::vector<PassCost> merged_passes(const ConfigResult& row);
+
+// Value of a knob, or "" if the row does not have it.
+std::string knob_value(const ConfigResult& row, const std::string& knob);
+
+}  // namespace skinsim::reports

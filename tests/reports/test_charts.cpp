@@ -1,0 +1,136 @@
+// Chart functions draw real, non-blank images of the requested size (needs an X display:
+// registered under xvfb-run).
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "reports/charts.h"
+#include "reports/display_check.h"
+#include "reports/report_error.h"
+#include "tests/reports/synthetic_sweep.h"
+#include "tests/reports/test_output_dir.h"
+
+namespace skinsim::reports {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::fresh_output_dir;
+using testing::synthetic_sweep;
+
+class ChartsTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string why;
+    if (!charts_available(&why)) GTEST_SKIP() << why;
+  }
+  ChartOptions options_;
+};
+
+// The PNG has the requested size and more than one colour; the SVG is non-empty vector text.
+void expect_real_chart(const ChartFiles& files, const ChartOptions& options) {
+  ASSERT_TRUE(fs::exists(files.png)) << files.png;
+  OIIO::ImageBuf image(files.png);
+  ASSERT_TRUE(image.read()) << image.geterror();
+  EXPECT_EQ(image.spec().width, options.width);
+  EXPECT_EQ(image.spec().height, options.height);
+  const auto stats = OIIO::ImageBufAlgo::computePixelStats(image);
+  bool varies = false;
+  for (std::size_t c = 0; c < stats.min.size(); ++c) varies |= stats.min[c] != stats.max[c];
+  EXPECT_TRUE(varies) << files.png << " is a single colour";
+  if (!files.svg.empty()) {
+    ASSERT_TRUE(fs::exists(files.svg)) << files.svg;
+    EXPECT_GT(fs::file_size(files.svg), 1000u);
+  }
+}
+
+TEST_F(ChartsTest, TradeoffChartPerLutAndPerScale) {
+  const std::string dir = fresh_output_dir();
+  const SweepTable sweep = synthetic_sweep();
+  TradeoffSpec by_lut;
+  by_lut.metric_label = "FLIP mean over skin (lower is better)";
+  expect_real_chart(write_tradeoff_chart(sweep, by_lut, dir + "/tradeoff_by_lut", options_),
+                    options_);
+  TradeoffSpec by_scale = by_lut;
+  by_scale.series_knob = "scale";
+  by_scale.order_knob = "lut";
+  expect_real_chart(write_tradeoff_chart(sweep, by_scale, dir + "/tradeoff_by_scale", options_),
+                    options_);
+  TradeoffSpec ssim;
+  ssim.metric = "ssim_skin";
+  ssim.higher_is_better = true;
+  options_.write_svg = false;
+  const ChartFiles png_only = write_tradeoff_chart(sweep, ssim, dir + "/tradeoff_ssim", options_);
+  expect_real_chart(png_only, options_);
+  EXPECT_TRUE(png_only.svg.empty());
+  EXPECT_FALSE(fs::exists(dir + "/tradeoff_ssim.svg"));
+}
+
+TEST_F(ChartsTest, TradeoffChartComparesTechniques) {
+  SweepTable sweep = synthetic_sweep();
+  for (std::size_t i = 0; i < sweep.rows.size(); i += 2) {
+    sweep.rows[i].knobs["technique"] = "preintegrated";
+  }
+  TradeoffSpec spec;
+  spec.series_knob = "technique";
+  spec.order_knob = "";
+  spec.filter = {{"scale", "0.5"}};  // the knob filter keeps 4 rows, 2 per technique
+  options_.write_svg = false;
+  expect_real_chart(write_tradeoff_chart(sweep, spec, fresh_output_dir() + "/techniques", options_),
+                    options_);
+}
+
+TEST_F(ChartsTest, TradeoffChartHonoursRequestedSize) {
+  const std::string dir = fresh_output_dir();
+  options_.width = 900;
+  options_.height = 600;
+  options_.write_svg = false;
+  expect_real_chart(write_tradeoff_chart(synthetic_sweep(), {}, dir + "/small", options_),
+                    options_);
+}
+
+TEST_F(ChartsTest, TradeoffChartWithoutTheMetricThrows) {
+  TradeoffSpec spec;
+  spec.metric = "no_such_metric";
+  EXPECT_THROW(write_tradeoff_chart(synthetic_sweep(), spec, fresh_output_dir() + "/x", options_),
+               ReportError);
+}
+
+TEST_F(ChartsTest, PassStackChart) {
+  const std::string dir = fresh_output_dir();
+  const ChartFiles files = write_pass_stack_chart(synthetic_sweep(), dir + "/passes", options_);
+  EXPECT_FALSE(files.svg.empty());
+  expect_real_chart(files, options_);
+}
+
+TEST_F(ChartsTest, TileHeatmapAndBottleneckMap) {
+  const std::string dir = fresh_output_dir();
+  const TileHeatmap heatmap = *synthetic_sweep().heatmap;
+  const ChartFiles cost = write_tile_cost_heatmap(heatmap, dir + "/tile_cost", options_);
+  EXPECT_TRUE(cost.svg.empty());  // raster content: PNG only
+  expect_real_chart(cost, options_);
+  expect_real_chart(write_tile_bottleneck_map(heatmap, dir + "/tile_bottleneck", options_),
+                    options_);
+}
+
+TEST_F(ChartsTest, BottleneckMapNeedsBottlenecks) {
+  TileHeatmap heatmap = *synthetic_sweep().heatmap;
+  heatmap.bottleneck.clear();
+  EXPECT_THROW(write_tile_bottleneck_map(heatmap, fresh_output_dir() + "/x", options_),
+               ReportError);
+}
+
+TEST_F(ChartsTest, DramByCauseChart) {
+  const std::string dir = fresh_output_dir();
+  expect_real_chart(write_dram_by_cause_chart(synthetic_sweep().rows[5], dir + "/dram", options_),
+                    options_);
+}
+
+TEST(BudgetLabel, NamesMillisecondsAndFps) {
+  EXPECT_EQ(budget_label(33.3), "33.3 ms (30 fps)");
+  EXPECT_EQ(budget_label(16.7), "16.7 ms (60 fps)");
+}
+
+}  // namespace
+}  // namespace skinsim::reports

@@ -1,0 +1,75 @@
+// sweep.csv: header and rows.
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "reports/csv_writer.h"
+#include "reports/report_error.h"
+#include "tests/reports/synthetic_sweep.h"
+
+namespace skinsim::reports {
+namespace {
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+TEST(SweepCsv, HeaderListsKnobsTotalsPassesAndMetrics) {
+  const std::vector<std::string> lines = lines_of(sweep_csv(testing::synthetic_sweep()));
+  ASSERT_EQ(lines.size(), 17u);  // header + 16 configurations
+  EXPECT_EQ(lines[0],
+            "id,label,blur_iterations,device,lut,lut_format,resolution,scale,technique,"
+            "frame_ms,fps,dram_bytes,irradiance.ms,irradiance.bottleneck,blur_h.ms,"
+            "blur_h.bottleneck,blur_v.ms,blur_v.bottleneck,skin_shade.ms,skin_shade.bottleneck,"
+            "eyes_background.ms,eyes_background.bottleneck,flip_skin,psnr_frame,psnr_skin,"
+            "ssim_skin");
+}
+
+TEST(SweepCsv, RowsCarryTheValues) {
+  SweepTable sweep;
+  ConfigResult r;
+  r.id = "a";
+  r.label = "scale 0.5, \"big\" LUT";
+  r.knobs = {{"scale", "0.5"}};
+  r.frame_ms = 12.5;
+  r.fps = 80;
+  r.dram_bytes = 1e6;
+  r.passes = {
+      {"shade", 10.0, "alu", {}}, {"blur", 1.25, "texture", {}}, {"blur", 1.25, "dram", {}}};
+  r.quality = {{"flip_skin", 0.125}};
+  ConfigResult s;
+  s.id = "b";
+  s.frame_ms = 3;
+  s.fps = 333;
+  sweep.rows = {r, s};
+  const std::vector<std::string> lines = lines_of(sweep_csv(sweep));
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_EQ(lines[0],
+            "id,label,scale,frame_ms,fps,dram_bytes,shade.ms,shade.bottleneck,blur.ms,"
+            "blur.bottleneck,flip_skin");
+  EXPECT_EQ(lines[1],
+            "a,\"scale 0.5, \"\"big\"\" LUT\",0.5,12.5,80,1000000,10,alu,2.5,texture,0.125");
+  EXPECT_EQ(lines[2], "b,,,3,333,0,,,,,");
+}
+
+TEST(SweepCsv, CollidingColumnNamesAreAnError) {
+  SweepTable sweep;
+  ConfigResult r;
+  r.id = "a";
+  r.knobs = {{"flip_skin", "x"}};
+  r.quality = {{"flip_skin", 0.1}};
+  sweep.rows = {r};
+  EXPECT_THROW(sweep_csv(sweep), ReportError);
+}
+
+TEST(CsvField, QuotesOnlyWhenNeeded) {
+  EXPECT_EQ(csv_field("plain"), "plain");
+  EXPECT_EQ(csv_field("a,b"), "\"a,b\"");
+  EXPECT_EQ(csv_field("line\nbreak"), "\"line\nbreak\"");
+}
+
+}  // namespace
+}  // namespace skinsim::reports

@@ -1,0 +1,135 @@
+// report.html: links resolve, strings are escaped, the recommendation is the knee.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "reports/display_check.h"
+#include "reports/html_report.h"
+#include "reports/pareto.h"
+#include "reports/report_error.h"
+#include "tests/reports/synthetic_sweep.h"
+#include "tests/reports/test_output_dir.h"
+
+namespace skinsim::reports {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::fresh_output_dir;
+using testing::synthetic_sweep;
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The frame and error images the sweep would have written (tiny placeholder files).
+void touch_images(const SweepTable& sweep, const std::string& dir) {
+  for (const ConfigResult& r : sweep.rows) {
+    for (const std::string& rel : {r.frame_image, r.error_image}) {
+      fs::create_directories((fs::path(dir) / rel).parent_path());
+      std::ofstream(fs::path(dir) / rel) << "image";
+    }
+  }
+}
+
+ReportOptions no_charts() {
+  ReportOptions o;
+  o.draw_charts = false;
+  return o;
+}
+
+TEST(HtmlReport, EscapesEveryString) {
+  EXPECT_EQ(html_escape("<a href=\"x\">&'</a>"),
+            "&lt;a href=&quot;x&quot;&gt;&amp;&#39;&lt;/a&gt;");
+  SweepTable sweep = synthetic_sweep();
+  sweep.device = "<script>alert('device')</script>";
+  sweep.rows[0].label = "LUT <b>\"big\"</b> & co";
+  sweep.rows[0].knobs["technique"] = "a<b";
+  sweep.assumptions.push_back("clock < 300 MHz & \"maybe\"");
+  const std::string dir = fresh_output_dir();
+  const std::string html = read_text(write_report(sweep, dir, no_charts()));
+  EXPECT_EQ(html.find("<script>"), std::string::npos);
+  EXPECT_EQ(html.find("<b>\"big\""), std::string::npos);
+  EXPECT_NE(html.find("&lt;script&gt;alert(&#39;device&#39;)&lt;/script&gt;"), std::string::npos);
+  EXPECT_NE(html.find("LUT &lt;b&gt;&quot;big&quot;&lt;/b&gt; &amp; co"), std::string::npos);
+  EXPECT_NE(html.find("clock &lt; 300 MHz &amp; &quot;maybe&quot;"), std::string::npos);
+}
+
+TEST(HtmlReport, LinksResolveWithoutCharts) {
+  const SweepTable sweep = synthetic_sweep();
+  const std::string dir = fresh_output_dir();
+  touch_images(sweep, dir);
+  write_report(sweep, dir, no_charts());
+  EXPECT_TRUE(missing_report_links(dir).empty());
+  EXPECT_TRUE(fs::exists(dir + "/results.json"));
+  EXPECT_TRUE(fs::exists(dir + "/sweep.csv"));
+  EXPECT_FALSE(fs::exists(dir + "/pass_times.png"));
+}
+
+TEST(HtmlReport, MissingImagesAreReported) {
+  const SweepTable sweep = synthetic_sweep();
+  const std::string dir = fresh_output_dir();
+  touch_images(sweep, dir);
+  fs::remove(fs::path(dir) / sweep.rows[3].error_image);
+  write_report(sweep, dir, no_charts());
+  EXPECT_EQ(missing_report_links(dir), std::vector<std::string>{sweep.rows[3].error_image});
+}
+
+TEST(HtmlReport, LinkCheckDecodesFileNames) {
+  SweepTable sweep = synthetic_sweep();
+  sweep.rows[0].frame_image = "frames/odd name & more.png";
+  const std::string dir = fresh_output_dir();
+  touch_images(sweep, dir);
+  const std::string html = read_text(write_report(sweep, dir, no_charts()));
+  EXPECT_NE(html.find("frames/odd%20name%20%26%20more.png"), std::string::npos);
+  EXPECT_TRUE(missing_report_links(dir).empty());
+  fs::remove(fs::path(dir) / sweep.rows[0].frame_image);
+  EXPECT_EQ(missing_report_links(dir), std::vector<std::string>{"frames/odd name & more.png"});
+}
+
+TEST(HtmlReport, NamesTheKneeAsRecommendation) {
+  const SweepTable sweep = synthetic_sweep();
+  const auto knee = pareto_knee(sweep.rows, "flip_skin", false, sweep.budget_ms);
+  ASSERT_TRUE(knee);
+  const std::string html = read_text(write_report(sweep, fresh_output_dir(), no_charts()));
+  const std::size_t section = html.find("<h2>Recommendation</h2>");
+  ASSERT_NE(section, std::string::npos);
+  EXPECT_EQ(html.find(sweep.rows[*knee].label, section),
+            html.find("<b>", section) + 3);  // the first bold name in the section is the knee
+}
+
+TEST(HtmlReport, SaysSoWhenNothingFitsTheBudget) {
+  SweepTable sweep = synthetic_sweep();
+  sweep.budget_ms = 1.0;
+  const std::string html = read_text(write_report(sweep, fresh_output_dir(), no_charts()));
+  EXPECT_NE(html.find("No configuration with flip_skin fits the frame budget"), std::string::npos);
+}
+
+TEST(HtmlReport, MissingReportIsAnError) {
+  EXPECT_THROW(missing_report_links(fresh_output_dir()), ReportError);
+}
+
+TEST(HtmlReport, WithChartsAllLinksResolve) {
+  std::string why;
+  if (!charts_available(&why)) GTEST_SKIP() << why;
+  const SweepTable sweep = synthetic_sweep();
+  const std::string dir = fresh_output_dir();
+  touch_images(sweep, dir);
+  const std::string html = read_text(write_report(sweep, dir));
+  EXPECT_TRUE(missing_report_links(dir).empty());
+  for (const char* chart : {"tradeoff_by_lut.png", "tradeoff_by_scale.png", "pass_times.png",
+                            "tile_cost.png", "tile_bottleneck.png", "dram_by_cause.png"}) {
+    EXPECT_TRUE(fs::exists(fs::path(dir) / chart)) << chart;
+    EXPECT_NE(html.find(std::string("src=\"") + chart), std::string::npos) << chart;
+  }
+  EXPECT_NE(html.find("href=\"pass_times.svg\""), std::string::npos);
+  // One technique in frame-time order would join unrelated configurations: not drawn.
+  EXPECT_FALSE(fs::exists(fs::path(dir) / "tradeoff_by_technique.png"));
+}
+
+}  // namespace
+}  // namespace skinsim::reports

@@ -1,0 +1,125 @@
+// results.json round trip and the errors bad input gets.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "reports/report_error.h"
+#include "reports/sweep_table.h"
+#include "tests/reports/synthetic_sweep.h"
+
+namespace skinsim::reports {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string temp_file(const std::string& name) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("skinsim_reports_json_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return (dir / name).string();
+}
+
+std::string error_of(const nlohmann::json& j) {
+  try {
+    (void)j.get<SweepTable>();
+  } catch (const ReportError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(SweepJson, RoundTripIsExact) {
+  const SweepTable sweep = testing::synthetic_sweep();
+  const std::string path = temp_file("results.json");
+  write_sweep_json(sweep, path);
+  const SweepTable back = read_sweep_json(path);
+  // Serialising the read-back table gives the same document, field for field.
+  EXPECT_EQ(nlohmann::json(back), nlohmann::json(sweep));
+  ASSERT_EQ(back.rows.size(), 16u);
+  EXPECT_EQ(back.rows[5].passes[3].dram_bytes_by_cause,
+            sweep.rows[5].passes[3].dram_bytes_by_cause);
+  EXPECT_DOUBLE_EQ(back.rows[5].frame_ms, sweep.rows[5].frame_ms);
+  EXPECT_EQ(back.rows[5].knobs.at("lut"), "32x128");
+  ASSERT_TRUE(back.heatmap);
+  EXPECT_EQ(back.heatmap->bottleneck, sweep.heatmap->bottleneck);
+  EXPECT_EQ(back.sensitivity[1].unit, "KB");
+  for (const auto& entry : fs::directory_iterator(fs::path(path).parent_path())) {
+    EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos)
+        << "temporary file left behind: " << entry.path();
+  }
+}
+
+TEST(SweepJson, WithoutHeatmapRoundTrips) {
+  SweepTable sweep = testing::synthetic_sweep();
+  sweep.heatmap.reset();
+  const SweepTable back = nlohmann::json(sweep).get<SweepTable>();
+  EXPECT_FALSE(back.heatmap);
+}
+
+TEST(SweepJson, ErrorsNameTheField) {
+  nlohmann::json j = testing::synthetic_sweep();
+  j["rows"][3]["frame_ms"] = "fast";
+  EXPECT_NE(error_of(j).find("rows[3].frame_ms"), std::string::npos) << error_of(j);
+
+  j = testing::synthetic_sweep();
+  j["rows"][2].erase("id");
+  EXPECT_NE(error_of(j).find("rows[2].id: missing"), std::string::npos) << error_of(j);
+
+  j = testing::synthetic_sweep();
+  j["rows"][1]["id"] = j["rows"][0]["id"];
+  EXPECT_NE(error_of(j).find("rows[1].id: duplicate"), std::string::npos) << error_of(j);
+
+  j = testing::synthetic_sweep();
+  j["heatmap"]["ms"].erase(0);
+  EXPECT_NE(error_of(j).find("heatmap.ms"), std::string::npos) << error_of(j);
+
+  j = testing::synthetic_sweep();
+  j["rows"][0]["passes"][1]["ms"] = -1.0;
+  EXPECT_NE(error_of(j).find("rows[0].passes[1].ms"), std::string::npos) << error_of(j);
+
+  j = testing::synthetic_sweep();
+  j["rows"][4]["error_image"] = "../../etc/passwd";
+  EXPECT_NE(error_of(j).find("rows[4].error_image"), std::string::npos) << error_of(j);
+
+  j = testing::synthetic_sweep();
+  j["rows"][0]["quality"]["flip_skin"] = nullptr;
+  EXPECT_NE(error_of(j).find("rows[0].quality.flip_skin"), std::string::npos) << error_of(j);
+}
+
+TEST(SweepJson, FileErrorsNameTheFile) {
+  const std::string path = temp_file("broken.json");
+  std::ofstream(path) << "{ not json";
+  try {
+    read_sweep_json(path);
+    FAIL() << "expected ReportError";
+  } catch (const ReportError& e) {
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(read_sweep_json(temp_file("does_not_exist.json")), ReportError);
+}
+
+TEST(SweepJson, NonFiniteValuesAreRefusedBeforeWriting) {
+  SweepTable sweep = testing::synthetic_sweep();
+  sweep.rows[0].quality["ssim_skin"] = std::nan("");
+  EXPECT_THROW(write_sweep_json(sweep, temp_file("nan.json")), ReportError);
+}
+
+TEST(MergedPasses, SumsRepeatedPassesAndKeepsCostliestBottleneck) {
+  ConfigResult r;
+  r.passes = {{"blur", 1.0, "texture", {{"color_store", 10}}},
+              {"shade", 5.0, "alu", {}},
+              {"blur", 2.0, "dram", {{"color_store", 5}, {"texture_miss", 1}}}};
+  const std::vector<PassCost> merged = merged_passes(r);
+  ASSERT_EQ(merged.size(), 2u);
+  EXPECT_EQ(merged[0].name, "blur");
+  EXPECT_DOUBLE_EQ(merged[0].ms, 3.0);
+  EXPECT_EQ(merged[0].bottleneck, "dram");
+  EXPECT_DOUBLE_EQ(merged[0].dram_bytes_by_cause.at("color_store"), 15.0);
+  EXPECT_EQ(dominant_bottleneck(r), "alu");
+}
+
+}  // namespace
+}  // namespace skinsim::reports
