@@ -84,9 +84,13 @@ vtkSmartPointer<vtkContextView> tile_chart(const TileHeatmap& h, vtkImageData* i
   const std::string px = std::to_string(h.tile_size);
   vtkAxis* x_axis = chart->GetAxis(vtkAxis::BOTTOM);
   style_axis(x_axis, "tile column (" + px + " px tiles, from the left)", options);
+  x_axis->SetBehavior(vtkAxis::FIXED);  // exactly the image: no "nice" rounding of the range
+  x_axis->SetRange(0.0, h.tiles_x);
   tile_ticks(x_axis, h.tiles_x, false);
   vtkAxis* y_axis = chart->GetAxis(vtkAxis::LEFT);
   style_axis(y_axis, "tile row (from the top)", options);
+  y_axis->SetBehavior(vtkAxis::FIXED);
+  y_axis->SetRange(0.0, h.tiles_y);
   tile_ticks(y_axis, h.tiles_y, true);
   auto* colour_legend = vtkColorLegend::SafeDownCast(chart->GetLegend());
   colour_legend->SetTitle(legend);
