@@ -1,7 +1,6 @@
 #include "scene/hash_noise.h"
 
 #include <cmath>
-#include <initializer_list>
 
 namespace skinsim::scene {
 namespace {
@@ -22,16 +21,15 @@ std::int32_t wrap(std::int32_t i, std::int32_t period) {
 }  // namespace
 
 std::uint32_t hash_lattice(std::int32_t x, std::int32_t y, std::int32_t z, std::uint32_t seed) {
-  std::uint32_t h = seed * 0x9E3779B9u;
-  for (std::uint32_t v : {static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y),
-                          static_cast<std::uint32_t>(z)}) {
-    h ^= v + 0x7F4A7C15u + (h << 6) + (h >> 2);
-    h ^= h >> 16;
-    h *= 0x7FEB352Du;
-    h ^= h >> 15;
-    h *= 0x846CA68Bu;
-    h ^= h >> 16;
-  }
+  // Combine with large odd constants, then one lowbias32 finaliser round.
+  std::uint32_t h = static_cast<std::uint32_t>(x) * 0x8DA6B343u ^
+                    static_cast<std::uint32_t>(y) * 0xD8163841u ^
+                    static_cast<std::uint32_t>(z) * 0xCB1AB31Fu ^ seed * 0x9E3779B9u;
+  h ^= h >> 16;
+  h *= 0x7FEB352Du;
+  h ^= h >> 15;
+  h *= 0x846CA68Bu;
+  h ^= h >> 16;
   return h;
 }
 

@@ -26,10 +26,19 @@ void add_cell(std::vector<std::uint32_t>& idx, std::uint32_t a, std::uint32_t b,
 }  // namespace
 
 Mesh make_head_mesh(int target_triangles) {
-  // The grid gives 2 * columns * rows triangles (crown fan + cells + neck cap); rows are
-  // 0.6 x columns, which keeps the quads roughly square on the head.
-  const int columns = std::max(8, static_cast<int>(std::lround(std::sqrt(target_triangles / 1.2))));
-  const int rows = std::max(4, static_cast<int>(std::lround(target_triangles / (2.0 * columns))));
+  // The grid gives 2 * columns * rows triangles (crown fan + cells + neck cap). Rows of
+  // about 0.6 x columns keep the quads roughly square on the head; among nearby column
+  // counts take the one whose total comes closest to the target.
+  const int guess = static_cast<int>(std::lround(std::sqrt(target_triangles / 1.2)));
+  int columns = 0, rows = 0;
+  for (int c = std::max(8, guess - 6); c <= guess + 6; ++c) {
+    const int r = std::max(4, static_cast<int>(std::lround(target_triangles / (2.0 * c))));
+    if (columns == 0 ||
+        std::abs(2 * c * r - target_triangles) < std::abs(2 * columns * rows - target_triangles)) {
+      columns = c;
+      rows = r;
+    }
+  }
   Mesh m;
   m.name = "head";
   const int stride = columns + 1;  // the seam column is duplicated
@@ -38,7 +47,8 @@ Mesh make_head_mesh(int target_triangles) {
     for (int c = 0; c <= columns; ++c) {
       // Row 0 is the crown pole: give each copy the u of the middle of its fan triangle.
       const float u = (c + (r == 0 ? 0.5f : 0.0f)) / columns;
-      m.positions.push_back(surface_point(u, v));
+      // The seam column repeats column 0's position exactly (u = 1 would round differently).
+      m.positions.push_back(surface_point(c == columns ? 0.0f : u, v));
       m.uvs.emplace_back(u, v);
     }
   }
@@ -70,12 +80,14 @@ Mesh make_ellipsoid(const std::string& name, const glm::vec3& center, const glm:
   for (int s = 0; s <= stacks; ++s) {
     const float v = static_cast<float>(s) / stacks;
     const float theta = v * kPi;  // from the +Z pole
+    // Exact poles and seam, so coincident vertices are bit-identical and weld.
+    const float sin_t = s == 0 || s == stacks ? 0.0f : std::sin(theta);
+    const float cos_t = s == 0 ? 1.0f : s == stacks ? -1.0f : std::cos(theta);
     for (int c = 0; c <= slices; ++c) {
       const float u = static_cast<float>(c) / slices;
-      // Azimuth runs clockwise seen from +Z so that u grows to +X at the top of the eye.
-      const float phi = 2.0f * kPi * u;
-      const glm::vec3 d(std::sin(theta) * std::cos(phi), -std::sin(theta) * std::sin(phi),
-                        std::cos(theta));
+      // Azimuth runs clockwise seen from +Z: from +X towards -Y as u grows.
+      const float phi = 2.0f * kPi * static_cast<float>(c % slices) / slices;
+      const glm::vec3 d(sin_t * std::cos(phi), -sin_t * std::sin(phi), cos_t);
       m.positions.push_back(center + d * radii);
       m.uvs.emplace_back(u, v);
     }
