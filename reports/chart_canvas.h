@@ -16,9 +16,6 @@ class vtkAxis;
 class vtkChart;
 class vtkChartXY;
 class vtkContextView;
-class vtkPlot;
-class vtkStringArray;
-class vtkTable;
 
 namespace skinsim::reports {
 

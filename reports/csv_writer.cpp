@@ -36,6 +36,14 @@ Columns collect_columns(const SweepTable& table) {
   return c;
 }
 
+void append_record(std::string& out, const std::vector<std::string>& fields) {
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    if (i > 0) out += ',';
+    out += csv_field(fields[i]);
+  }
+  out += '\n';
+}
+
 // Shortest text that reads back to the same double.
 std::string number(double v) {
   return fmt::format("{}", v);
@@ -77,8 +85,7 @@ std::string sweep_csv(const SweepTable& table) {
   const std::vector<std::string> cols = sweep_csv_columns(table);
   const Columns c = collect_columns(table);
   std::string out;
-  for (std::size_t i = 0; i < cols.size(); ++i) out += (i ? "," : "") + csv_field(cols[i]);
-  out += "\n";
+  append_record(out, cols);
   for (const ConfigResult& r : table.rows) {
     const std::vector<PassCost> passes = merged_passes(r);
     std::vector<std::string> cells = {r.id, r.label};
@@ -94,8 +101,7 @@ std::string sweep_csv(const SweepTable& table) {
       auto it = r.quality.find(m);
       cells.push_back(it == r.quality.end() ? "" : number(it->second));
     }
-    for (std::size_t i = 0; i < cells.size(); ++i) out += (i ? "," : "") + csv_field(cells[i]);
-    out += "\n";
+    append_record(out, cells);
   }
   return out;
 }

@@ -103,6 +103,11 @@ std::string recommendation_section(const SweepTable& t, const ReportOptions& o,
          ".</p>\n<p>Knobs: ";
     for (const auto& [k, v] : r.knobs) h += "<code>" + esc(k) + "=" + esc(v) + "</code> ";
     h += "</p>\n";
+  } else if (std::none_of(t.rows.begin(), t.rows.end(), [&](const ConfigResult& r) {
+               return r.quality.count(o.quality_metric) > 0;
+             })) {
+    h += "<p><b>No configuration has the quality metric " + esc(o.quality_metric) +
+         ", so none is recommended.</b></p>\n";
   } else {
     h += "<p><b>No configuration with " + esc(o.quality_metric) +
          " fits the frame budget.</b></p>\n";

@@ -109,6 +109,13 @@ TEST(HtmlReport, SaysSoWhenNothingFitsTheBudget) {
   EXPECT_NE(html.find("No configuration with flip_skin fits the frame budget"), std::string::npos);
 }
 
+TEST(HtmlReport, SaysSoWhenNoRowHasTheMetric) {
+  ReportOptions options = no_charts();
+  options.quality_metric = "no_such_metric";
+  const std::string html = read_text(write_report(synthetic_sweep(), fresh_output_dir(), options));
+  EXPECT_NE(html.find("No configuration has the quality metric no_such_metric"), std::string::npos);
+}
+
 TEST(HtmlReport, MissingReportIsAnError) {
   EXPECT_THROW(missing_report_links(fresh_output_dir()), ReportError);
 }
