@@ -23,7 +23,10 @@ std::uint8_t to_u8(float value) {
 // Reads all pixels as normalised floats; returns the channel count.
 int read_floats(const std::filesystem::path& path, int& width, int& height,
                 std::vector<float>& pixels) {
-  auto input = OIIO::ImageInput::open(path.string());
+  // Keep colour values as stored: without this OpenImageIO premultiplies them by alpha.
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto input = OIIO::ImageInput::open(path.string(), &config);
   if (!input) {
     throw QualityError("cannot open image '" + path.string() + "': " + OIIO::geterror());
   }
@@ -131,7 +134,10 @@ void write_png_u8(const std::filesystem::path& path, int width, int height, int 
   if (!output) {
     throw QualityError("cannot write '" + path.string() + "': " + OIIO::geterror());
   }
-  const OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::UINT8);
+  OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::UINT8);
+  // The data is not premultiplied (a LUT's alpha is just a fourth channel): without this the
+  // PNG writer would divide the colour channels by alpha.
+  spec.attribute("oiio:UnassociatedAlpha", 1);
   const bool ok = output->open(temp.string(), spec) &&
                   output->write_image(OIIO::TypeDesc::UINT8, data.data()) && output->close();
   if (!ok) {

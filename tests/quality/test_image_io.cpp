@@ -56,6 +56,17 @@ TEST_F(ImageIo, SaveClampsOutOfRangeValues) {
   EXPECT_NEAR(loaded.rgb[1].r, 128.0f / 255.0f, 1e-6);  // 127.5 rounds up
 }
 
+TEST_F(ImageIo, AlphaDoesNotScaleColour) {
+  // A LUT's alpha is a data channel: colour must be written and read back unpremultiplied.
+  const std::vector<std::uint8_t> rgba{200, 100, 50, 64};
+  const auto path = dir_ / "rgba.png";
+  write_png_u8(path, 1, 1, 4, rgba);
+  const Image loaded = load_png(path);
+  EXPECT_NEAR(loaded.rgb[0].r, 200.0f / 255.0f, 1e-6);
+  EXPECT_NEAR(loaded.rgb[0].g, 100.0f / 255.0f, 1e-6);
+  EXPECT_NEAR(loaded.rgb[0].b, 50.0f / 255.0f, 1e-6);
+}
+
 TEST_F(ImageIo, MaskRoundTrip) {
   Mask mask = Mask::filled(5, 4, 0);
   mask.values[3] = 1;

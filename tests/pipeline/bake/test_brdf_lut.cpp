@@ -1,0 +1,262 @@
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <glm/geometric.hpp>
+#include <limits>
+#include <numbers>
+
+#include "pipeline/bake/brdf_lut.h"
+#include "pipeline/bake/error.h"
+#include "pipeline/bake/half_float.h"
+#include "pipeline/bake/specular.h"
+#include "quality/image.h"
+
+namespace skinsim::bake {
+namespace {
+
+BrdfLutParams small_params() {
+  BrdfLutParams p;
+  p.width = 16;
+  p.height = 64;
+  return p;
+}
+
+TEST(BrdfLut, MipChainHalvesAndRoughensPerLevel) {
+  const BrdfLut lut = bake_brdf_lut(BrdfLutParams{});
+  ASSERT_EQ(lut.levels.size(), 8u);  // 128 rows -> 1
+  for (std::size_t k = 0; k < lut.levels.size(); ++k) {
+    const LutLevel& level = lut.levels[k];
+    EXPECT_EQ(level.width, std::max(1, 32 >> k));
+    EXPECT_EQ(level.height, 128 >> k);
+    EXPECT_EQ(level.texels.size(), static_cast<std::size_t>(level.width) * level.height);
+    EXPECT_FLOAT_EQ(level.m1, 0.3f * (1.0f + 0.5f * k));
+    EXPECT_FLOAT_EQ(level.m2, 0.6f * (1.0f + 0.5f * k));
+  }
+  EXPECT_FLOAT_EQ(brdf_lut_lod(roughness_scale_for_level(3)), 3.0f);
+}
+
+TEST(BrdfLut, WhiteFurnaceAlbedoIsAtMostOne) {
+  // F = 1 and rho_s = 1/pi make each lobe the plain Kelemen BRDF, which must not create energy.
+  BrdfLutParams p;
+  p.f0 = 1.0f;
+  p.rho_s = 1.0f / std::numbers::pi_v<float>;
+  p.weight1 = 1.0f;
+  p.weight2 = 0.0f;
+  for (float m : {0.1f, 0.3f, 0.6f, 1.0f, 2.0f}) {
+    for (float v : {1.0f, 0.8f, 0.5f, 0.3f, 0.1f, 0.02f}) {
+      const double albedo = directional_reflectance(v, m, m, p).albedo;
+      EXPECT_LE(albedo, 1.0 + 1e-3) << "m = " << m << ", N.V = " << v;
+      EXPECT_GT(albedo, 0.0) << "m = " << m << ", N.V = " << v;
+    }
+  }
+  // A smooth lobe at normal incidence reflects (nearly) everything.
+  EXPECT_NEAR(directional_reflectance(1.0f, 0.1f, 0.1f, p).albedo, 1.0, 0.02);
+}
+
+TEST(BrdfLut, EnergyChannelIsOneMinusAlbedo) {
+  const BrdfLutParams p = small_params();
+  const BrdfLut lut = bake_brdf_lut(p);
+  for (const LutLevel& level : lut.levels) {
+    for (int j = 0; j < level.height; ++j) {
+      const float v = (j + 0.5f) / level.height;
+      const double albedo = directional_reflectance(v, level.m1, level.m2, p).albedo;
+      EXPECT_EQ(level.at(0, j).w, static_cast<float>(1.0 - albedo)) << "N.V = " << v;
+    }
+  }
+}
+
+TEST(BrdfLut, EnergyInUnitRangeAndFallsTowardGrazing) {
+  const BrdfLut lut = bake_brdf_lut(BrdfLutParams{});
+  for (const LutLevel& level : lut.levels) {
+    for (const glm::vec4& t : level.texels) {
+      ASSERT_GE(t.w, 0.0f);
+      ASSERT_LE(t.w, 1.0f);
+    }
+  }
+  // Below N.V ~ 0.8 the Fresnel term dominates and A rises monotonically with N.V. Nearer
+  // normal incidence F is flat at F0 while the Kelemen lobe's albedo changes slightly, so A
+  // may dip by ~1e-5 there; grazing is still its minimum.
+  for (int k = 0; k < 3; ++k) {
+    const LutLevel& level = lut.levels[k];
+    for (int j = 1; j < level.height; ++j) {
+      EXPECT_GT(level.at(0, j).w, level.at(0, 0).w) << "level " << k << " row " << j;
+      if ((j + 0.5f) / level.height > 0.8f) continue;
+      EXPECT_GT(level.at(0, j).w, level.at(0, j - 1).w) << "level " << k << " row " << j;
+    }
+  }
+}
+
+TEST(BrdfLut, FresnelLimits) {
+  const BrdfLut lut = quantize(bake_brdf_lut(BrdfLutParams{}), LutFormat::kRGBA8);
+  const LutLevel& level0 = lut.levels[0];
+  // At normal incidence the lobe-averaged Fresnel is F0 (within 8-bit quantisation).
+  EXPECT_NEAR(level0.at(0, level0.height - 1).z, 0.028f, 1.0f / 255.0f);
+  // It grows toward grazing.
+  for (int j = 1; j < level0.height; ++j) EXPECT_LE(level0.at(0, j).z, level0.at(0, j - 1).z);
+  // For smooth lobes H stays near N, so at grazing V.H -> 0 and Schlick's F -> 1.
+  BrdfLutParams smooth;
+  smooth.m1 = smooth.m2 = 0.02f;
+  smooth.albedo_theta_samples = 256;
+  EXPECT_GT(directional_reflectance(0.002f, 0.02f, 0.02f, smooth).fresnel, 0.9);
+  EXPECT_NEAR(directional_reflectance(1.0f, 0.02f, 0.02f, smooth).fresnel, 0.028, 1e-4);
+}
+
+TEST(BrdfLut, LobeResponseAtThePeakIsTheKsLobe) {
+  for (float v : {0.2f, 0.5f, 0.9f}) {
+    EXPECT_FLOAT_EQ(lut_lobe_response(1.0f, v, 0.3f, 0.028f, 64), ks_lobe(1.0f, v, 0.3f, 0.028f));
+  }
+}
+
+TEST(BrdfLut, LobeResponseIsTheAzimuthalAverageOfKsSkinSpecular) {
+  // Independent evaluation with vectors: for N.H = u, N.V = v, average
+  // ks_skin_specular / (rho_s N.L) over the azimuths of H that light the surface.
+  const glm::vec3 n(0.0f, 0.0f, 1.0f);
+  const float m = 0.3f;
+  for (float u : {0.7f, 0.9f, 0.98f}) {
+    for (float v : {0.3f, 0.6f, 0.95f}) {
+      const glm::vec3 view(std::sqrt(1.0f - v * v), 0.0f, v);
+      double sum = 0.0;
+      int valid = 0;
+      const int samples = 4096;
+      for (int j = 0; j < samples; ++j) {
+        const float phi = (j + 0.5f) * std::numbers::pi_v<float> / samples;
+        const float s = std::sqrt(1.0f - u * u);
+        const glm::vec3 h(s * std::cos(phi), s * std::sin(phi), u);
+        const glm::vec3 l = 2.0f * glm::dot(view, h) * h - view;
+        if (glm::dot(view, h) <= 0.0f || glm::dot(n, l) <= 0.0f) continue;
+        sum += ks_skin_specular(n, l, view, m, 1.0f) / glm::dot(n, l);
+        ++valid;
+      }
+      const double expected = valid == 0 ? 0.0 : sum / valid;
+      EXPECT_NEAR(lut_lobe_response(u, v, m, 0.028f, samples), expected, 2e-3 * expected + 1e-6)
+          << "u = " << u << ", v = " << v;
+    }
+  }
+}
+
+TEST(BrdfLut, SpecularEncodingRoundTrips) {
+  for (float s : {1e-3f, 0.08f, 1.0f, 24.0f, 64.0f}) {
+    EXPECT_NEAR(decode_specular_lobe(encode_specular_lobe(s)), s, 1e-5f * s) << s;
+  }
+  EXPECT_EQ(encode_specular_lobe(1000.0f), 1.0f);
+  EXPECT_EQ(encode_specular_lobe(0.0f), 0.0f);
+}
+
+TEST(BrdfLut, BakesQuicklyAtEverySize) {
+  for (int scale : {1, 2, 4, 8, 16}) {
+    BrdfLutParams p;
+    p.width = 8 * scale;
+    p.height = 32 * scale;
+    const auto start = std::chrono::steady_clock::now();
+    const BrdfLut lut = bake_brdf_lut(p);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(lut.levels[0].width, p.width);
+    RecordProperty("bake_ms_" + std::to_string(p.width), static_cast<int>(seconds * 1000));
+#ifdef NDEBUG  // the budget is for optimised builds
+    EXPECT_LT(seconds, 1.0) << p.width << "x" << p.height;
+#endif
+  }
+}
+
+TEST(BrdfLut, SameBitsForAnyThreadCount) {
+  const BrdfLutParams p = small_params();
+  BrdfLut single;
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+    single = bake_brdf_lut(p);
+  }
+  const BrdfLut parallel = bake_brdf_lut(p);
+  ASSERT_EQ(single.levels.size(), parallel.levels.size());
+  for (std::size_t k = 0; k < single.levels.size(); ++k) {
+    const auto& a = single.levels[k].texels;
+    const auto& b = parallel.levels[k].texels;
+    ASSERT_EQ(a.size(), b.size());
+    EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::vec4)), 0) << "level " << k;
+  }
+}
+
+TEST(BrdfLut, QuantizeRoundsToTheFormat) {
+  const BrdfLut lut = bake_brdf_lut(small_params());
+  const BrdfLut rgba8 = quantize(lut, LutFormat::kRGBA8);
+  const BrdfLut rgba16f = quantize(lut, LutFormat::kRGBA16F);
+  for (std::size_t i = 0; i < lut.levels[0].texels.size(); ++i) {
+    for (int c = 0; c < 4; ++c) {
+      const float original = lut.levels[0].texels[i][c];
+      const float eight = rgba8.levels[0].texels[i][c];
+      EXPECT_LE(std::abs(eight - original), 0.5f / 255.0f + 1e-7f);
+      EXPECT_FLOAT_EQ(std::round(eight * 255.0f), eight * 255.0f);
+      const float half = rgba16f.levels[0].texels[i][c];
+      // Half a unit in the last place: 2^-11 relative, 2^-25 absolute among subnormals.
+      EXPECT_LE(std::abs(half - original),
+                std::max(std::ldexp(std::abs(original), -11), std::ldexp(1.0f, -25)));
+    }
+  }
+}
+
+TEST(HalfFloat, KnownValuesAndRounding) {
+  EXPECT_EQ(float_to_half(1.0f), 0x3C00);
+  EXPECT_EQ(float_to_half(-2.0f), 0xC000);
+  EXPECT_EQ(float_to_half(0.0f), 0x0000);
+  EXPECT_EQ(float_to_half(-0.0f), 0x8000);
+  EXPECT_EQ(float_to_half(65504.0f), 0x7BFF);                             // largest half
+  EXPECT_EQ(float_to_half(65519.0f), 0x7BFF);                             // rounds down
+  EXPECT_EQ(float_to_half(65520.0f), 0x7C00);                             // ties to even: overflow
+  EXPECT_EQ(float_to_half(std::ldexp(1.0f, -24)), 0x0001);                // smallest subnormal
+  EXPECT_EQ(float_to_half(std::ldexp(1.0f, -25)), 0x0000);                // tie -> even (0)
+  EXPECT_EQ(float_to_half(std::ldexp(3.0f, -25)), 0x0002);                // tie -> even (2)
+  EXPECT_EQ(float_to_half(1.0f + std::ldexp(1.0f, -11)), 0x3C00);         // tie -> even
+  EXPECT_EQ(float_to_half(1.0f + 3.0f * std::ldexp(1.0f, -11)), 0x3C02);  // tie -> even
+  EXPECT_EQ(float_to_half(std::ldexp(1023.5f, -24)), 0x0400);  // subnormal rounds to normal
+  EXPECT_EQ(float_to_half(std::numeric_limits<float>::infinity()), 0x7C00);
+  EXPECT_TRUE(std::isnan(half_to_float(float_to_half(std::nanf("")))));
+}
+
+TEST(HalfFloat, EveryHalfRoundTrips) {
+  for (unsigned bits = 0; bits < 0x10000u; ++bits) {
+    const auto half = static_cast<std::uint16_t>(bits);
+    if ((half & 0x7C00u) == 0x7C00u && (half & 0x03FFu) != 0) continue;  // NaN
+    ASSERT_EQ(float_to_half(half_to_float(half)), half) << std::hex << bits;
+  }
+}
+
+TEST(BrdfLut, BadParametersNameTheField) {
+  BrdfLutParams p;
+  p.m2 = -1.0f;
+  try {
+    bake_brdf_lut(p);
+    FAIL() << "negative roughness accepted";
+  } catch (const BakeError& e) {
+    EXPECT_NE(std::string(e.what()).find("m2"), std::string::npos) << e.what();
+  }
+  p = BrdfLutParams{};
+  p.width = 0;
+  EXPECT_THROW(bake_brdf_lut(p), BakeError);
+  p = BrdfLutParams{};
+  p.f0 = 1.5f;
+  EXPECT_THROW(bake_brdf_lut(p), BakeError);
+  p = BrdfLutParams{};
+  p.weight1 = p.weight2 = 0.0f;
+  EXPECT_THROW(bake_brdf_lut(p), BakeError);
+}
+
+TEST(BrdfLut, WritesAPngOfEachLevel) {
+  const BrdfLut lut = bake_brdf_lut(small_params());
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("skinsim_brdf_lut_" + std::to_string(::getpid()) + ".png");
+  write_lut_png(lut, path, 1);
+  const quality::Image image = quality::load_png(path);
+  std::filesystem::remove(path);
+  EXPECT_EQ(image.width, 8);
+  EXPECT_EQ(image.height, 32);
+  EXPECT_NEAR(image.at(7, 31).b, lut.levels[1].at(7, 31).z, 0.5f / 255.0f + 1e-6f);
+  EXPECT_THROW(write_lut_png(lut, path, 99), BakeError);
+}
+
+}  // namespace
+}  // namespace skinsim::bake
