@@ -19,13 +19,14 @@ constexpr int kMaxVaryings = 20;  // floats per vertex after position
 class ExecFragIn {
  public:
   ExecFragIn(const Plane* varying_planes, const Plane& inv_w, float rel_x, float rel_y,
-             glm::vec2 frag_coord)
+             glm::vec2 frag_coord, glm::vec2 inv_target_size)
       : planes_(varying_planes),
         inv_w_(inv_w),
         rx_(rel_x),
         ry_(rel_y),
         w_(1.0f / inv_w.at(rel_x, rel_y)),
-        frag_coord_(frag_coord) {}
+        frag_coord_(frag_coord),
+        inv_size_(inv_target_size) {}
 
   float f(int slot) const { return planes_[slot].at(rx_, ry_) * w_; }
   glm::vec2 v2(int slot) const { return {f(slot), f(slot + 1)}; }
@@ -36,6 +37,15 @@ class ExecFragIn {
   Varying<3> direction(int slot) const { return grad<3>(slot); }
   // Pixel centre in render-target pixels (gl_FragCoord.xy).
   glm::vec2 frag_coord() const { return frag_coord_; }
+  // Screen position in [0,1]^2 from a screen-linear iterator (a `noperspective` varying):
+  // usable as independent texture coordinates for reading a screen-space buffer.
+  Varying<2> screen_texcoord() const {
+    Varying<2> r;
+    r.value = frag_coord_ * inv_size_;
+    r.ddx = {inv_size_.x, 0.0f};
+    r.ddy = {0.0f, inv_size_.y};
+    return r;
+  }
 
  private:
   template <int N>
@@ -56,6 +66,7 @@ class ExecFragIn {
   const Plane& inv_w_;
   float rx_, ry_, w_;
   glm::vec2 frag_coord_;
+  glm::vec2 inv_size_;
 };
 
 struct VertexAttributes {
@@ -115,6 +126,7 @@ class CountFragIn {
   sl::CVec<4> v4(int) const { return input<4>(); }
   CountVarying<2> texcoord(int) const { return {input<2>()}; }
   CountVarying<3> direction(int) const { return {input<3>()}; }
+  CountVarying<2> screen_texcoord() const { return {input<2>()}; }
   sl::CVec<2> frag_coord() const { return sl::CVec<2>::computed(glm::vec2(0.5f)); }
 
  private:

@@ -93,6 +93,7 @@ struct CVec {
 
   CVec() = default;
   CVec(const value_type& value) : v(value) {}  // NOLINT: constants convert implicitly
+  CVec(float s) requires(N == 1) : v(s) {}     // NOLINT
   explicit CVec(float s) requires(N > 1) : v(s) {}
   template <int M>
     requires(M == 1 && N > 1)

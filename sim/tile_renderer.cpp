@@ -54,7 +54,13 @@ void rasterize(const TriangleSetup& t, const PixelRect& rect, Fn&& fn) {
 
 TileRenderer::TileRenderer(const RenderPassDesc& pass, const SetupTriangles& setup,
                            const TileGrid& grid, const GpuConfig& config, TextureCache& cache)
-    : pass_(pass), setup_(setup), grid_(grid), config_(config), tex_(&cache, nullptr) {
+    : pass_(pass),
+      setup_(setup),
+      grid_(grid),
+      config_(config),
+      tex_(&cache, nullptr),
+      inv_size_(1.0f / static_cast<float>(pass.color->width),
+                1.0f / static_cast<float>(pass.color->height)) {
   const size_t n = static_cast<size_t>(grid.tile_size) * grid.tile_size;
   color_.resize(n);
   depth_.resize(n);
@@ -67,7 +73,7 @@ glm::vec4 TileRenderer::shade(std::uint32_t triangle, int px, int py) {
   tex_.bind(&draw.textures);
   const float cx = static_cast<float>(px) + 0.5f, cy = static_cast<float>(py) + 0.5f;
   const ExecFragIn in(setup_.varying_planes.data() + t.varying_offset, t.inv_w,
-                      cx - t.origin_x, cy - t.origin_y, {cx, cy});
+                      cx - t.origin_x, cy - t.origin_y, {cx, cy}, inv_size_);
   return draw.fragment_program->shade(in, tex_);
 }
 

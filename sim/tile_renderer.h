@@ -33,6 +33,7 @@ class TileRenderer {
   const TileGrid& grid_;
   const GpuConfig& config_;
   ExecTexUnit tex_;
+  glm::vec2 inv_size_;
   PixelRect rect_{};
   std::vector<glm::vec4> color_;
   std::vector<float> depth_;

@@ -1,0 +1,27 @@
+// Option groups shared by the subcommands, bound to the parameter sets they fill.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "driver/scene_source.h"
+#include "pipeline/config.h"
+
+namespace skinsim::app {
+
+struct DeviceOptions {
+  std::string device = "ipad4";
+  std::string data_dir;  // filled with the default data directory when empty
+  int threads = 0;
+};
+
+void add_device_options(CLI::App& cmd, DeviceOptions& options);
+void add_scene_options(CLI::App& cmd, driver::SceneSource& source);
+// One option per pipeline knob; each value goes through pipeline::set_config_field, so
+// the CLI, sweep files and budgets validate identically.
+void add_pipeline_options(CLI::App& cmd, pipeline::PipelineConfig& config);
+
+// The shipped data directory: $SKINSIM_DATA_DIR, else the source tree's data/.
+std::string default_data_dir();
+
+}  // namespace skinsim::app

@@ -1,0 +1,93 @@
+// `skinsim run`: one frame of the skin pipeline on the emulated GPU, its images, counters
+// and modelled timing.
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <iostream>
+
+#include "app/cli_options.h"
+#include "app/commands.h"
+#include "driver/frame_job.h"
+#include "driver/images.h"
+#include "driver/result_json.h"
+#include "gpu_model/profile_loader.h"
+#include "gpu_model/sensitivity.h"
+#include "gpu_model/timing_json.h"
+#include "gpu_model/timing_table.h"
+#include "pipeline/shaders/irradiance.h"
+#include "reports/atomic_file.h"
+
+namespace skinsim::app {
+
+namespace {
+
+struct RunOptions {
+  DeviceOptions device;
+  driver::SceneSource scene;
+  pipeline::PipelineConfig config;
+  std::string out = "out";
+  bool sensitivity = false;
+};
+
+int run(const RunOptions& o) {
+  const std::string data_dir = o.device.data_dir.empty() ? default_data_dir() : o.device.data_dir;
+  const gpu_model::DeviceProfile device = gpu_model::load_device_profile(o.device.device, data_dir);
+  pipeline::PipelineConfig config = o.config;
+  std::tie(config.width, config.height) =
+      pipeline::render_size(config, static_cast<int>(device.display_width.value),
+                            static_cast<int>(device.display_height.value));
+  config.validate();
+
+  const scene::Scene scene =
+      driver::load_scene(o.scene, static_cast<float>(config.width) / static_cast<float>(config.height));
+  const pipeline::GpuScene gpu_scene(scene);
+  const driver::FrameResult result = driver::run_frame(gpu_scene, config, device, o.device.threads);
+
+  const std::filesystem::path out(o.out);
+  std::filesystem::create_directories(out);
+  driver::write_png(result.output.frame, out / "frame.png");
+  if (!result.output.lod) {
+    // Irradiance is stored / kIrradianceRange; scale it back so the PNG shows the light.
+    driver::write_png(result.output.irradiance, out / "irradiance.png", pipeline::shaders::kIrradianceRange);
+    driver::write_png(result.output.blurred, out / "blurred.png", pipeline::shaders::kIrradianceRange);
+  }
+  pipeline::BrdfLutTexture::bake(config).write_png((out / "brdf_lut.png").string());
+
+  nlohmann::json json = driver::frame_result_json(result, o.scene.label());
+  json["device"] = device.name;
+  if (o.sensitivity) {
+    const auto recount = [&](const gpu_model::DeviceProfile& varied) {
+      return driver::run_frame(gpu_scene, config, varied, o.device.threads).output.passes;
+    };
+    const auto rows = gpu_model::sensitivity(result.output.passes, device, recount);
+    json["sensitivity"] = gpu_model::to_json(rows);
+    fmt::print("\n{}", gpu_model::format_sensitivity_table(rows));
+  }
+  reports::write_file_atomically((out / "result.json").string(), json.dump(2) + "\n");
+
+  fmt::print("skinsim run: {} on {} ({}), {}x{}, buffer scale {}, LUT {}x{} {}{}\n",
+             o.scene.label(), device.name, device.gpu, config.width, config.height,
+             config.buffer_scale, config.lut_width, config.lut_height,
+             sim::format_name(config.lut_format), result.output.lod ? ", LOD shader" : "");
+  fmt::print("{}", gpu_model::format_frame_table(result.timing));
+  fmt::print("wrote {}/{{frame.png, irradiance.png, blurred.png, brdf_lut.png, result.json}}\n",
+             out.string());
+  return 0;
+}
+
+}  // namespace
+
+Command add_run_command(CLI::App& app) {
+  auto options = std::make_shared<RunOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "run", "Render one frame of the skin pipeline on the emulated GPU and model its cost");
+  add_device_options(*cmd, options->device);
+  add_scene_options(*cmd, options->scene);
+  add_pipeline_options(*cmd, options->config);
+  cmd->add_option("--out", options->out, "Output directory")->capture_default_str();
+  cmd->add_flag("--sensitivity", options->sensitivity,
+                "Also report how frame time moves over each uncertain device figure's range");
+  return [options] { return run(*options); };
+}
+
+}  // namespace skinsim::app

@@ -1,0 +1,41 @@
+// `skinsim shaders`: every shader's op profile, like an offline shader compiler's report.
+#include <fmt/format.h>
+
+#include <iostream>
+
+#include "app/commands.h"
+#include "driver/result_json.h"
+#include "pipeline/shader_catalog.h"
+
+namespace skinsim::app {
+
+Command add_shaders_command(CLI::App& app) {
+  auto json = std::make_shared<bool>(false);
+  CLI::App* cmd = app.add_subcommand(
+      "shaders", "Print every shader's op profile (ALU ops by class, texture reads by kind)");
+  cmd->add_flag("--json", *json, "Print JSON instead of a table");
+  return [json] {
+    const auto catalog = pipeline::shader_catalog();
+    if (*json) {
+      nlohmann::json out = nlohmann::json::array();
+      for (const auto& s : catalog) {
+        nlohmann::json entry = driver::to_json(s.profile);
+        entry["name"] = s.name;
+        out.push_back(entry);
+      }
+      fmt::print("{}\n", out.dump(2));
+      return 0;
+    }
+    fmt::print("{:<22} {:>6} {:>6} {:>6} {:>6} {:>6} {:>6} {:>6}\n", "shader", "vector",
+               "scalar", "transc", "tex_in", "tex_dep", "inputs", "outputs");
+    for (const auto& s : catalog) {
+      const sim::OpProfile& p = s.profile;
+      fmt::print("{:<22} {:>6} {:>6} {:>6} {:>6} {:>6} {:>6} {:>6}\n", s.name, p.vector_ops,
+                 p.scalar_ops, p.transcendental_ops, p.texture_reads_independent,
+                 p.texture_reads_dependent, p.input_floats, p.output_floats);
+    }
+    return 0;
+  };
+}
+
+}  // namespace skinsim::app

@@ -1,0 +1,51 @@
+// Wall time of emulating one frame of the default scene through the full skin pipeline on
+// the iPad 4 profile at its display resolution, per host thread count. Run:
+//   build/bench/bench_frame --benchmark_counters_tabular=true
+#include <benchmark/benchmark.h>
+
+#include "driver/frame_job.h"
+#include "driver/scene_source.h"
+#include "gpu_model/profile_loader.h"
+
+namespace {
+
+using namespace skinsim;
+
+struct Fixture {
+  gpu_model::DeviceProfile device = gpu_model::load_device_profile("ipad4", SKINSIM_BENCH_DATA_DIR);
+  scene::Scene scene = driver::load_scene(driver::SceneSource{}, 4.0f / 3.0f);
+  pipeline::GpuScene gpu_scene{scene};
+};
+
+Fixture& fixture() {
+  static Fixture f;
+  return f;
+}
+
+void BM_SkinFrame(benchmark::State& state) {
+  Fixture& f = fixture();
+  const int threads = static_cast<int>(state.range(0));
+  std::uint64_t fragments = 0;
+  for (auto _ : state) {
+    const driver::FrameResult r = driver::run_frame(f.gpu_scene, {}, f.device, threads);
+    fragments = 0;
+    for (const auto& p : r.output.passes) fragments += p.fragments_shaded;
+    benchmark::DoNotOptimize(r.timing.frame_ms);
+  }
+  state.counters["fragments"] = static_cast<double>(fragments);
+  state.counters["fragments/s"] =
+      benchmark::Counter(static_cast<double>(fragments) * state.iterations(), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_SkinFrame)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3.0);
+
+void BM_DefaultSceneBuild(benchmark::State& state) {
+  for (auto _ : state) {
+    const scene::Scene s = driver::load_scene(driver::SceneSource{}, 4.0f / 3.0f);
+    benchmark::DoNotOptimize(s.meshes.size());
+  }
+}
+BENCHMARK(BM_DefaultSceneBuild)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,28 @@
+// One frame, end to end: the pipeline on the emulated GPU configured from a device
+// profile, then the cost model's timing of its passes.
+#pragma once
+
+#include "gpu_model/device_profile.h"
+#include "gpu_model/timing.h"
+#include "pipeline/brdf_lut_texture.h"
+#include "pipeline/config.h"
+#include "pipeline/gpu_scene.h"
+#include "pipeline/skin_pipeline.h"
+
+namespace skinsim::driver {
+
+struct FrameResult {
+  pipeline::PipelineConfig config;  // with the resolution resolved
+  pipeline::FrameOutput output;
+  gpu_model::FrameTiming timing;
+};
+
+// The emulator configuration a device profile implies, with `threads` host threads.
+sim::GpuConfig gpu_config(const gpu_model::DeviceProfile& device, int threads);
+
+// Resolves the config's resolution (default: the device display), bakes the LUT, renders
+// and times the frame.
+FrameResult run_frame(const pipeline::GpuScene& scene, pipeline::PipelineConfig config,
+                      const gpu_model::DeviceProfile& device, int threads);
+
+}  // namespace skinsim::driver

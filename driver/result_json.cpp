@@ -1,0 +1,101 @@
+#include "driver/result_json.h"
+
+#include "gpu_model/timing_json.h"
+#include "pipeline/config.h"
+
+namespace skinsim::driver {
+
+using nlohmann::json;
+
+json to_json(const sim::OpProfile& p) {
+  return {{"vector_ops", p.vector_ops},
+          {"scalar_ops", p.scalar_ops},
+          {"transcendental_ops", p.transcendental_ops},
+          {"texture_reads_independent", p.texture_reads_independent},
+          {"texture_reads_dependent", p.texture_reads_dependent},
+          {"input_floats", p.input_floats},
+          {"output_floats", p.output_floats}};
+}
+
+namespace {
+
+json texture_json(const sim::TextureCounters& t) {
+  return {{"samples_nearest", t.samples_by_filter[0]},
+          {"samples_bilinear", t.samples_by_filter[1]},
+          {"samples_trilinear", t.samples_by_filter[2]},
+          {"samples_dependent", t.samples_dependent},
+          {"samples_wide_format", t.samples_wide_format},
+          {"texels_touched", t.texels_touched},
+          {"cache_line_accesses", t.cache_line_accesses},
+          {"cache_misses", t.cache_misses},
+          {"cache_miss_rate",
+           t.cache_line_accesses ? static_cast<double>(t.cache_misses) / t.cache_line_accesses : 0.0},
+          {"dram_bytes", t.dram_bytes}};
+}
+
+}  // namespace
+
+json to_json(const sim::PassCounters& c) {
+  json draws = json::array();
+  for (const sim::DrawCounters& d : c.draws) {
+    draws.push_back({{"vertex_program", d.vertex_program},
+                     {"fragment_program", d.fragment_program},
+                     {"vertex_profile", to_json(d.vertex_profile)},
+                     {"fragment_profile", to_json(d.fragment_profile)},
+                     {"blended", d.blended},
+                     {"vertices_shaded", d.vertices_shaded},
+                     {"triangles_in", d.triangles_in},
+                     {"fragments_shaded", d.fragments_shaded}});
+  }
+  return {{"name", c.name},
+          {"width", c.width},
+          {"height", c.height},
+          {"tile_size", c.tile_size},
+          {"tiles_x", c.tiles_x},
+          {"tiles_y", c.tiles_y},
+          {"cores", c.cores},
+          {"tiler",
+           {{"vertices_shaded", c.vertices_shaded},
+            {"triangles_in", c.triangles_in},
+            {"triangles_culled_backface", c.triangles_culled_backface},
+            {"triangles_culled_frustum", c.triangles_culled_frustum},
+            {"triangles_culled_degenerate", c.triangles_culled_degenerate},
+            {"triangles_clipped", c.triangles_clipped},
+            {"triangles_binned", c.triangles_binned},
+            {"tile_refs", c.tile_refs},
+            {"varying_floats_per_vertex", c.varying_floats_per_vertex},
+            {"tiles_empty", c.tiles_empty},
+            {"tiles_partial", c.tiles_partial},
+            {"tiles_full", c.tiles_full}}},
+          {"renderer",
+           {{"tiles_rendered", c.tiles_rendered},
+            {"fragments_depth_tested", c.fragments_depth_tested},
+            {"fragments_shaded", c.fragments_shaded},
+            {"fragments_blended", c.fragments_blended},
+            {"hsr_flushes", c.hsr_flushes},
+            {"color_load_bytes", c.color_load_bytes},
+            {"color_store_bytes", c.color_store_bytes},
+            {"depth_load_bytes", c.depth_load_bytes},
+            {"depth_store_bytes", c.depth_store_bytes}}},
+          {"texture", texture_json(c.texture)},
+          {"draws", draws}};
+}
+
+json frame_result_json(const FrameResult& r, const std::string& scene_label) {
+  json config = json::object();
+  for (const std::string& key : pipeline::config_field_names()) {
+    config[key] = pipeline::get_config_field(r.config, key);
+  }
+  json counters = json::array();
+  for (const sim::PassCounters& p : r.output.passes) counters.push_back(to_json(p));
+  json timing = gpu_model::to_json(r.timing);
+  return {{"tool", "skinsim"},
+          {"scene", scene_label},
+          {"config", config},
+          {"lod", r.output.lod},
+          {"blur_sigma_texels", r.output.blur_sigma_pixels},
+          {"counters", counters},
+          {"timing", timing}};
+}
+
+}  // namespace skinsim::driver

@@ -1,0 +1,16 @@
+// result.json: what a run did (counters per pass and per draw, op profiles) and what the
+// cost model says it costs.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "driver/frame_job.h"
+#include "sim/counters.h"
+
+namespace skinsim::driver {
+
+nlohmann::json to_json(const sim::OpProfile& profile);
+nlohmann::json to_json(const sim::PassCounters& pass);  // without the per-tile array
+nlohmann::json frame_result_json(const FrameResult& result, const std::string& scene_label);
+
+}  // namespace skinsim::driver

@@ -1,0 +1,172 @@
+#include "pipeline/config.h"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <tuple>
+
+namespace skinsim::pipeline {
+
+namespace {
+void require(bool ok, const std::string& message) {
+  if (!ok) throw ConfigError(message);
+}
+bool power_of_two(int v) { return v > 0 && (v & (v - 1)) == 0; }
+}  // namespace
+
+void PipelineConfig::validate() const {
+  require(std::isfinite(buffer_scale) && buffer_scale > 0.0f && buffer_scale <= 1.0f,
+          fmt::format("buffer_scale must be in (0, 1], got {}", buffer_scale));
+  require(power_of_two(lut_width) && lut_width >= 2 && lut_width <= 1024,
+          fmt::format("lut width must be a power of two in [2, 1024], got {}", lut_width));
+  require(power_of_two(lut_height) && lut_height >= 2 && lut_height <= 1024,
+          fmt::format("lut height must be a power of two in [2, 1024], got {}", lut_height));
+  require(lut_format != sim::TexelFormat::kRGBA32F,
+          "lut_format must be rgba8 or rgba16f (the paper's mobile formats)");
+  require(blur_iterations >= 1 && blur_iterations <= 8,
+          fmt::format("blur_iterations must be in [1, 8], got {}", blur_iterations));
+  if (blur_width_mm) {
+    require(std::isfinite(*blur_width_mm) && *blur_width_mm > 0.0f && *blur_width_mm <= 50.0f,
+            fmt::format("blur_width_mm must be in (0, 50], got {}", *blur_width_mm));
+  }
+  require(std::isfinite(normal_offset_mm) && normal_offset_mm >= 0.0f && normal_offset_mm <= 20.0f,
+          fmt::format("normal_offset_mm must be in [0, 20], got {}", normal_offset_mm));
+  for (const auto& [name, lobe] : {std::pair{"lobe1", lobe1}, std::pair{"lobe2", lobe2}}) {
+    require(lobe.roughness >= 0.05f && lobe.roughness <= 1.0f,
+            fmt::format("{}.roughness must be in [0.05, 1], got {}", name, lobe.roughness));
+    require(lobe.weight >= 0.0f && lobe.weight <= 1.0f,
+            fmt::format("{}.weight must be in [0, 1], got {}", name, lobe.weight));
+  }
+  require(std::fabs(lobe1.weight + lobe2.weight - 1.0f) < 1e-3f,
+          fmt::format("lobe weights must sum to 1, got {} + {}", lobe1.weight, lobe2.weight));
+  require(specular_intensity >= 0.0f && specular_intensity <= 1.0f,
+          fmt::format("specular_intensity must be in [0, 1], got {}", specular_intensity));
+  require((width == 0) == (height == 0), "resolution needs both width and height");
+  require(width == 0 || (width >= 16 && width <= 8192 && height >= 16 && height <= 8192),
+          fmt::format("resolution must be within 16..8192 per axis, got {}x{}", width, height));
+  require(std::isfinite(lod_distance_m) && lod_distance_m > 0.0f,
+          fmt::format("lod_distance_m must be > 0, got {}", lod_distance_m));
+}
+
+std::pair<int, int> parse_size(const std::string& text, const std::string& what) {
+  const auto x = text.find_first_of("xX");
+  try {
+    if (x == std::string::npos) throw std::invalid_argument("no x");
+    size_t used_w = 0, used_h = 0;
+    const int w = std::stoi(text.substr(0, x), &used_w);
+    const int h = std::stoi(text.substr(x + 1), &used_h);
+    if (used_w != x || used_h != text.size() - x - 1 || w <= 0 || h <= 0) {
+      throw std::invalid_argument("trailing");
+    }
+    return {w, h};
+  } catch (const std::logic_error&) {
+    throw ConfigError(fmt::format("{}: expected WIDTHxHEIGHT with positive integers, got '{}'",
+                                  what, text));
+  }
+}
+
+GammaMode parse_gamma(const std::string& text) {
+  if (text == "square" || text == "2.0") return GammaMode::kSquare;
+  if (text == "srgb") return GammaMode::kSrgb;
+  throw ConfigError("gamma: expected 'square' (gamma 2.0) or 'srgb', got '" + text + "'");
+}
+
+namespace {
+
+float parse_float(const std::string& key, const std::string& text) {
+  try {
+    size_t used = 0;
+    const float v = std::stof(text, &used);
+    if (used != text.size() || !std::isfinite(v)) throw std::invalid_argument("trailing");
+    return v;
+  } catch (const std::logic_error&) {
+    throw ConfigError(fmt::format("{}: expected a number, got '{}'", key, text));
+  }
+}
+
+int parse_int(const std::string& key, const std::string& text) {
+  try {
+    size_t used = 0;
+    const int v = std::stoi(text, &used);
+    if (used != text.size()) throw std::invalid_argument("trailing");
+    return v;
+  } catch (const std::logic_error&) {
+    throw ConfigError(fmt::format("{}: expected an integer, got '{}'", key, text));
+  }
+}
+
+SpecularLobe parse_lobe(const std::string& key, const std::string& text) {
+  const auto comma = text.find(',');
+  if (comma == std::string::npos) {
+    throw ConfigError(fmt::format("{}: expected 'roughness,weight', got '{}'", key, text));
+  }
+  return {parse_float(key, text.substr(0, comma)), parse_float(key, text.substr(comma + 1))};
+}
+
+}  // namespace
+
+void set_config_field(PipelineConfig& c, const std::string& key, const std::string& value) {
+  if (key == "scale") {
+    c.buffer_scale = parse_float(key, value);
+  } else if (key == "lut") {
+    std::tie(c.lut_width, c.lut_height) = parse_size(value, key);
+  } else if (key == "lut_format") {
+    try {
+      c.lut_format = sim::parse_format(value);
+    } catch (const std::invalid_argument& e) {
+      throw ConfigError(std::string("lut_format: ") + e.what());
+    }
+  } else if (key == "blur_iterations") {
+    c.blur_iterations = parse_int(key, value);
+  } else if (key == "blur_width_mm") {
+    c.blur_width_mm = parse_float(key, value);
+  } else if (key == "normal_offset_mm") {
+    c.normal_offset_mm = parse_float(key, value);
+  } else if (key == "gamma") {
+    c.gamma = parse_gamma(value);
+  } else if (key == "lobe1") {
+    c.lobe1 = parse_lobe(key, value);
+  } else if (key == "lobe2") {
+    c.lobe2 = parse_lobe(key, value);
+  } else if (key == "specular_intensity") {
+    c.specular_intensity = parse_float(key, value);
+  } else if (key == "resolution") {
+    std::tie(c.width, c.height) =
+        value == "display" ? std::pair{0, 0} : parse_size(value, key);
+  } else if (key == "lod_distance_m") {
+    c.lod_distance_m = parse_float(key, value);
+  } else {
+    throw ConfigError(fmt::format("unknown pipeline setting '{}' (known: {})", key,
+                                  fmt::join(config_field_names(), ", ")));
+  }
+}
+
+const std::vector<std::string>& config_field_names() {
+  static const std::vector<std::string> names = {
+      "scale", "lut", "lut_format", "blur_iterations", "blur_width_mm", "normal_offset_mm",
+      "gamma", "lobe1", "lobe2", "specular_intensity", "resolution", "lod_distance_m"};
+  return names;
+}
+
+std::string get_config_field(const PipelineConfig& c, const std::string& key) {
+  if (key == "scale") return fmt::format("{}", c.buffer_scale);
+  if (key == "lut") return fmt::format("{}x{}", c.lut_width, c.lut_height);
+  if (key == "lut_format") return sim::format_name(c.lut_format);
+  if (key == "blur_iterations") return std::to_string(c.blur_iterations);
+  if (key == "blur_width_mm") return c.blur_width_mm ? fmt::format("{}", *c.blur_width_mm) : "auto";
+  if (key == "normal_offset_mm") return fmt::format("{}", c.normal_offset_mm);
+  if (key == "gamma") return gamma_name(c.gamma);
+  if (key == "lobe1") return fmt::format("{},{}", c.lobe1.roughness, c.lobe1.weight);
+  if (key == "lobe2") return fmt::format("{},{}", c.lobe2.roughness, c.lobe2.weight);
+  if (key == "specular_intensity") return fmt::format("{}", c.specular_intensity);
+  if (key == "resolution") {
+    return c.width == 0 ? "display" : fmt::format("{}x{}", c.width, c.height);
+  }
+  if (key == "lod_distance_m") return fmt::format("{}", c.lod_distance_m);
+  throw ConfigError(fmt::format("unknown pipeline setting '{}'", key));
+}
+
+const char* gamma_name(GammaMode mode) { return mode == GammaMode::kSquare ? "square" : "srgb"; }
+
+}  // namespace skinsim::pipeline

@@ -1,0 +1,73 @@
+// A scene as GPU resources: textures with mip chains, the environment cube maps, and
+// draw geometry per mesh. Built once per scene and shared by every pipeline run on it.
+#pragma once
+
+#include <deque>
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "scene/scene.h"
+#include "sim/render_pass.h"
+#include "sim/texture.h"
+
+namespace skinsim::pipeline {
+
+struct GpuMaterial {
+  scene::MaterialKind kind = scene::MaterialKind::kOther;
+  const sim::Texture2D* base_color = nullptr;  // RGB gamma-encoded albedo, A reflectivity
+  const sim::Texture2D* normal = nullptr;      // tangent-space normal map
+  glm::vec4 base_color_factor{1.0f};
+  float reflectivity = 1.0f;
+};
+
+struct GpuMesh {
+  const scene::Mesh* mesh = nullptr;
+  int material = 0;
+  sim::Geometry geometry;
+};
+
+class GpuScene {
+ public:
+  explicit GpuScene(const scene::Scene& scene);
+  GpuScene(const GpuScene&) = delete;
+  GpuScene& operator=(const GpuScene&) = delete;
+
+  const scene::Scene& scene() const { return scene_; }
+  const std::vector<GpuMaterial>& materials() const { return materials_; }
+  const std::vector<GpuMesh>& meshes() const { return meshes_; }
+  // Sharp environment (eye reflections) and a cosine-convolved one (skin rim light, sampled
+  // with the vertex normal, GPU Pro 5).
+  const sim::TextureCube& environment() const { return environment_; }
+  const sim::TextureCube& environment_diffuse() const { return environment_diffuse_; }
+  bool has_skin() const;
+
+ private:
+  const sim::Texture2D* add_texture(sim::Texture2D texture);
+
+  const scene::Scene& scene_;
+  std::deque<sim::Texture2D> textures_;  // deque: stable addresses
+  std::vector<GpuMaterial> materials_;
+  std::vector<GpuMesh> meshes_;
+  sim::TextureCube environment_;
+  sim::TextureCube environment_diffuse_;
+};
+
+// Camera matrices for a render resolution, and the skin's screen footprint.
+struct View {
+  glm::mat4 view_proj{1.0f};
+  glm::vec3 eye{0.0f};
+  int width = 0;
+  int height = 0;
+  float focal_pixels = 0.0f;       // pixels per unit of world size at distance 1
+  float skin_distance = 0.0f;      // camera to the skin bounding-box centre (world units)
+  sim::PixelRect skin_rect;        // screen bounding rectangle of all skin (pixels)
+  bool skin_visible = false;
+  // Pixels per millimetre on the skin at its distance (drives the blur width).
+  float pixels_per_mm(float units_per_mm) const {
+    return skin_distance > 0.0f ? focal_pixels * units_per_mm / skin_distance : 0.0f;
+  }
+};
+
+View make_view(const GpuScene& gpu_scene, int width, int height);
+
+}  // namespace skinsim::pipeline

@@ -1,0 +1,277 @@
+#include "pipeline/reference/reference.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+#include "pipeline/bake/brdf_lut.h"
+#include "pipeline/bake/skin_profile.h"
+#include "pipeline/bake/specular.h"
+#include "pipeline/brdf_lut_texture.h"
+#include "pipeline/reference/gbuffer_shaders.h"
+#include "pipeline/shaders/background.h"
+#include "pipeline/shaders/eye.h"
+#include "sim/gpu.h"
+
+namespace skinsim::pipeline {
+
+namespace {
+
+using scene::MaterialKind;
+
+struct GBuffer {
+  sim::RenderTarget position, normal, albedo, vertex_normal, nonskin;
+};
+
+template <class FS>
+sim::PassCounters gbuffer_pass(const GpuScene& gs, const View& view, sim::RenderTarget& target,
+                               sim::Gpu& gpu,
+                               const std::function<typename FS::Uniforms(const GpuMaterial&)>& uniforms) {
+  auto vs = sim::make_vertex_program<shaders::SurfaceVS>({view.view_proj, 0.0f});
+  sim::RenderPassDesc pass;
+  pass.name = target.name;
+  pass.color = &target;
+  for (const GpuMesh& m : gs.meshes()) {
+    const GpuMaterial& mat = gs.materials()[m.material];
+    sim::DrawCall d;
+    d.geometry = m.geometry;
+    d.vertex_program = vs;
+    d.fragment_program = sim::make_fragment_program<FS>(uniforms(mat));
+    d.textures.textures[0] = mat.base_color;
+    d.textures.textures[1] = mat.normal;
+    pass.draws.push_back(d);
+  }
+  return gpu.execute(pass);
+}
+
+float kind_code(MaterialKind k) {
+  switch (k) {
+    case MaterialKind::kSkin:
+      return reference::kKindSkin;
+    case MaterialKind::kEye:
+      return reference::kKindEye;
+    case MaterialKind::kOther:
+      break;
+  }
+  return reference::kKindOther;
+}
+
+GBuffer render_gbuffer(const GpuScene& gs, const View& view, int w, int h, int threads) {
+  sim::GpuConfig config;
+  config.threads = threads;
+  sim::Gpu gpu(config);
+  GBuffer g{{"ref_position", w, h, sim::TexelFormat::kRGBA32F},
+            {"ref_normal", w, h, sim::TexelFormat::kRGBA32F},
+            {"ref_albedo", w, h, sim::TexelFormat::kRGBA32F},
+            {"ref_vertex_normal", w, h, sim::TexelFormat::kRGBA32F},
+            {"ref_nonskin", w, h, sim::TexelFormat::kRGBA32F}};
+  gbuffer_pass<reference::PositionFS>(
+      gs, view, g.position, gpu, [](const GpuMaterial& m) { return reference::PositionFS::Uniforms{kind_code(m.kind)}; });
+  gbuffer_pass<reference::ShadingNormalFS>(
+      gs, view, g.normal, gpu,
+      [](const GpuMaterial& m) {
+        return reference::ShadingNormalFS::Uniforms{m.reflectivity, m.kind == MaterialKind::kSkin};
+      });
+  gbuffer_pass<reference::AlbedoFS>(
+      gs, view, g.albedo, gpu,
+      [](const GpuMaterial& m) { return reference::AlbedoFS::Uniforms{glm::vec3(m.base_color_factor)}; });
+  gbuffer_pass<reference::VertexNormalFS>(
+      gs, view, g.vertex_normal, gpu, [](const GpuMaterial&) { return reference::VertexNormalFS::Uniforms{}; });
+
+  // Eyes and background: the same shaders as the pipelines (not what is studied), in float.
+  const scene::Scene& sc = gs.scene();
+  const glm::vec3 l = glm::normalize(sc.key_light.direction);
+  auto vs = sim::make_vertex_program<shaders::SurfaceVS>({view.view_proj, 0.0f});
+  sim::RenderPassDesc pass;
+  pass.name = "ref_nonskin";
+  pass.color = &g.nonskin;
+  pass.clear_color = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  for (const GpuMesh& m : gs.meshes()) {
+    const GpuMaterial& mat = gs.materials()[m.material];
+    sim::DrawCall d;
+    d.geometry = m.geometry;
+    d.vertex_program = vs;
+    d.textures.textures[0] = mat.base_color;
+    const glm::vec3 factor(mat.base_color_factor);
+    if (mat.kind == MaterialKind::kEye) {
+      shaders::EyeFS::Uniforms u;
+      u.eye = view.eye;
+      u.light_dir = l;
+      u.light_radiance = sc.key_light.radiance;
+      u.ambient = sc.ambient;
+      u.albedo_factor = factor;
+      d.fragment_program = sim::make_fragment_program<shaders::EyeFS>(u);
+      d.textures.cubes[shaders::EyeFS::kEnvironment] = &gs.environment();
+    } else {
+      d.fragment_program = sim::make_fragment_program<shaders::BackgroundFS>(
+          {l, sc.key_light.radiance, sc.ambient, factor});
+    }
+    pass.draws.push_back(d);
+  }
+  gpu.execute(pass);
+  return g;
+}
+
+float srgb_encode(float c) {
+  c = std::max(c, 0.0f);
+  return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+}
+
+// Dual-lobe Kelemen/Szirmay-Kalos specular (d'Eon & Luebke, GPU Gems 3, ch. 14), exact.
+float ks_specular(const glm::vec3& n, const glm::vec3& l, const glm::vec3& v,
+                  const bake::BrdfLutParams& p) {
+  return p.weight1 * bake::ks_skin_specular(n, l, v, p.m1, p.rho_s, p.f0) +
+         p.weight2 * bake::ks_skin_specular(n, l, v, p.m2, p.rho_s, p.f0);
+}
+
+// The hemisphere integrals behind the LUT's B and A channels depend on N.V only; a
+// 1024-entry float table, linearly interpolated, stands in for per-pixel integration
+// (its interpolation error is far below the 8-bit LUT's quantisation being measured).
+class DirectionalTable {
+ public:
+  explicit DirectionalTable(const bake::BrdfLutParams& p) : entries_(kSize + 1) {
+    tbb::parallel_for(0, kSize + 1, [&](int i) {
+      const float n_dot_v = std::max(static_cast<float>(i) / kSize, 1e-4f);
+      entries_[i] = bake::directional_reflectance(n_dot_v, p.m1, p.m2, p);
+    });
+  }
+  // Fraction of light entering the skin (1 - specular albedo) and lobe-averaged Fresnel.
+  void at(float n_dot_v, float& energy, float& fresnel) const {
+    const float x = std::clamp(n_dot_v, 0.0f, 1.0f) * kSize;
+    const int i = std::min(static_cast<int>(x), kSize - 1);
+    const float t = x - static_cast<float>(i);
+    const auto& a = entries_[i];
+    const auto& b = entries_[i + 1];
+    energy = 1.0f - static_cast<float>(a.albedo + (b.albedo - a.albedo) * t);
+    fresnel = static_cast<float>(a.fresnel + (b.fresnel - a.fresnel) * t);
+  }
+
+ private:
+  static constexpr int kSize = 1024;
+  std::vector<bake::DirectionalReflectance> entries_;
+};
+
+glm::vec3 sample_cube(const sim::TextureCube& cube, const glm::vec3& direction) {
+  const sim::CubeCoord c = sim::cube_coord(direction);
+  const sim::MipLevel& l = cube.face(c.face).level(0);
+  const float fx = std::clamp(c.uv.x * l.width - 0.5f, 0.0f, l.width - 1.0f);
+  const float fy = std::clamp(c.uv.y * l.height - 0.5f, 0.0f, l.height - 1.0f);
+  const int x0 = static_cast<int>(fx), y0 = static_cast<int>(fy);
+  const int x1 = std::min(x0 + 1, l.width - 1), y1 = std::min(y0 + 1, l.height - 1);
+  const float ax = fx - x0, ay = fy - y0;
+  const glm::vec4 top = glm::mix(l.at(x0, y0), l.at(x1, y0), ax);
+  const glm::vec4 bottom = glm::mix(l.at(x0, y1), l.at(x1, y1), ax);
+  return glm::vec3(glm::mix(top, bottom, ay));
+}
+
+// Skin diffusion: M_i(p) = sum_q G_i(|x_p - x_q|) E(q) / sum_q G_i(|x_p - x_q|) over skin
+// pixels q on a screen grid spanning +-3 sigma_i (projected at p's depth), for each of the
+// profile's Gaussians; M = sum_i w_i M_i.
+class Diffusion {
+ public:
+  Diffusion(const GBuffer& g, const std::vector<glm::vec3>& irradiance, const View& view,
+            float units_per_mm)
+      : g_(g), e_(irradiance), view_(view), units_per_mm_(units_per_mm) {}
+
+  glm::vec3 at(int x, int y) const {
+    const glm::vec4 p = g_.position.at(x, y);
+    const float depth = glm::length(glm::vec3(p) - view_.eye);
+    const float px_per_unit = view_.focal_pixels / depth;
+    glm::vec3 result(0.0f);
+    for (const bake::GaussianTerm& gaussian : bake::skin_gaussians()) {
+      const float variance = gaussian.variance_mm2 * units_per_mm_ * units_per_mm_;
+      const float sigma_px = std::sqrt(variance) * px_per_unit;
+      result += gaussian.weight * convolve(x, y, glm::vec3(p), variance, sigma_px);
+    }
+    return result;
+  }
+
+ private:
+  glm::vec3 convolve(int x, int y, const glm::vec3& p, float variance, float sigma_px) const {
+    const int w = g_.position.width, h = g_.position.height;
+    if (sigma_px < 0.5f) return e_[static_cast<size_t>(y) * w + x];
+    const int n = std::min(6, static_cast<int>(std::ceil(3.0f * sigma_px)));
+    const float step = 3.0f * sigma_px / static_cast<float>(n);
+    glm::vec3 sum(0.0f);
+    float weight_sum = 0.0f;
+    for (int j = -n; j <= n; ++j) {
+      const int qy = y + static_cast<int>(std::lround(j * step));
+      if (qy < 0 || qy >= h) continue;
+      for (int i = -n; i <= n; ++i) {
+        const int qx = x + static_cast<int>(std::lround(i * step));
+        if (qx < 0 || qx >= w) continue;
+        const glm::vec4 q = g_.position.at(qx, qy);
+        if (q.w != reference::kKindSkin) continue;
+        const glm::vec3 d = glm::vec3(q) - p;
+        const float g = std::exp(-glm::dot(d, d) / (2.0f * variance));
+        sum += g * e_[static_cast<size_t>(qy) * w + qx];
+        weight_sum += g;
+      }
+    }
+    return sum / weight_sum;  // the centre sample has weight 1
+  }
+
+  const GBuffer& g_;
+  const std::vector<glm::vec3>& e_;
+  const View& view_;
+  float units_per_mm_;
+};
+
+}  // namespace
+
+ReferenceFrame render_reference(const GpuScene& gs, const PipelineConfig& config, int threads) {
+  const int w = config.width, h = config.height;
+  const View view = make_view(gs, w, h);
+  const GBuffer g = render_gbuffer(gs, view, w, h, threads);
+  const scene::Scene& sc = gs.scene();
+  const glm::vec3 l = glm::normalize(sc.key_light.direction);
+
+  std::vector<glm::vec3> irradiance(static_cast<size_t>(w) * h, glm::vec3(0.0f));
+  const auto for_rows = [&](const std::function<void(int)>& row) {
+    tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+    arena.execute([&] { tbb::parallel_for(0, h, row); });
+  };
+  for_rows([&](int y) {
+    for (int x = 0; x < w; ++x) {
+      if (g.position.at(x, y).w != reference::kKindSkin) continue;
+      const glm::vec3 n(g.normal.at(x, y));
+      irradiance[static_cast<size_t>(y) * w + x] =
+          sc.key_light.radiance * std::max(glm::dot(n, l), 0.0f) + sc.ambient;
+    }
+  });
+
+  const Diffusion diffusion(g, irradiance, view, sc.units_per_mm);
+  const bake::BrdfLutParams lut_params = brdf_lut_params(config);
+  const DirectionalTable directional(lut_params);
+  ReferenceFrame out{sim::RenderTarget("reference", w, h, sim::TexelFormat::kRGBA32F),
+                     std::vector<std::uint8_t>(static_cast<size_t>(w) * h, 0)};
+  for_rows([&](int y) {
+    for (int x = 0; x < w; ++x) {
+      const glm::vec4 p = g.position.at(x, y);
+      if (p.w != reference::kKindSkin) {
+        out.frame.at(x, y) = g.nonskin.at(x, y);
+        continue;
+      }
+      out.skin_mask[static_cast<size_t>(y) * w + x] = 1;
+      const glm::vec3 n(g.normal.at(x, y));
+      const float reflectivity = g.normal.at(x, y).w;
+      const glm::vec3 v = glm::normalize(view.eye - glm::vec3(p));
+      const float n_dot_v = std::clamp(glm::dot(n, v), 0.0f, 1.0f);
+      const glm::vec3 albedo(g.albedo.at(x, y));
+      float energy = 0.0f, fresnel = 0.0f;
+      directional.at(n_dot_v, energy, fresnel);
+      const glm::vec3 diffuse = albedo * diffusion.at(x, y) * energy;
+      const glm::vec3 specular =
+          sc.key_light.radiance * ks_specular(n, l, v, lut_params) * reflectivity;
+      const glm::vec3 env =
+          sample_cube(gs.environment_diffuse(), glm::vec3(g.vertex_normal.at(x, y)));
+      const glm::vec3 color = diffuse + specular + env * fresnel * reflectivity;
+      out.frame.at(x, y) = glm::vec4(srgb_encode(color.r), srgb_encode(color.g), srgb_encode(color.b), 1.0f);
+    }
+  });
+  return out;
+}
+
+}  // namespace skinsim::pipeline

@@ -1,0 +1,30 @@
+// Everything that is neither skin nor eye: Lambert with a base colour texture.
+#pragma once
+
+#include "pipeline/shaders/gamma.h"
+#include "pipeline/shaders/surface_vs.h"
+
+namespace skinsim::pipeline::shaders {
+
+struct BackgroundFS {
+  static constexpr const char* kName = "background_fs";
+  struct Uniforms {
+    glm::vec3 light_dir{0.0f, 0.0f, 1.0f};
+    glm::vec3 light_radiance{1.0f};
+    glm::vec3 ambient{0.0f};
+    glm::vec3 albedo_factor{1.0f};
+  };
+  template <class L>
+  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
+                                   const Uniforms& u) {
+    using vec3 = typename L::vec3;
+    using vec4 = typename L::vec4;
+    const vec4 base = tex.sample(0, in.texcoord(SurfaceSlots::kUv));
+    const vec3 n = sl::normalize(in.v3(SurfaceSlots::kNormal));
+    const vec3 albedo = decode_gamma<GammaMode::kSquare>(sl::xyz(base)) * u.albedo_factor;
+    const vec3 light = vec3(u.light_radiance) * sl::saturate(sl::dot(n, vec3(u.light_dir))) + vec3(u.ambient);
+    return vec4(encode_gamma<GammaMode::kSquare>(albedo * light), 1.0f);
+  }
+};
+
+}  // namespace skinsim::pipeline::shaders

@@ -1,0 +1,62 @@
+// Pass 2 of the GPU Pro 5 pipeline: one axis of a separable Gaussian over the integration
+// buffer, each tap weighted by the buffer's alpha (skin coverage) so light does not leak
+// between skin and background. Tap coordinates are computed in the vertex shader and
+// interpolated, so every tap is an independent read (PowerVR performance guidelines).
+#pragma once
+
+#include <array>
+#include <glm/glm.hpp>
+
+#include "sim/shader_io.h"
+
+namespace skinsim::pipeline::shaders {
+
+namespace sl = sim::sl;
+
+constexpr int kBlurTaps = 9;  // centre + 4 per side: 18 varying floats, within GLES2's 8 vec4
+
+struct BlurVS {
+  static constexpr const char* kName = "blur_vs";
+  struct Uniforms {
+    std::array<glm::vec2, kBlurTaps> offsets{};  // in texture coordinates
+  };
+  // Attributes: position already in clip space, uv in [0,1] over the source buffer.
+  template <class L>
+  static void vertex(const typename L::VertexIn& in, typename L::VertexOut& out,
+                     const Uniforms& u) {
+    using vec4 = typename L::vec4;
+    using vec2 = typename L::vec2;
+    const auto p = in.position();
+    out.position = vec4(sl::x(p), sl::y(p), 0.0f, 1.0f);
+    const auto uv = in.uv();
+    for (int i = 0; i < kBlurTaps; ++i) out.set(2 * i, uv + vec2(u.offsets[i]));
+  }
+};
+
+struct BlurFS {
+  static constexpr const char* kName = "blur_fs";
+  struct Uniforms {
+    std::array<float, kBlurTaps> weights{};  // Gaussian weights, centre is tap kBlurTaps/2
+  };
+  template <class L>
+  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
+                                   const Uniforms& u) {
+    using vec3 = typename L::vec3;
+    using vec4 = typename L::vec4;
+    using f32 = typename L::f32;
+    vec3 sum(0.0f);
+    f32 weight_sum(0.0f);
+    vec4 centre(0.0f);
+    for (int i = 0; i < kBlurTaps; ++i) {
+      const vec4 t = tex.sample(0, in.texcoord(2 * i));
+      if (i == kBlurTaps / 2) centre = t;
+      const f32 w = sl::w(t) * u.weights[i];  // mask: background taps weigh nothing
+      sum = sum + sl::xyz(t) * w;
+      weight_sum = weight_sum + w;
+    }
+    const vec3 blurred = sum / sl::max(weight_sum, 1e-4f);
+    return vec4(blurred, sl::w(centre));
+  }
+};
+
+}  // namespace skinsim::pipeline::shaders

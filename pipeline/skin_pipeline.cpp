@@ -1,0 +1,243 @@
+#include "pipeline/skin_pipeline.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "pipeline/diffusion.h"
+#include "pipeline/shaders/background.h"
+#include "pipeline/shaders/blur.h"
+#include "pipeline/shaders/eye.h"
+#include "pipeline/shaders/irradiance.h"
+#include "pipeline/shaders/skin.h"
+
+namespace skinsim::pipeline {
+
+namespace {
+
+using scene::MaterialKind;
+
+// Clip-space quad over a pixel rectangle of a w x h target, with matching texture coords.
+struct ScreenQuad {
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec2> uvs;
+  std::vector<std::uint32_t> indices{0, 1, 2, 0, 2, 3};
+  ScreenQuad(const sim::PixelRect& r, int w, int h) {
+    const float u0 = static_cast<float>(r.x0) / w, u1 = static_cast<float>(r.x1) / w;
+    const float v0 = static_cast<float>(r.y0) / h, v1 = static_cast<float>(r.y1) / h;
+    // Texture v grows downwards (row 0 at the top), clip y upwards.
+    for (const glm::vec2 uv : {glm::vec2(u0, v1), glm::vec2(u1, v1), glm::vec2(u1, v0),
+                               glm::vec2(u0, v0)}) {
+      positions.emplace_back(uv.x * 2.0f - 1.0f, 1.0f - uv.y * 2.0f, 0.0f);
+      uvs.push_back(uv);
+    }
+  }
+  sim::Geometry geometry() const {
+    sim::Geometry g;
+    g.attributes.positions = positions.data();
+    g.attributes.uvs = uvs.data();
+    g.vertex_count = positions.size();
+    g.indices = indices.data();
+    g.index_count = indices.size();
+    return g;
+  }
+};
+
+sim::PixelRect scale_rect(const sim::PixelRect& r, float sx, float sy, int w, int h) {
+  return {std::clamp(static_cast<int>(std::floor(r.x0 * sx)) - 1, 0, w),
+          std::clamp(static_cast<int>(std::floor(r.y0 * sy)) - 1, 0, h),
+          std::clamp(static_cast<int>(std::ceil(r.x1 * sx)) + 1, 0, w),
+          std::clamp(static_cast<int>(std::ceil(r.y1 * sy)) + 1, 0, h)};
+}
+
+struct Lighting {
+  glm::vec3 light_dir, light_radiance, ambient;
+};
+
+Lighting scene_lighting(const scene::Scene& s) {
+  return {glm::normalize(s.key_light.direction), s.key_light.radiance, s.ambient};
+}
+
+sim::PassCounters irradiance_pass(const GpuScene& gs, const View& view, const PipelineConfig& cfg,
+                                  sim::RenderTarget& buffer, sim::Gpu& gpu) {
+  const Lighting light = scene_lighting(gs.scene());
+  const float offset = cfg.normal_offset_mm * gs.scene().units_per_mm;
+  auto vs = sim::make_vertex_program<shaders::PositionNormalVS>({view.view_proj, offset});
+  auto fs = sim::make_fragment_program<shaders::IrradianceFS>(
+      {light.light_dir, light.light_radiance, light.ambient});
+  sim::RenderPassDesc pass;
+  pass.name = "irradiance";
+  pass.color = &buffer;
+  pass.clear_color = glm::vec4(0.0f);  // alpha 0: no skin
+  for (const GpuMesh& m : gs.meshes()) {
+    if (gs.materials()[m.material].kind != MaterialKind::kSkin) continue;
+    sim::DrawCall d;
+    d.geometry = m.geometry;
+    d.vertex_program = vs;
+    d.fragment_program = fs;
+    pass.draws.push_back(d);
+  }
+  return gpu.execute(pass);
+}
+
+// One separable blur axis over the skin's bounding rectangle of the buffer.
+sim::PassCounters blur_pass(const std::string& name, const sim::RenderTarget& source,
+                            sim::RenderTarget& target, const sim::PixelRect& rect,
+                            glm::vec2 axis, float sigma_texels, sim::Gpu& gpu) {
+  const sim::Texture2D src =
+      sim::as_texture(source, {sim::Filter::kBilinear, sim::Wrap::kClamp});
+  shaders::BlurVS::Uniforms vu;
+  shaders::BlurFS::Uniforms fu;
+  // Taps span +-2.5 sigma; spacing grows with sigma, so wide kernels are sampled sparsely
+  // (the quality cost of a small tap count that the sweep measures).
+  const int half = shaders::kBlurTaps / 2;
+  const float spacing = sigma_texels * 2.5f / static_cast<float>(half);
+  float total = 0.0f;
+  for (int i = 0; i < shaders::kBlurTaps; ++i) {
+    const float x = static_cast<float>(i - half) * spacing;
+    fu.weights[i] = sigma_texels > 0.0f ? std::exp(-x * x / (2.0f * sigma_texels * sigma_texels))
+                                        : (i == half ? 1.0f : 0.0f);
+    total += fu.weights[i];
+    vu.offsets[i] = axis * x / glm::vec2(source.width, source.height);
+  }
+  for (float& w : fu.weights) w /= total;
+  const ScreenQuad quad(rect, target.width, target.height);
+  sim::DrawCall d;
+  d.geometry = quad.geometry();
+  d.vertex_program = sim::make_vertex_program<shaders::BlurVS>(vu);
+  d.fragment_program = sim::make_fragment_program<shaders::BlurFS>(fu);
+  d.textures.textures[0] = &src;
+  d.cull = sim::CullMode::kNone;
+  d.depth_test = false;
+  d.depth_write = false;
+  sim::RenderPassDesc pass;
+  pass.name = name;
+  pass.color = &target;
+  pass.render_area = rect;
+  pass.draws.push_back(d);
+  return gpu.execute(pass);
+}
+
+template <GammaMode kGamma>
+std::shared_ptr<const sim::FragmentProgram> skin_program(bool lod, const shaders::SkinUniforms& u) {
+  if (lod) return sim::make_fragment_program<shaders::SkinLodFS<kGamma>>(u);
+  return sim::make_fragment_program<shaders::SkinFS<kGamma>>(u);
+}
+
+sim::PassCounters framebuffer_pass(const GpuScene& gs, const View& view,
+                                   const PipelineConfig& cfg, const BrdfLutTexture& lut,
+                                   const sim::Texture2D* irradiance, bool lod,
+                                   sim::RenderTarget& frame, sim::Gpu& gpu) {
+  const scene::Scene& sc = gs.scene();
+  const Lighting light = scene_lighting(sc);
+  const LayerSplit split = skin_layer_split();
+  auto vs = sim::make_vertex_program<shaders::SurfaceVS>({view.view_proj, 0.0f});
+
+  sim::RenderPassDesc pass;
+  pass.name = "skin";
+  pass.color = &frame;
+  pass.clear_color = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  // Draw order: background, eyes, skin. HSR makes the order irrelevant to shading cost.
+  for (const MaterialKind kind : {MaterialKind::kOther, MaterialKind::kEye, MaterialKind::kSkin}) {
+    for (const GpuMesh& m : gs.meshes()) {
+      const GpuMaterial& mat = gs.materials()[m.material];
+      if (mat.kind != kind) continue;
+      sim::DrawCall d;
+      d.geometry = m.geometry;
+      d.vertex_program = vs;
+      const glm::vec3 factor(mat.base_color_factor);
+      d.textures.textures[0] = mat.base_color;
+      if (kind == MaterialKind::kOther) {
+        d.fragment_program = sim::make_fragment_program<shaders::BackgroundFS>(
+            {light.light_dir, light.light_radiance, light.ambient, factor});
+      } else if (kind == MaterialKind::kEye) {
+        shaders::EyeFS::Uniforms u;
+        u.eye = view.eye;
+        u.light_dir = light.light_dir;
+        u.light_radiance = light.light_radiance;
+        u.ambient = light.ambient;
+        u.albedo_factor = factor;
+        d.fragment_program = sim::make_fragment_program<shaders::EyeFS>(u);
+        d.textures.cubes[shaders::EyeFS::kEnvironment] = &gs.environment();
+      } else {
+        shaders::SkinUniforms u;
+        u.eye = view.eye;
+        u.light_dir = light.light_dir;
+        u.light_radiance = light.light_radiance;
+        u.ambient = light.ambient;
+        u.albedo_factor = factor;
+        u.layer_mix = split.wide_fraction;
+        u.reflectivity = mat.reflectivity;
+        u.specular_intensity = cfg.specular_intensity;
+        u.lobe1_weight = cfg.lobe1.weight;
+        u.lobe2_weight = cfg.lobe2.weight;
+        u.lut_lod = bake::brdf_lut_lod(1.0f);  // the config's own roughness
+        d.fragment_program = cfg.gamma == GammaMode::kSquare
+                                 ? skin_program<GammaMode::kSquare>(lod, u)
+                                 : skin_program<GammaMode::kSrgb>(lod, u);
+        d.textures.textures[shaders::SkinBindings::kNormalMap] = mat.normal;
+        d.textures.cubes[shaders::SkinBindings::kEnvironment] = &gs.environment_diffuse();
+        d.textures.textures[shaders::SkinBindings::kIrradiance] = irradiance;
+        d.textures.textures[shaders::SkinBindings::kBrdfLut] = &lut.texture();
+      }
+      pass.draws.push_back(d);
+    }
+  }
+  return gpu.execute(pass);
+}
+
+}  // namespace
+
+std::pair<int, int> render_size(const PipelineConfig& config, int default_width,
+                                int default_height) {
+  if (config.width > 0) return {config.width, config.height};
+  return {default_width, default_height};
+}
+
+FrameOutput render_skin_frame(const GpuScene& gs, const PipelineConfig& cfg,
+                              const BrdfLutTexture& lut, sim::Gpu& gpu) {
+  cfg.validate();
+  if (cfg.width <= 0) throw ConfigError("render resolution must be resolved before rendering");
+  FrameOutput out;
+  out.view = make_view(gs, cfg.width, cfg.height);
+  out.frame = sim::RenderTarget("frame", cfg.width, cfg.height, sim::TexelFormat::kRGBA8);
+  const float units_per_m = gs.scene().units_per_mm * 1000.0f;
+  out.lod = !gs.has_skin() || !out.view.skin_visible ||
+            out.view.skin_distance > cfg.lod_distance_m * units_per_m;
+
+  if (out.lod) {
+    out.passes.push_back(framebuffer_pass(gs, out.view, cfg, lut, nullptr, true, out.frame, gpu));
+    return out;
+  }
+
+  const int bw = std::max(1, static_cast<int>(std::lround(cfg.width * cfg.buffer_scale)));
+  const int bh = std::max(1, static_cast<int>(std::lround(cfg.height * cfg.buffer_scale)));
+  out.irradiance = sim::RenderTarget("irradiance", bw, bh, sim::TexelFormat::kRGBA8);
+  out.passes.push_back(irradiance_pass(gs, out.view, cfg, out.irradiance, gpu));
+
+  // Blur width: the profile's wide-layer sigma in mm, projected at the skin's distance, in
+  // buffer texels; k iterations of sigma/sqrt(k) compose to the same total variance.
+  const float sigma_mm = cfg.blur_width_mm.value_or(skin_layer_split().wide_sigma_mm);
+  const float sigma_full = sigma_mm * out.view.pixels_per_mm(gs.scene().units_per_mm);
+  out.blur_sigma_pixels = sigma_full * static_cast<float>(bw) / static_cast<float>(cfg.width) /
+                          std::sqrt(static_cast<float>(cfg.blur_iterations));
+  const sim::PixelRect rect =
+      scale_rect(out.view.skin_rect, static_cast<float>(bw) / cfg.width,
+                 static_cast<float>(bh) / cfg.height, bw, bh);
+  sim::RenderTarget ping("blur_h", bw, bh, sim::TexelFormat::kRGBA8);
+  out.blurred = sim::RenderTarget("blurred", bw, bh, sim::TexelFormat::kRGBA8);
+  const sim::RenderTarget* source = &out.irradiance;
+  for (int i = 0; i < cfg.blur_iterations; ++i) {
+    const std::string suffix = i == 0 ? "" : std::to_string(i + 1);  // blur_h, blur_h2, ...
+    out.passes.push_back(
+        blur_pass("blur_h" + suffix, *source, ping, rect, {1, 0}, out.blur_sigma_pixels, gpu));
+    out.passes.push_back(
+        blur_pass("blur_v" + suffix, ping, out.blurred, rect, {0, 1}, out.blur_sigma_pixels, gpu));
+    source = &out.blurred;
+  }
+  const sim::Texture2D blurred =
+      sim::as_texture(out.blurred, {sim::Filter::kBilinear, sim::Wrap::kClamp});
+  out.passes.push_back(framebuffer_pass(gs, out.view, cfg, lut, &blurred, false, out.frame, gpu));
+  return out;
+}
+
+}  // namespace skinsim::pipeline

@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# One command that installs what is missing, builds, and passes the tests:
+#   1. Release build, every CTest test (chart tests run under xvfb-run);
+#   2. ASan + UBSan build of the unit tests (no VTK charts, no benchmarks).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh
+jobs=$(nproc 2>/dev/null || echo 2)
+
+bash scripts/build.sh
+(cd build && ctest --output-on-failure -j "$jobs")
+
+cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSKINSIM_SANITIZE=ON \
+  -DSKINSIM_BUILD_REPORTS=OFF -DSKINSIM_BUILD_BENCH=OFF
+cmake --build build-asan -j "$jobs"
+(cd build-asan && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+  ctest --output-on-failure -j "$jobs" -LE slow)
