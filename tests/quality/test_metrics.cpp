@@ -2,7 +2,9 @@
 #include <tbb/global_control.h>
 
 #include <cmath>
+#include <glm/common.hpp>
 #include <limits>
+#include <utility>
 
 #include "quality/error.h"
 #include "quality/metrics.h"
@@ -14,6 +16,21 @@ namespace {
 using testing::add_noise;
 using testing::box_blur;
 using testing::pattern_image;
+
+// A reference/test pair with noise and a red square, stored as 8-bit values (as the PNGs the
+// external cross-checks below read).
+std::pair<Image, Image> cross_check_pair() {
+  const Image reference = pattern_image(80, 60);
+  Image test = add_noise(reference, 0.1f);
+  for (int y = 20; y < 40; ++y) {
+    for (int x = 30; x < 50; ++x) test.at(x, y) = glm::vec3(0.9f, 0.2f, 0.1f);
+  }
+  const auto eight_bit = [](Image image) {
+    for (glm::vec3& p : image.rgb) p = glm::round(glm::clamp(p, 0.0f, 1.0f) * 255.0f) / 255.0f;
+    return image;
+  };
+  return {eight_bit(test), eight_bit(reference)};
+}
 
 TEST(Psnr, IdenticalImagesGiveInfinity) {
   const Image image = pattern_image(64, 48);
@@ -64,6 +81,17 @@ TEST(Ssim, MoreNoiseLowersSsim) {
   EXPECT_GT(mid, high);
 }
 
+TEST(Ssim, MatchesADoublePrecisionTranscription) {
+  // Expected values from numpy: Wang et al.'s SSIM with a full 11x11 window, edge padding and
+  // double precision. Float window sums differ by a few 1e-5.
+  const auto [test, reference] = cross_check_pair();
+  ScalarMap map;
+  EXPECT_NEAR(ssim(test, reference, nullptr, &map), 0.69295365, 1e-5);
+  EXPECT_NEAR(map.values[30 * 80 + 40], 0.48870886, 1e-4);
+  EXPECT_NEAR(map.values[10 * 80 + 10], 0.82046652, 1e-4);
+  EXPECT_NEAR(map.values[0], 0.84965609, 1e-4);
+}
+
 TEST(Ssim, BlurLowersSsim) {
   const Image reference = pattern_image(96, 64);
   const double blurred = ssim(box_blur(reference), reference);
@@ -94,6 +122,19 @@ TEST(Flip, IdenticalImagesGiveZero) {
 
 TEST(Flip, DefaultPixelsPerDegreeIsThePapers) {
   EXPECT_NEAR(FlipParams{}.pixels_per_degree, 67.0206, 1e-3);
+}
+
+TEST(Flip, MatchesTheReferenceImplementation) {
+  // Expected values from a direct numpy transcription of NVIDIA's reference flip.py (HPG 2020
+  // release: full 2D kernels, edge padding, double precision) run on this pair.
+  const auto [test, reference] = cross_check_pair();
+  const FlipResult result = flip(test, reference);
+  EXPECT_NEAR(result.mean, 0.1896695005, 1e-5);
+  const auto at = [&](int x, int y) { return result.map.values[y * 80 + x]; };
+  EXPECT_NEAR(at(40, 30), 0.9745243265, 1e-5);  // inside the red square
+  EXPECT_NEAR(at(10, 10), 0.1934600509, 1e-5);  // noise only
+  EXPECT_NEAR(at(29, 20), 0.4381095097, 1e-5);  // at the square's corner
+  EXPECT_NEAR(at(79, 59), 0.2234533640, 1e-5);  // image corner (edge padding)
 }
 
 TEST(Flip, BlackVersusWhiteIsNearOne) {
