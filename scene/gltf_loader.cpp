@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <set>
 
 #include "scene/bounds.h"
@@ -93,7 +94,7 @@ bool apply_file_camera(const tinygltf::Model& model, const std::vector<gltf::Pla
       return false;
     }
     const auto& p = c.perspective;
-    if (!(p.yfov > 0.0 && p.yfov < M_PI) || !(p.znear > 0.0) ||
+    if (!(p.yfov > 0.0 && p.yfov < std::numbers::pi) || !(p.znear > 0.0) ||
         (p.zfar != 0.0 && !(p.zfar > p.znear))) {
       throw SceneError(
           fmt::format("{}: cameras[{}].perspective: need 0 < yfov < pi, znear > 0, "

@@ -172,10 +172,13 @@ void convert_materials(const tinygltf::Model& model, const std::string& file, Sc
     m.metallic_factor = static_cast<float>(pbr.metallicFactor);
     m.roughness_factor = static_cast<float>(pbr.roughnessFactor);
     m.normal_scale = static_cast<float>(src.normalTexture.scale);
-    for (const auto* info : {&pbr.baseColorTexture, &pbr.metallicRoughnessTexture}) {
-      if (info->index >= 0 && info->texCoord != 0) {
+    for (const auto& [texture, tex_coord] :
+         {std::pair{pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord},
+          std::pair{pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord},
+          std::pair{src.normalTexture.index, src.normalTexture.texCoord}}) {
+      if (texture >= 0 && tex_coord != 0) {
         warn(fmt::format("{}: {}: texture uses TEXCOORD_{}; skinsim reads TEXCOORD_0 only", file,
-                         where, info->texCoord));
+                         where, tex_coord));
       }
     }
     m.base_color_texture =

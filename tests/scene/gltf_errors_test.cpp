@@ -293,3 +293,36 @@ TEST(GltfErrors, TextureIndexOutOfRange) {
 
 }  // namespace
 }  // namespace skinsim::scene
+
+namespace skinsim::scene {
+namespace {
+
+// Corrupts a valid .glb one byte at a time (deterministic positions and values): every
+// load either succeeds or throws SceneError; nothing else escapes and nothing crashes.
+TEST(GltfErrors, SingleByteCorruptionNeverCrashes) {
+  GltfFixture f("corruption");
+  f.add_quad_mesh(true, true);
+  f.json()["materials"] = {{{"name", "skin"}, {"normalTexture", {{"index", 0}}}}};
+  f.json()["meshes"][0]["primitives"][0]["material"] = 0;
+  const std::uint8_t png[] = {0x89, 'P', 'N', 'G', 0x0d, 0x0a, 0x1a, 0x0a};
+  f.json()["images"] = {{{"bufferView", f.add_view(png, sizeof(png))}, {"mimeType", "image/png"}}};
+  f.json()["textures"] = {{{"source", 0}}};
+  std::ifstream in(f.write_glb("valid"), std::ios::binary);
+  const std::string valid((std::istreambuf_iterator<char>(in)), {});
+  std::uint32_t state = 12345u;
+  for (int trial = 0; trial < 300; ++trial) {
+    state = state * 1664525u + 1013904223u;  // LCG: fixed sequence
+    std::string bytes = valid;
+    const std::size_t at = (state >> 8) % bytes.size();
+    bytes[at] = static_cast<char>(bytes[at] ^ (1 + (state >> 24) % 255));
+    const std::string path = f.write_raw("corrupt.glb", bytes);
+    try {
+      load_gltf(path, quiet());
+    } catch (const SceneError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind(path, 0), 0u) << e.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace skinsim::scene
