@@ -102,10 +102,11 @@ TEST(Ssim, BlurLowersSsim) {
 TEST(Ssim, MaskRestrictsTheStatistic) {
   const Image reference = pattern_image(96, 64);
   Image test = reference;
+  const Image noisy = add_noise(reference, 0.2f);
   Mask mask = Mask::filled(96, 64, 0);
   for (int y = 0; y < 64; ++y) {
     for (int x = 0; x < 96; ++x) {
-      if (x < 40) test.at(x, y) = add_noise(reference, 0.2f).at(x, y);
+      if (x < 40) test.at(x, y) = noisy.at(x, y);
       if (x >= 46) mask.values[y * 96 + x] = 1;  // beyond the 5-pixel window radius
     }
   }
@@ -201,6 +202,20 @@ TEST(Metrics, ResultsDoNotDependOnThreadCount) {
   EXPECT_EQ(one_thread.map.values, many.map.values);
   EXPECT_EQ(ssim_mean_one, ssim_mean_many);
   EXPECT_EQ(ssim_one.values, ssim_many.values);
+}
+
+TEST(Metrics, ImagesSmallerThanTheFiltersWork) {
+  for (auto [w, h] : {std::pair{1, 1}, std::pair{3, 2}, std::pair{2, 17}}) {
+    const Image reference = pattern_image(w, h);
+    const Image test = add_noise(reference, 0.3f);
+    EXPECT_TRUE(std::isfinite(psnr(test, reference)));
+    const double s = ssim(test, reference);
+    EXPECT_GT(s, -1.0);
+    EXPECT_LT(s, 1.0);
+    const double f = flip(test, reference).mean;
+    EXPECT_GT(f, 0.0);
+    EXPECT_LE(f, 1.0);
+  }
 }
 
 TEST(Metrics, BadInputNamesTheProblem) {
