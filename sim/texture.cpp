@@ -57,15 +57,6 @@ float round_to_half(float v) {
   return std::copysign(std::nearbyint(a / step) * step, v);
 }
 
-std::uint64_t twiddle(std::uint32_t x, std::uint32_t y) {
-  std::uint64_t r = 0;
-  for (int bit = 0; bit < 16; ++bit) {
-    r |= static_cast<std::uint64_t>((x >> bit) & 1u) << (2 * bit);
-    r |= static_cast<std::uint64_t>((y >> bit) & 1u) << (2 * bit + 1);
-  }
-  return r;
-}
-
 std::uint64_t next_pow2(std::uint64_t v) {
   std::uint64_t p = 1;
   while (p < v) p <<= 1;
@@ -149,18 +140,13 @@ Texture2D::Texture2D(std::string name, std::vector<MipLevel> levels, TexelFormat
 }
 
 void Texture2D::finish_layout() {
+  texel_bytes_ = bytes_per_texel(format_);
   level_offsets_.assign(1, 0);
   for (const MipLevel& l : levels_) {
     // Each level occupies the power-of-two square its twiddled addresses span.
     const std::uint64_t side = next_pow2(static_cast<std::uint64_t>(std::max(l.width, l.height)));
     level_offsets_.push_back(level_offsets_.back() + side * side * bytes_per_texel(format_));
   }
-}
-
-std::uint64_t Texture2D::texel_offset(int level, int x, int y) const {
-  return level_offsets_[level] +
-         twiddle(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y)) *
-             bytes_per_texel(format_);
 }
 
 TextureCube::TextureCube(std::string name, int size,

@@ -26,6 +26,20 @@ TexelFormat parse_format(const std::string& name);
 // RGBA16F: IEEE half, round to nearest even; RGBA32F: unchanged).
 glm::vec4 quantize(const glm::vec4& value, TexelFormat format);
 
+// Morton order: the bits of x and y interleaved (x in the even bits), PowerVR's
+// "twiddled" texture layout. Coordinates up to 16 bits.
+inline std::uint64_t twiddle(std::uint32_t x, std::uint32_t y) {
+  const auto spread = [](std::uint64_t v) {
+    v &= 0xFFFF;
+    v = (v | (v << 8)) & 0x00FF00FF;
+    v = (v | (v << 4)) & 0x0F0F0F0F;
+    v = (v | (v << 2)) & 0x33333333;
+    v = (v | (v << 1)) & 0x55555555;
+    return v;
+  };
+  return spread(x) | (spread(y) << 1);
+}
+
 struct MipLevel {
   int width = 0;
   int height = 0;
@@ -58,7 +72,10 @@ class Texture2D {
   int level_count() const { return static_cast<int>(levels_.size()); }
   const MipLevel& level(int i) const { return levels_[i]; }
   // Byte offset of a texel from the texture's base address (twiddled within each level).
-  std::uint64_t texel_offset(int level, int x, int y) const;
+  std::uint64_t texel_offset(int level, int x, int y) const {
+    return level_offsets_[level] +
+           twiddle(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y)) * texel_bytes_;
+  }
   std::uint64_t size_bytes() const { return level_offsets_.back(); }
 
  private:
@@ -69,6 +86,7 @@ class Texture2D {
   SamplerState sampler_;
   std::vector<MipLevel> levels_;
   std::vector<std::uint64_t> level_offsets_;  // level_count + 1 entries
+  std::uint64_t texel_bytes_ = 4;
 };
 
 // Cube map: six faces (+X, -X, +Y, -Y, +Z, -Z, OpenGL convention), each a Texture2D with

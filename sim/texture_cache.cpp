@@ -12,7 +12,11 @@ bool is_pow2(std::uint32_t v) { return v != 0 && (v & (v - 1)) == 0; }
 }  // namespace
 
 TextureCache::TextureCache(const TextureCacheConfig& config)
-    : line_bytes_(config.line_bytes), line_shift_(0), sets_(0), ways_(config.associativity) {
+    : line_bytes_(config.line_bytes),
+      line_shift_(0),
+      sets_(0),
+      set_mask_(0),
+      ways_(config.associativity) {
   if (!is_pow2(config.line_bytes) || config.associativity == 0 ||
       config.size_bytes < config.line_bytes * config.associativity ||
       config.size_bytes % (config.line_bytes * config.associativity) != 0) {
@@ -23,12 +27,13 @@ TextureCache::TextureCache(const TextureCacheConfig& config)
   }
   while ((1u << line_shift_) < line_bytes_) ++line_shift_;
   sets_ = config.size_bytes / (config.line_bytes * config.associativity);
+  set_mask_ = is_pow2(sets_) ? sets_ - 1 : 0;
   tags_.assign(static_cast<size_t>(sets_) * ways_, kEmpty);
 }
 
 bool TextureCache::access(std::uint64_t address) {
   const std::uint64_t line = address >> line_shift_;
-  const std::uint64_t set = line % sets_;
+  const std::uint64_t set = set_mask_ ? (line & set_mask_) : line % sets_;
   std::uint64_t* ways = &tags_[set * ways_];
   for (std::uint32_t i = 0; i < ways_; ++i) {
     if (ways[i] == line) {

@@ -29,6 +29,7 @@ class TextureCache {
   std::uint32_t line_bytes_;
   std::uint32_t line_shift_;
   std::uint32_t sets_;
+  std::uint64_t set_mask_;  // sets_ - 1 when sets_ is a power of two, else 0 (use modulo)
   std::uint32_t ways_;
   // Per set, `ways_` line tags ordered most recently used first; kEmpty marks a free way.
   std::vector<std::uint64_t> tags_;

@@ -9,7 +9,9 @@ namespace skinsim::sim {
 namespace {
 
 int wrap_coord(int i, int size, Wrap wrap) {
+  if (static_cast<unsigned>(i) < static_cast<unsigned>(size)) return i;  // the common case
   if (wrap == Wrap::kRepeat) {
+    if ((size & (size - 1)) == 0) return i & (size - 1);
     const int m = i % size;
     return m < 0 ? m + size : m;
   }
