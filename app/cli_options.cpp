@@ -1,5 +1,8 @@
 #include "app/cli_options.h"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <cstdlib>
 
 namespace skinsim::app {
@@ -53,6 +56,8 @@ void knob(CLI::App& cmd, pipeline::PipelineConfig& config, const std::string& fl
 }  // namespace
 
 void add_pipeline_options(CLI::App& cmd, pipeline::PipelineConfig& c) {
+  knob(cmd, c, "--technique", "technique",
+       "Skin technique: " + fmt::format("{}", fmt::join(pipeline::technique_names(), ", ")));
   knob(cmd, c, "--scale", "scale", "Integration-buffer size per axis as a fraction of the frame, in (0,1]");
   knob(cmd, c, "--lut", "lut", "BRDF LUT size WxH (N.H x N.V), powers of two");
   knob(cmd, c, "--lut-format", "lut_format", "BRDF LUT texel format: rgba8 or rgba16f");

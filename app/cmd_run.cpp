@@ -1,6 +1,7 @@
 // `skinsim run`: one frame of the skin pipeline on the emulated GPU, its images, counters
 // and modelled timing.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <filesystem>
 #include <iostream>
@@ -14,7 +15,9 @@
 #include "gpu_model/sensitivity.h"
 #include "gpu_model/timing_json.h"
 #include "gpu_model/timing_table.h"
-#include "pipeline/shaders/irradiance.h"
+#include "driver/frame_quality.h"
+#include "pipeline/brdf_lut_texture.h"
+#include "quality/json_value.h"
 #include "reports/atomic_file.h"
 
 namespace skinsim::app {
@@ -27,6 +30,7 @@ struct RunOptions {
   pipeline::PipelineConfig config;
   std::string out = "out";
   bool sensitivity = false;
+  bool reference = true;
 };
 
 int run(const RunOptions& o) {
@@ -45,16 +49,31 @@ int run(const RunOptions& o) {
 
   const std::filesystem::path out(o.out);
   std::filesystem::create_directories(out);
+  std::vector<std::string> written = {"frame.png"};
   driver::write_png(result.output.frame, out / "frame.png");
-  if (!result.output.lod) {
-    // Irradiance is stored / kIrradianceRange; scale it back so the PNG shows the light.
-    driver::write_png(result.output.irradiance, out / "irradiance.png", pipeline::shaders::kIrradianceRange);
-    driver::write_png(result.output.blurred, out / "blurred.png", pipeline::shaders::kIrradianceRange);
+  for (const pipeline::NamedTarget& t : result.output.intermediates) {
+    driver::write_png(t.target, out / (t.name + ".png"), t.display_scale);
+    written.push_back(t.name + ".png");
   }
   pipeline::BrdfLutTexture::bake(config).write_png((out / "brdf_lut.png").string());
+  written.push_back("brdf_lut.png");
 
   nlohmann::json json = driver::frame_result_json(result, o.scene.label());
   json["device"] = device.name;
+  if (o.reference) {
+    const pipeline::ReferenceFrame reference =
+        pipeline::render_reference(gpu_scene, config, o.device.threads);
+    const driver::ReferenceImages ref = driver::reference_images(reference);
+    quality::save_png(ref.image, out / "reference.png");
+    const driver::FrameQuality q = driver::evaluate_quality(result.output.frame, ref);
+    quality::save_png(q.error_map, out / "error_flip.png");
+    written.insert(written.end(), {"reference.png", "error_flip.png"});
+    nlohmann::json metrics = nlohmann::json::object();
+    for (const auto& [name, value] : q.metrics) metrics[name] = quality::metric_to_json(value);
+    json["quality"] = metrics;
+    fmt::print("quality vs reference: skin PSNR {:.2f} dB, SSIM {:.4f}, FLIP {:.4f}\n",
+               q.metrics.at("psnr_skin"), q.metrics.at("ssim_skin"), q.metrics.at("flip_skin"));
+  }
   if (o.sensitivity) {
     const auto recount = [&](const gpu_model::DeviceProfile& varied) {
       return driver::run_frame(gpu_scene, config, varied, o.device.threads).output.passes;
@@ -65,13 +84,14 @@ int run(const RunOptions& o) {
   }
   reports::write_file_atomically((out / "result.json").string(), json.dump(2) + "\n");
 
-  fmt::print("skinsim run: {} on {} ({}), {}x{}, buffer scale {}, LUT {}x{} {}{}\n",
-             o.scene.label(), device.name, device.gpu, config.width, config.height,
+  fmt::print("skinsim run: {} with {} on {} ({}), {}x{}, buffer scale {}, LUT {}x{} {}{}\n",
+             o.scene.label(), pipeline::technique_name(config.technique), device.name,
+             device.gpu, config.width, config.height,
              config.buffer_scale, config.lut_width, config.lut_height,
              sim::format_name(config.lut_format), result.output.lod ? ", LOD shader" : "");
   fmt::print("{}", gpu_model::format_frame_table(result.timing));
-  fmt::print("wrote {}/{{frame.png, irradiance.png, blurred.png, brdf_lut.png, result.json}}\n",
-             out.string());
+  written.push_back("result.json");
+  fmt::print("wrote {}/{{{}}}\n", out.string(), fmt::join(written, ", "));
   return 0;
 }
 
@@ -85,6 +105,8 @@ Command add_run_command(CLI::App& app) {
   add_scene_options(*cmd, options->scene);
   add_pipeline_options(*cmd, options->config);
   cmd->add_option("--out", options->out, "Output directory")->capture_default_str();
+  cmd->add_flag("!--no-reference", options->reference,
+                "Skip the reference frame and the quality metrics (faster)");
   cmd->add_flag("--sensitivity", options->sensitivity,
                 "Also report how frame time moves over each uncertain device figure's range");
   return [options] { return run(*options); };

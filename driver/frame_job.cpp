@@ -23,11 +23,10 @@ FrameResult run_frame(const pipeline::GpuScene& scene, pipeline::PipelineConfig 
       pipeline::render_size(config, static_cast<int>(device.display_width.value),
                             static_cast<int>(device.display_height.value));
   config.validate();
-  const pipeline::BrdfLutTexture lut = pipeline::BrdfLutTexture::bake(config);
   sim::Gpu gpu(gpu_config(device, threads));
   FrameResult r;
   r.config = config;
-  r.output = pipeline::render_skin_frame(scene, config, lut, gpu);
+  r.output = pipeline::render_frame(scene, config, gpu);
   r.timing = gpu_model::estimate_frame(r.output.passes, device);
   return r;
 }

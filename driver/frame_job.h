@@ -4,8 +4,8 @@
 
 #include "gpu_model/device_profile.h"
 #include "gpu_model/timing.h"
-#include "pipeline/brdf_lut_texture.h"
 #include "pipeline/config.h"
+#include "pipeline/frame.h"
 #include "pipeline/gpu_scene.h"
 #include "pipeline/skin_pipeline.h"
 
@@ -20,8 +20,8 @@ struct FrameResult {
 // The emulator configuration a device profile implies, with `threads` host threads.
 sim::GpuConfig gpu_config(const gpu_model::DeviceProfile& device, int threads);
 
-// Resolves the config's resolution (default: the device display), bakes the LUT, renders
-// and times the frame.
+// Resolves the config's resolution (default: the device display), renders and times the
+// frame.
 FrameResult run_frame(const pipeline::GpuScene& scene, pipeline::PipelineConfig config,
                       const gpu_model::DeviceProfile& device, int threads);
 

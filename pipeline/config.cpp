@@ -107,7 +107,9 @@ SpecularLobe parse_lobe(const std::string& key, const std::string& text) {
 }  // namespace
 
 void set_config_field(PipelineConfig& c, const std::string& key, const std::string& value) {
-  if (key == "scale") {
+  if (key == "technique") {
+    c.technique = parse_technique(value);
+  } else if (key == "scale") {
     c.buffer_scale = parse_float(key, value);
   } else if (key == "lut") {
     std::tie(c.lut_width, c.lut_height) = parse_size(value, key);
@@ -144,12 +146,13 @@ void set_config_field(PipelineConfig& c, const std::string& key, const std::stri
 
 const std::vector<std::string>& config_field_names() {
   static const std::vector<std::string> names = {
-      "scale", "lut", "lut_format", "blur_iterations", "blur_width_mm", "normal_offset_mm",
+      "technique", "scale", "lut", "lut_format", "blur_iterations", "blur_width_mm", "normal_offset_mm",
       "gamma", "lobe1", "lobe2", "specular_intensity", "resolution", "lod_distance_m"};
   return names;
 }
 
 std::string get_config_field(const PipelineConfig& c, const std::string& key) {
+  if (key == "technique") return technique_name(c.technique);
   if (key == "scale") return fmt::format("{}", c.buffer_scale);
   if (key == "lut") return fmt::format("{}x{}", c.lut_width, c.lut_height);
   if (key == "lut_format") return sim::format_name(c.lut_format);

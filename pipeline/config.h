@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "pipeline/technique.h"
 #include "sim/texture.h"
 
 namespace skinsim::pipeline {
@@ -24,6 +25,7 @@ struct SpecularLobe {
 };
 
 struct PipelineConfig {
+  Technique technique = Technique::kMobile;
   // Integration (irradiance) buffer size per axis, as a fraction of the render resolution.
   float buffer_scale = 0.5f;
   int lut_width = 32;    // BRDF LUT: N.H axis
@@ -49,7 +51,7 @@ struct PipelineConfig {
 };
 
 // Sets one knob by name from text, the single entry point for the CLI, sweep files and
-// budget files. Keys: scale, lut, lut_format, blur_iterations, blur_width_mm,
+// budget files. Keys: technique, scale, lut, lut_format, blur_iterations, blur_width_mm,
 // normal_offset_mm, gamma, lobe1, lobe2 ("roughness,weight"), specular_intensity,
 // resolution ("WxH"), lod_distance_m. Throws ConfigError naming the key.
 void set_config_field(PipelineConfig& config, const std::string& key, const std::string& value);

@@ -193,15 +193,14 @@ std::pair<int, int> render_size(const PipelineConfig& config, int default_width,
   return {default_width, default_height};
 }
 
-FrameOutput render_skin_frame(const GpuScene& gs, const PipelineConfig& cfg,
-                              const BrdfLutTexture& lut, sim::Gpu& gpu) {
-  cfg.validate();
-  if (cfg.width <= 0) throw ConfigError("render resolution must be resolved before rendering");
+FrameOutput render_mobile_frame(const GpuScene& gs, const PipelineConfig& cfg, sim::Gpu& gpu,
+                                MobileMode mode) {
+  const BrdfLutTexture lut = BrdfLutTexture::bake(cfg);
   FrameOutput out;
   out.view = make_view(gs, cfg.width, cfg.height);
   out.frame = sim::RenderTarget("frame", cfg.width, cfg.height, sim::TexelFormat::kRGBA8);
   const float units_per_m = gs.scene().units_per_mm * 1000.0f;
-  out.lod = !gs.has_skin() || !out.view.skin_visible ||
+  out.lod = mode == MobileMode::kForceLod || !gs.has_skin() || !out.view.skin_visible ||
             out.view.skin_distance > cfg.lod_distance_m * units_per_m;
 
   if (out.lod) {
@@ -211,8 +210,8 @@ FrameOutput render_skin_frame(const GpuScene& gs, const PipelineConfig& cfg,
 
   const int bw = std::max(1, static_cast<int>(std::lround(cfg.width * cfg.buffer_scale)));
   const int bh = std::max(1, static_cast<int>(std::lround(cfg.height * cfg.buffer_scale)));
-  out.irradiance = sim::RenderTarget("irradiance", bw, bh, sim::TexelFormat::kRGBA8);
-  out.passes.push_back(irradiance_pass(gs, out.view, cfg, out.irradiance, gpu));
+  sim::RenderTarget irradiance("irradiance", bw, bh, sim::TexelFormat::kRGBA8);
+  out.passes.push_back(irradiance_pass(gs, out.view, cfg, irradiance, gpu));
 
   // Blur width: the profile's wide-layer sigma in mm, projected at the skin's distance, in
   // buffer texels; k iterations of sigma/sqrt(k) compose to the same total variance.
@@ -224,19 +223,23 @@ FrameOutput render_skin_frame(const GpuScene& gs, const PipelineConfig& cfg,
       scale_rect(out.view.skin_rect, static_cast<float>(bw) / cfg.width,
                  static_cast<float>(bh) / cfg.height, bw, bh);
   sim::RenderTarget ping("blur_h", bw, bh, sim::TexelFormat::kRGBA8);
-  out.blurred = sim::RenderTarget("blurred", bw, bh, sim::TexelFormat::kRGBA8);
-  const sim::RenderTarget* source = &out.irradiance;
+  sim::RenderTarget blurred("blurred", bw, bh, sim::TexelFormat::kRGBA8);
+  const sim::RenderTarget* source = &irradiance;
   for (int i = 0; i < cfg.blur_iterations; ++i) {
     const std::string suffix = i == 0 ? "" : std::to_string(i + 1);  // blur_h, blur_h2, ...
     out.passes.push_back(
         blur_pass("blur_h" + suffix, *source, ping, rect, {1, 0}, out.blur_sigma_pixels, gpu));
     out.passes.push_back(
-        blur_pass("blur_v" + suffix, ping, out.blurred, rect, {0, 1}, out.blur_sigma_pixels, gpu));
-    source = &out.blurred;
+        blur_pass("blur_v" + suffix, ping, blurred, rect, {0, 1}, out.blur_sigma_pixels, gpu));
+    source = &blurred;
   }
-  const sim::Texture2D blurred =
-      sim::as_texture(out.blurred, {sim::Filter::kBilinear, sim::Wrap::kClamp});
-  out.passes.push_back(framebuffer_pass(gs, out.view, cfg, lut, &blurred, false, out.frame, gpu));
+  const sim::Texture2D blurred_texture =
+      sim::as_texture(blurred, {sim::Filter::kBilinear, sim::Wrap::kClamp});
+  out.passes.push_back(
+      framebuffer_pass(gs, out.view, cfg, lut, &blurred_texture, false, out.frame, gpu));
+  // Stored irradiance is divided by kIrradianceRange: scale back to show the light.
+  out.intermediates.push_back({"irradiance", std::move(irradiance), shaders::kIrradianceRange});
+  out.intermediates.push_back({"blurred", std::move(blurred), shaders::kIrradianceRange});
   return out;
 }
 

@@ -1,0 +1,30 @@
+// Image quality of a frame against the reference: PSNR, SSIM and FLIP over the skin pixels
+// (the reference's skin mask) and over the whole frame, plus a false-coloured FLIP map.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "pipeline/reference/reference.h"
+#include "quality/image.h"
+#include "sim/render_target.h"
+
+namespace skinsim::driver {
+
+struct FrameQuality {
+  // Keys: psnr_skin, ssim_skin, flip_skin, psnr_frame, ssim_frame, flip_frame.
+  std::map<std::string, double> metrics;
+  quality::Image error_map;  // FLIP error, magma colour map
+};
+
+// The reference as an 8-bit display image and its skin mask, computed once and shared by
+// every configuration compared against it.
+struct ReferenceImages {
+  quality::Image image;
+  quality::Mask skin;
+};
+ReferenceImages reference_images(const pipeline::ReferenceFrame& reference);
+
+FrameQuality evaluate_quality(const sim::RenderTarget& frame, const ReferenceImages& reference);
+
+}  // namespace skinsim::driver

@@ -1,0 +1,39 @@
+#include "pipeline/technique.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "pipeline/config.h"
+
+namespace skinsim::pipeline {
+
+const char* technique_name(Technique t) {
+  switch (t) {
+    case Technique::kMobile:
+      return "mobile";
+    case Technique::kLod:
+      return "lod";
+  }
+  return "?";
+}
+
+const std::vector<Technique>& all_techniques() {
+  static const std::vector<Technique> all = {Technique::kMobile, Technique::kLod};
+  return all;
+}
+
+std::vector<std::string> technique_names() {
+  std::vector<std::string> names;
+  for (const Technique t : all_techniques()) names.emplace_back(technique_name(t));
+  return names;
+}
+
+Technique parse_technique(const std::string& name) {
+  for (const Technique t : all_techniques()) {
+    if (name == technique_name(t)) return t;
+  }
+  throw ConfigError(fmt::format("technique: unknown '{}' (known: {})", name,
+                                fmt::join(technique_names(), ", ")));
+}
+
+}  // namespace skinsim::pipeline

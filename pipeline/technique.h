@@ -1,0 +1,21 @@
+// The skin-rendering techniques skinsim compares. Each is a frame of render passes on the
+// emulated GPU (frame.h dispatches); all are judged against the same reference.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace skinsim::pipeline {
+
+enum class Technique {
+  kMobile,  // GPU Pro 5 screen-space irradiance pipeline (the primary one)
+  kLod,     // its single-pass distant-skin shader, at any distance
+};
+
+const char* technique_name(Technique technique);
+// Parses a name from technique_names(); throws ConfigError listing the known ones.
+Technique parse_technique(const std::string& name);
+const std::vector<Technique>& all_techniques();
+std::vector<std::string> technique_names();
+
+}  // namespace skinsim::pipeline
