@@ -1,0 +1,20 @@
+// Pass 2 of the GPU Pro 5 pipeline: one axis of the alpha-masked separable Gaussian over a
+// rectangle of the integration buffer (shaders/blur.h), as one render pass.
+#pragma once
+
+#include <glm/glm.hpp>
+#include <string>
+
+#include "sim/counters.h"
+#include "sim/gpu.h"
+#include "sim/render_target.h"
+
+namespace skinsim::pipeline {
+
+// Blurs `source` along `axis` ((1,0) or (0,1)) with standard deviation `sigma_texels` into
+// `target`, rendering only the tiles of `rect` (the skin's bounding rectangle).
+sim::PassCounters blur_pass(const std::string& name, const sim::RenderTarget& source,
+                            sim::RenderTarget& target, const sim::PixelRect& rect,
+                            glm::vec2 axis, float sigma_texels, sim::Gpu& gpu);
+
+}  // namespace skinsim::pipeline
