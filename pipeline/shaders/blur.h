@@ -1,6 +1,7 @@
 // Pass 2 of the GPU Pro 5 pipeline: one axis of a separable Gaussian over the integration
-// buffer, each tap weighted by the buffer's alpha (skin coverage) so light does not leak
-// between skin and background. Tap coordinates are computed in the vertex shader and
+// buffer, normalised by the taps' alpha (skin coverage) so light does not leak between skin
+// and background. The buffer is premultiplied (rgb = light x coverage; the background is
+// cleared to 0), which keeps the normalisation exact under bilinear filtering at the edge. Tap coordinates are computed in the vertex shader and
 // interpolated, so every tap is an independent read (PowerVR performance guidelines).
 #pragma once
 
@@ -50,11 +51,11 @@ struct BlurFS {
     for (int i = 0; i < kBlurTaps; ++i) {
       const vec4 t = tex.sample(0, in.texcoord(2 * i));
       if (i == kBlurTaps / 2) centre = t;
-      const f32 w = sl::w(t) * u.weights[i];  // mask: background taps weigh nothing
-      sum = sum + sl::xyz(t) * w;
-      weight_sum = weight_sum + w;
+      sum = sum + sl::xyz(t) * u.weights[i];                  // premultiplied light
+      weight_sum = weight_sum + sl::w(t) * u.weights[i];       // skin coverage of the taps
     }
-    const vec3 blurred = sum / sl::max(weight_sum, 1e-4f);
+    // Normalised light where there is skin, premultiplied again by the centre's coverage.
+    const vec3 blurred = sum * (sl::w(centre) / sl::max(weight_sum, 1e-4f));
     return vec4(blurred, sl::w(centre));
   }
 };

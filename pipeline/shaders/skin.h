@@ -105,9 +105,11 @@ struct SkinFS {
     const SkinSurface<L> s = skin_surface<L, kGamma>(in, tex, u, base, normal_map);
 
     const vec3 sharp = vec3(u.light_radiance) * sl::saturate(s.n_dot_l) + vec3(u.ambient);
-    const vec3 blurred = sl::xyz(buffer) * kIrradianceRange;
-    // Where the buffer has no skin (alpha 0 at silhouettes) fall back to the sharp light.
-    const vec3 diffuse_light = sl::mix(sharp, blurred, vec3(u.layer_mix) * sl::w(buffer));
+    // The buffer holds blurred light premultiplied by coverage a; where a < 1 (silhouettes)
+    // the sharp light fills in: mix(sharp, blurred / a, layer_mix * a).
+    const vec3 wide = vec3(u.layer_mix);
+    const vec3 diffuse_light = sharp * (1.0f - wide * sl::w(buffer)) +
+                               sl::xyz(buffer) * (wide * kIrradianceRange);
     const vec3 color = s.albedo * diffuse_light * bake::decode_diffuse_energy(sl::w(s.lut)) +
                        skin_reflection<L>(s, env, u);
     return vec4(encode_gamma<kGamma>(color), 1.0f);

@@ -1,0 +1,106 @@
+// The mobile pipeline's passes on the emulated GPU: structure, op profiles, scaling.
+#include <gtest/gtest.h>
+
+#include "pipeline/frame.h"
+#include "pipeline/shader_catalog.h"
+#include "tests/pipeline/mobile/test_scenes.h"
+
+namespace skinsim::pipeline {
+namespace {
+
+const sim::PassCounters& pass(const FrameOutput& f, const std::string& name) {
+  for (const sim::PassCounters& p : f.passes) {
+    if (p.name == name) return p;
+  }
+  throw std::runtime_error("no pass " + name);
+}
+
+FrameOutput render(const GpuScene& gs, float scale, int blur_iterations = 1) {
+  PipelineConfig c;
+  c.width = 512;
+  c.height = 384;
+  c.buffer_scale = scale;
+  c.blur_iterations = blur_iterations;
+  sim::Gpu gpu(sim::GpuConfig{});
+  return render_frame(gs, c, gpu);
+}
+
+TEST(MobilePipeline, SkinShaderReadsFourIndependentAndOneDependentTexture) {
+  bool found = false;
+  for (const sim::NamedProfile& s : shader_catalog()) {
+    if (s.name != "skin_fs") continue;
+    found = true;
+    EXPECT_EQ(s.profile.texture_reads_independent, 4u);
+    EXPECT_EQ(s.profile.texture_reads_dependent, 1u);
+    EXPECT_GT(s.profile.alu_ops(), 20u);
+  }
+  EXPECT_TRUE(found);
+}
+
+TEST(MobilePipeline, PassesInOrderWithTheirTargets) {
+  const scene::Scene s = testing::small_head();
+  const GpuScene gs(s);
+  const FrameOutput f = render(gs, 0.5f, 2);
+  std::vector<std::string> names;
+  for (const auto& p : f.passes) names.push_back(p.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"irradiance", "blur_h", "blur_v", "blur_h2",
+                                             "blur_v2", "skin"}));
+  EXPECT_EQ(pass(f, "irradiance").width, 256);
+  EXPECT_EQ(pass(f, "skin").width, 512);
+  EXPECT_FALSE(f.lod);
+  // Eyes are not in the irradiance buffer: only skin draws.
+  for (const auto& d : pass(f, "irradiance").draws) EXPECT_EQ(d.fragment_program, "skin_irradiance_fs");
+  // The blur touches only the skin's bounding rectangle, not every tile of the buffer.
+  EXPECT_LE(pass(f, "blur_h").tiles_rendered, static_cast<std::uint64_t>(8 * 6));
+  ASSERT_EQ(f.intermediates.size(), 2u);
+}
+
+TEST(MobilePipeline, BufferScaleScalesIrradianceAndBlurWorkBySquare) {
+  const scene::Scene s = testing::small_head();
+  const GpuScene gs(s);
+  const FrameOutput full = render(gs, 1.0f), half = render(gs, 0.5f);
+  const double irr_ratio = static_cast<double>(pass(half, "irradiance").fragments_shaded) /
+                           pass(full, "irradiance").fragments_shaded;
+  EXPECT_NEAR(irr_ratio, 0.25, 0.02);
+  const double blur_ratio = static_cast<double>(pass(half, "blur_h").fragments_shaded) /
+                            pass(full, "blur_h").fragments_shaded;
+  EXPECT_NEAR(blur_ratio, 0.25, 0.03);
+  // The final pass does not depend on the buffer size.
+  EXPECT_EQ(pass(half, "skin").fragments_shaded, pass(full, "skin").fragments_shaded);
+}
+
+TEST(MobilePipeline, LodTechniqueIsOneSkinPass) {
+  const scene::Scene s = testing::small_head();
+  const GpuScene gs(s);
+  PipelineConfig c;
+  c.width = 256;
+  c.height = 192;
+  c.technique = Technique::kLod;
+  sim::Gpu gpu(sim::GpuConfig{});
+  const FrameOutput f = render_frame(gs, c, gpu);
+  ASSERT_EQ(f.passes.size(), 1u);
+  EXPECT_EQ(f.passes[0].name, "skin");
+  EXPECT_TRUE(f.lod);
+}
+
+TEST(MobilePipeline, IdenticalForAnyThreadCount) {
+  const scene::Scene s = testing::small_head();
+  const GpuScene gs(s);
+  PipelineConfig c;
+  c.width = 320;
+  c.height = 240;
+  sim::GpuConfig one, two;
+  one.threads = 1;
+  two.threads = 2;
+  sim::Gpu g1(one), g2(two);
+  const FrameOutput a = render_frame(gs, c, g1), b = render_frame(gs, c, g2);
+  EXPECT_EQ(a.frame.pixels, b.frame.pixels);
+  ASSERT_EQ(a.passes.size(), b.passes.size());
+  for (size_t i = 0; i < a.passes.size(); ++i) {
+    EXPECT_EQ(a.passes[i].fragments_shaded, b.passes[i].fragments_shaded);
+    EXPECT_EQ(a.passes[i].texture.cache_misses, b.passes[i].texture.cache_misses);
+  }
+}
+
+}  // namespace
+}  // namespace skinsim::pipeline
