@@ -28,16 +28,17 @@ glm::vec4 quantize(const glm::vec4& value, TexelFormat format);
 
 // Morton order: the bits of x and y interleaved (x in the even bits), PowerVR's
 // "twiddled" texture layout. Coordinates up to 16 bits.
+// Spreads the low 16 bits of v to the even bit positions.
+inline std::uint64_t morton_spread(std::uint32_t x) {
+  std::uint64_t v = x & 0xFFFFu;
+  v = (v | (v << 8)) & 0x00FF00FF;
+  v = (v | (v << 4)) & 0x0F0F0F0F;
+  v = (v | (v << 2)) & 0x33333333;
+  v = (v | (v << 1)) & 0x55555555;
+  return v;
+}
 inline std::uint64_t twiddle(std::uint32_t x, std::uint32_t y) {
-  const auto spread = [](std::uint64_t v) {
-    v &= 0xFFFF;
-    v = (v | (v << 8)) & 0x00FF00FF;
-    v = (v | (v << 4)) & 0x0F0F0F0F;
-    v = (v | (v << 2)) & 0x33333333;
-    v = (v | (v << 1)) & 0x55555555;
-    return v;
-  };
-  return spread(x) | (spread(y) << 1);
+  return morton_spread(x) | (morton_spread(y) << 1);
 }
 
 struct MipLevel {
@@ -76,6 +77,8 @@ class Texture2D {
     return level_offsets_[level] +
            twiddle(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y)) * texel_bytes_;
   }
+  std::uint64_t level_offset(int level) const { return level_offsets_[level]; }
+  std::uint64_t texel_bytes() const { return texel_bytes_; }
   std::uint64_t size_bytes() const { return level_offsets_.back(); }
 
  private:

@@ -40,11 +40,10 @@ const TextureCube& ExecTexUnit::cube(int binding) const {
 
 void ExecTexUnit::touch(std::uint64_t address) {
   ++counters_->texels_touched;
-  const std::uint64_t line = cache_->line_of(address);
-  for (int i = 0; i < sample_line_count_; ++i) {
-    if (sample_lines_[i] == line) return;
-  }
-  sample_lines_[sample_line_count_++] = line;
+  access_line(address);
+}
+
+void ExecTexUnit::access_line(std::uint64_t address) {
   ++counters_->cache_line_accesses;
   if (!cache_->access(address)) {
     ++counters_->cache_misses;
@@ -64,18 +63,36 @@ glm::vec4 ExecTexUnit::bilinear(const Texture2D& tex, std::uint64_t base, int le
   const int x1 = wrap_coord(static_cast<int>(flx) + 1, l.width, wrap);
   const int y0 = wrap_coord(static_cast<int>(fly), l.height, wrap);
   const int y1 = wrap_coord(static_cast<int>(fly) + 1, l.height, wrap);
-  touch(base + tex.texel_offset(level, x0, y0));
-  touch(base + tex.texel_offset(level, x1, y0));
-  touch(base + tex.texel_offset(level, x0, y1));
-  touch(base + tex.texel_offset(level, x1, y1));
-  const glm::vec4 top = glm::mix(l.at(x0, y0), l.at(x1, y0), ax);
-  const glm::vec4 bottom = glm::mix(l.at(x0, y1), l.at(x1, y1), ax);
+
+  // The 2x2 footprint's texel addresses in the twiddled layout, and the distinct cache lines
+  // among them (usually one: a 64-byte line holds a 4x4 RGBA8 block).
+  const std::uint64_t level_base = base + tex.level_offset(level);
+  const std::uint64_t bpp = tex.texel_bytes();
+  const std::uint64_t sx0 = morton_spread(x0), sx1 = morton_spread(x1);
+  const std::uint64_t sy0 = morton_spread(y0) << 1, sy1 = morton_spread(y1) << 1;
+  const std::uint64_t addresses[4] = {level_base + (sx0 | sy0) * bpp, level_base + (sx1 | sy0) * bpp,
+                                      level_base + (sx0 | sy1) * bpp, level_base + (sx1 | sy1) * bpp};
+  counters_->texels_touched += 4;
+  std::uint64_t seen[4];
+  int seen_count = 0;
+  for (const std::uint64_t address : addresses) {
+    const std::uint64_t line = cache_->line_of(address);
+    bool repeat = false;
+    for (int i = 0; i < seen_count; ++i) repeat = repeat || seen[i] == line;
+    if (repeat) continue;
+    seen[seen_count++] = line;
+    access_line(address);
+  }
+
+  const glm::vec4* row0 = &l.texels[static_cast<size_t>(y0) * l.width];
+  const glm::vec4* row1 = &l.texels[static_cast<size_t>(y1) * l.width];
+  const glm::vec4 top = glm::mix(row0[x0], row0[x1], ax);
+  const glm::vec4 bottom = glm::mix(row1[x0], row1[x1], ax);
   return glm::mix(top, bottom, ay);
 }
 
 glm::vec4 ExecTexUnit::filtered(const Texture2D& tex, std::uint64_t base, glm::vec2 uv,
                                 float lod, bool dependent) {
-  sample_line_count_ = 0;
   const Filter filter = tex.sampler().filter;
   ++counters_->samples_by_filter[static_cast<int>(filter)];
   if (dependent) ++counters_->samples_dependent;

@@ -49,16 +49,14 @@ class ExecTexUnit {
   glm::vec4 filtered(const Texture2D& tex, std::uint64_t base, glm::vec2 uv, float lod,
                      bool dependent);
   glm::vec4 bilinear(const Texture2D& tex, std::uint64_t base, int level, glm::vec2 uv);
-  void touch(std::uint64_t address);
+  void touch(std::uint64_t address);  // one texel of a nearest sample
+  void access_line(std::uint64_t address);  // one distinct cache line of a sample
   const Texture2D& texture(int binding) const;
   const TextureCube& cube(int binding) const;
 
   TextureCache* cache_;
   TextureCounters* counters_;
   const TextureBindings* bindings_ = nullptr;
-  // Cache lines touched by the current sample, to count each line once per sample.
-  std::array<std::uint64_t, 8> sample_lines_{};
-  int sample_line_count_ = 0;
 };
 
 // Each binding slot has its own region of the emulated address space, so texture
