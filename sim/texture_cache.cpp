@@ -31,22 +31,6 @@ TextureCache::TextureCache(const TextureCacheConfig& config)
   tags_.assign(static_cast<size_t>(sets_) * ways_, kEmpty);
 }
 
-bool TextureCache::access(std::uint64_t address) {
-  const std::uint64_t line = address >> line_shift_;
-  const std::uint64_t set = set_mask_ ? (line & set_mask_) : line % sets_;
-  std::uint64_t* ways = &tags_[set * ways_];
-  for (std::uint32_t i = 0; i < ways_; ++i) {
-    if (ways[i] == line) {
-      for (std::uint32_t j = i; j > 0; --j) ways[j] = ways[j - 1];  // move to front
-      ways[0] = line;
-      return true;
-    }
-  }
-  for (std::uint32_t j = ways_ - 1; j > 0; --j) ways[j] = ways[j - 1];
-  ways[0] = line;
-  return false;
-}
-
 void TextureCache::clear() { std::fill(tags_.begin(), tags_.end(), kEmpty); }
 
 }  // namespace skinsim::sim

@@ -35,4 +35,20 @@ class TextureCache {
   std::vector<std::uint64_t> tags_;
 };
 
+inline bool TextureCache::access(std::uint64_t address) {
+  const std::uint64_t line = address >> line_shift_;
+  const std::uint64_t set = set_mask_ ? (line & set_mask_) : line % sets_;
+  std::uint64_t* ways = &tags_[set * ways_];
+  for (std::uint32_t i = 0; i < ways_; ++i) {
+    if (ways[i] == line) {
+      for (std::uint32_t j = i; j > 0; --j) ways[j] = ways[j - 1];  // move to front
+      ways[0] = line;
+      return true;
+    }
+  }
+  for (std::uint32_t j = ways_ - 1; j > 0; --j) ways[j] = ways[j - 1];
+  ways[0] = line;
+  return false;
+}
+
 }  // namespace skinsim::sim
