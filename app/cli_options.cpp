@@ -72,6 +72,18 @@ void add_pipeline_options(CLI::App& cmd, pipeline::PipelineConfig& c) {
   knob(cmd, c, "--resolution", "resolution", "Render resolution WxH (default: the device display)");
   knob(cmd, c, "--lod-distance", "lod_distance_m",
        "Camera distance in metres beyond which the single-pass LOD shader runs");
+  knob(cmd, c, "--specular", "specular",
+       "Specular model of the comparison techniques: ks_lut, ks, ggx or dual_ggx");
+  knob(cmd, c, "--preintegrated-lut", "preintegrated_lut",
+       "Pre-integrated diffusion LUT size WxH (N.L x curvature), powers of two");
+  knob(cmd, c, "--curvature", "curvature",
+       "Pre-integrated curvature source: 'vertex' (baked, smoothed) or 'derivatives'");
+  knob(cmd, c, "--wrap", "wrap", "Light-wrap amount w in [0,1] (wrap technique)");
+  knob(cmd, c, "--burley-samples", "burley_samples", "Burley diffusion taps, 4..64");
+  knob(cmd, c, "--burley-distance-mm", "burley_distance_mm",
+       "Burley scattering distance 'r,g,b' in mm (default: fitted to the six-Gaussian profile)");
+  knob(cmd, c, "--texture-space-size", "texture_space_size",
+       "Texture-space diffusion buffer size per axis, power of two in [64, 4096]");
 }
 
 }  // namespace skinsim::app

@@ -47,6 +47,28 @@ void PipelineConfig::validate() const {
           fmt::format("resolution must be within 16..8192 per axis, got {}x{}", width, height));
   require(std::isfinite(lod_distance_m) && lod_distance_m > 0.0f,
           fmt::format("lod_distance_m must be > 0, got {}", lod_distance_m));
+  require(power_of_two(preintegrated_lut_width) && preintegrated_lut_width >= 4 &&
+              preintegrated_lut_width <= 1024 && power_of_two(preintegrated_lut_height) &&
+              preintegrated_lut_height >= 4 && preintegrated_lut_height <= 1024,
+          fmt::format("preintegrated_lut must be powers of two in [4, 1024] per axis, got {}x{}",
+                      preintegrated_lut_width, preintegrated_lut_height));
+  require(std::isfinite(wrap) && wrap >= 0.0f && wrap <= 1.0f,
+          fmt::format("wrap must be in [0, 1], got {}", wrap));
+  require(burley_samples >= 4 && burley_samples <= kMaxBurleySamples,
+          fmt::format("burley_samples must be in [4, {}], got {}", kMaxBurleySamples,
+                      burley_samples));
+  if (burley_distance_mm) {
+    const glm::vec3 d = *burley_distance_mm;
+    for (int c = 0; c < 3; ++c) {
+      require(std::isfinite(d[c]) && d[c] >= 0.01f && d[c] <= 20.0f,
+              fmt::format("burley_distance_mm must be in [0.01, 20] mm per channel, got {},{},{}",
+                          d.r, d.g, d.b));
+    }
+  }
+  require(power_of_two(texture_space_size) && texture_space_size >= 64 &&
+              texture_space_size <= 4096,
+          fmt::format("texture_space_size must be a power of two in [64, 4096], got {}",
+                      texture_space_size));
 }
 
 std::pair<int, int> parse_size(const std::string& text, const std::string& what) {
@@ -96,6 +118,16 @@ int parse_int(const std::string& key, const std::string& text) {
   }
 }
 
+glm::vec3 parse_rgb(const std::string& key, const std::string& text) {
+  const auto c1 = text.find(',');
+  const auto c2 = c1 == std::string::npos ? c1 : text.find(',', c1 + 1);
+  if (c2 == std::string::npos) {
+    throw ConfigError(fmt::format("{}: expected 'r,g,b', got '{}'", key, text));
+  }
+  return {parse_float(key, text.substr(0, c1)), parse_float(key, text.substr(c1 + 1, c2 - c1 - 1)),
+          parse_float(key, text.substr(c2 + 1))};
+}
+
 SpecularLobe parse_lobe(const std::string& key, const std::string& text) {
   const auto comma = text.find(',');
   if (comma == std::string::npos) {
@@ -122,7 +154,7 @@ void set_config_field(PipelineConfig& c, const std::string& key, const std::stri
   } else if (key == "blur_iterations") {
     c.blur_iterations = parse_int(key, value);
   } else if (key == "blur_width_mm") {
-    c.blur_width_mm = parse_float(key, value);
+    c.blur_width_mm = value == "auto" ? std::nullopt : std::optional(parse_float(key, value));
   } else if (key == "normal_offset_mm") {
     c.normal_offset_mm = parse_float(key, value);
   } else if (key == "gamma") {
@@ -138,6 +170,24 @@ void set_config_field(PipelineConfig& c, const std::string& key, const std::stri
         value == "display" ? std::pair{0, 0} : parse_size(value, key);
   } else if (key == "lod_distance_m") {
     c.lod_distance_m = parse_float(key, value);
+  } else if (key == "specular") {
+    c.specular = parse_specular(value);
+  } else if (key == "preintegrated_lut") {
+    std::tie(c.preintegrated_lut_width, c.preintegrated_lut_height) = parse_size(value, key);
+  } else if (key == "curvature") {
+    c.curvature = parse_curvature(value);
+  } else if (key == "wrap") {
+    c.wrap = parse_float(key, value);
+  } else if (key == "burley_samples") {
+    c.burley_samples = parse_int(key, value);
+  } else if (key == "burley_distance_mm") {
+    if (value == "auto") {
+      c.burley_distance_mm.reset();
+    } else {
+      c.burley_distance_mm = parse_rgb(key, value);
+    }
+  } else if (key == "texture_space_size") {
+    c.texture_space_size = parse_int(key, value);
   } else {
     throw ConfigError(fmt::format("unknown pipeline setting '{}' (known: {})", key,
                                   fmt::join(config_field_names(), ", ")));
@@ -147,7 +197,9 @@ void set_config_field(PipelineConfig& c, const std::string& key, const std::stri
 const std::vector<std::string>& config_field_names() {
   static const std::vector<std::string> names = {
       "technique", "scale", "lut", "lut_format", "blur_iterations", "blur_width_mm", "normal_offset_mm",
-      "gamma", "lobe1", "lobe2", "specular_intensity", "resolution", "lod_distance_m"};
+      "gamma", "lobe1", "lobe2", "specular_intensity", "resolution", "lod_distance_m", "specular",
+      "preintegrated_lut", "curvature", "wrap", "burley_samples", "burley_distance_mm",
+      "texture_space_size"};
   return names;
 }
 
@@ -167,9 +219,54 @@ std::string get_config_field(const PipelineConfig& c, const std::string& key) {
     return c.width == 0 ? "display" : fmt::format("{}x{}", c.width, c.height);
   }
   if (key == "lod_distance_m") return fmt::format("{}", c.lod_distance_m);
+  if (key == "specular") return specular_name(c.specular);
+  if (key == "preintegrated_lut") {
+    return fmt::format("{}x{}", c.preintegrated_lut_width, c.preintegrated_lut_height);
+  }
+  if (key == "curvature") return curvature_name(c.curvature);
+  if (key == "wrap") return fmt::format("{}", c.wrap);
+  if (key == "burley_samples") return std::to_string(c.burley_samples);
+  if (key == "burley_distance_mm") {
+    if (!c.burley_distance_mm) return "auto";
+    const glm::vec3 d = *c.burley_distance_mm;
+    return fmt::format("{},{},{}", d.r, d.g, d.b);
+  }
+  if (key == "texture_space_size") return std::to_string(c.texture_space_size);
   throw ConfigError(fmt::format("unknown pipeline setting '{}'", key));
 }
 
 const char* gamma_name(GammaMode mode) { return mode == GammaMode::kSquare ? "square" : "srgb"; }
+
+namespace {
+constexpr std::pair<SpecularModel, const char*> kSpecularNames[] = {
+    {SpecularModel::kKsLut, "ks_lut"},
+    {SpecularModel::kKs, "ks"},
+    {SpecularModel::kGgx, "ggx"},
+    {SpecularModel::kDualGgx, "dual_ggx"}};
+}  // namespace
+
+SpecularModel parse_specular(const std::string& text) {
+  for (const auto& [model, name] : kSpecularNames) {
+    if (text == name) return model;
+  }
+  throw ConfigError("specular: expected ks_lut, ks, ggx or dual_ggx, got '" + text + "'");
+}
+
+const char* specular_name(SpecularModel model) {
+  for (const auto& [m, name] : kSpecularNames) {
+    if (m == model) return name;
+  }
+  return "?";
+}
+
+CurvatureSource parse_curvature(const std::string& text) {
+  if (text == "vertex") return CurvatureSource::kVertex;
+  if (text == "derivatives") return CurvatureSource::kDerivatives;
+  throw ConfigError("curvature: expected 'vertex' or 'derivatives', got '" + text + "'");
+}
+
+const char* curvature_name(CurvatureSource source) {
+  return source == CurvatureSource::kVertex ? "vertex" : "derivatives";
+}
 
 }  // namespace skinsim::pipeline

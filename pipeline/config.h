@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec3.hpp>
+
 #include "pipeline/technique.h"
 #include "sim/texture.h"
 
@@ -19,10 +21,24 @@ class ConfigError : public std::runtime_error {
 
 enum class GammaMode { kSquare, kSrgb };  // gamma 2.0 (GPU Pro 5) or exact sRGB
 
+// Specular model of the skin shaders (docs/skin-techniques.md section 2): the dual-lobe
+// Kelemen/Szirmay-Kalos Beckmann from the BRDF LUT (one dependent read) or evaluated in ALU,
+// a single GGX lobe, or two GGX lobes mixed in D.
+enum class SpecularModel { kKsLut, kKs, kGgx, kDualGgx };
+
+// Where the pre-integrated shader gets surface curvature: baked offline per vertex
+// (smoothed, stored in a UV-space texture) or from screen-space derivatives (noisy on
+// low-poly meshes: constant per triangle).
+enum class CurvatureSource { kVertex, kDerivatives };
+
 struct SpecularLobe {
   float roughness;  // Beckmann m
   float weight;
 };
+
+// Size of the Burley shader's uniform tap array (each tap: a vec2 offset and an RGB weight,
+// two uniform vectors; 64 taps fit the SGX's fragment uniform file).
+inline constexpr int kMaxBurleySamples = 64;
 
 struct PipelineConfig {
   Technique technique = Technique::kMobile;
@@ -46,6 +62,19 @@ struct PipelineConfig {
   int height = 0;
   float lod_distance_m = 2.0f;  // beyond this camera distance the single-pass shader runs
 
+  // Technique knobs (docs/techniques.md). Specular model of every technique but mobile/lod,
+  // whose shaders always read the BRDF LUT.
+  SpecularModel specular = SpecularModel::kKsLut;
+  int preintegrated_lut_width = 64;   // N.L axis
+  int preintegrated_lut_height = 64;  // curvature axis
+  CurvatureSource curvature = CurvatureSource::kVertex;
+  float wrap = 0.5f;  // light-wrap amount w: diffuse = max(0, (N.L + w) / (1 + w))
+  int burley_samples = 16;
+  // Burley scattering distance d per channel (mm); by default fitted to the six-Gaussian
+  // profile's mean scattering radius (techniques/kernels.h).
+  std::optional<glm::vec3> burley_distance_mm;
+  int texture_space_size = 1024;  // texture-space diffusion buffers, texels per axis
+
   // Throws ConfigError naming the field when a value is out of range.
   void validate() const;
 };
@@ -53,7 +82,9 @@ struct PipelineConfig {
 // Sets one knob by name from text, the single entry point for the CLI, sweep files and
 // budget files. Keys: technique, scale, lut, lut_format, blur_iterations, blur_width_mm,
 // normal_offset_mm, gamma, lobe1, lobe2 ("roughness,weight"), specular_intensity,
-// resolution ("WxH"), lod_distance_m. Throws ConfigError naming the key.
+// resolution ("WxH"), lod_distance_m, specular (ks_lut|ks|ggx|dual_ggx), preintegrated_lut
+// ("WxH"), curvature (vertex|derivatives), wrap, burley_samples, burley_distance_mm
+// ("r,g,b" or auto), texture_space_size. Throws ConfigError naming the key.
 void set_config_field(PipelineConfig& config, const std::string& key, const std::string& value);
 // The knob names set_config_field accepts, and the current value of each as text.
 const std::vector<std::string>& config_field_names();
@@ -63,5 +94,9 @@ std::string get_config_field(const PipelineConfig& config, const std::string& ke
 std::pair<int, int> parse_size(const std::string& text, const std::string& what);
 GammaMode parse_gamma(const std::string& text);
 const char* gamma_name(GammaMode mode);
+SpecularModel parse_specular(const std::string& text);
+const char* specular_name(SpecularModel model);
+CurvatureSource parse_curvature(const std::string& text);
+const char* curvature_name(CurvatureSource source);
 
 }  // namespace skinsim::pipeline

@@ -1,6 +1,7 @@
 #include "pipeline/frame.h"
 
 #include "pipeline/skin_pipeline.h"
+#include "pipeline/techniques/techniques.h"
 
 namespace skinsim::pipeline {
 
@@ -12,6 +13,16 @@ FrameOutput render_frame(const GpuScene& scene, const PipelineConfig& config, si
       return render_mobile_frame(scene, config, gpu, MobileMode::kAuto);
     case Technique::kLod:
       return render_mobile_frame(scene, config, gpu, MobileMode::kForceLod);
+    case Technique::kPreintegrated:
+      return render_preintegrated_frame(scene, config, gpu);
+    case Technique::kWrap:
+      return render_wrap_frame(scene, config, gpu);
+    case Technique::kBurley:
+      return render_burley_frame(scene, config, gpu);
+    case Technique::kSsss:
+      return render_ssss_frame(scene, config, gpu);
+    case Technique::kTextureSpace:
+      return render_texture_space_frame(scene, config, gpu);
   }
   throw ConfigError("technique not implemented");
 }

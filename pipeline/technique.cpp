@@ -13,12 +13,24 @@ const char* technique_name(Technique t) {
       return "mobile";
     case Technique::kLod:
       return "lod";
+    case Technique::kPreintegrated:
+      return "preintegrated";
+    case Technique::kWrap:
+      return "wrap";
+    case Technique::kBurley:
+      return "burley";
+    case Technique::kSsss:
+      return "ssss";
+    case Technique::kTextureSpace:
+      return "texture-space";
   }
   return "?";
 }
 
 const std::vector<Technique>& all_techniques() {
-  static const std::vector<Technique> all = {Technique::kMobile, Technique::kLod};
+  static const std::vector<Technique> all = {
+      Technique::kMobile, Technique::kLod,  Technique::kPreintegrated, Technique::kWrap,
+      Technique::kBurley, Technique::kSsss, Technique::kTextureSpace};
   return all;
 }
 
@@ -32,8 +44,8 @@ Technique parse_technique(const std::string& name) {
   for (const Technique t : all_techniques()) {
     if (name == technique_name(t)) return t;
   }
-  throw ConfigError(fmt::format("technique: unknown '{}' (known: {})", name,
-                                fmt::join(technique_names(), ", ")));
+  throw ConfigError(
+      fmt::format("technique: unknown '{}' (known: {})", name, fmt::join(technique_names(), ", ")));
 }
 
 }  // namespace skinsim::pipeline

@@ -1,5 +1,6 @@
 // The skin-rendering techniques skinsim compares. Each is a frame of render passes on the
 // emulated GPU (frame.h dispatches); all are judged against the same reference.
+// docs/techniques.md describes each one's passes, shaders and knobs.
 #pragma once
 
 #include <string>
@@ -8,8 +9,13 @@
 namespace skinsim::pipeline {
 
 enum class Technique {
-  kMobile,  // GPU Pro 5 screen-space irradiance pipeline (the primary one)
-  kLod,     // its single-pass distant-skin shader, at any distance
+  kMobile,         // GPU Pro 5 screen-space irradiance pipeline (the primary one)
+  kLod,            // its single-pass distant-skin shader, at any distance
+  kPreintegrated,  // Penner & Borshukov pre-integrated skin, single pass
+  kWrap,           // light wrapping, single pass: the cheapest baseline
+  kBurley,         // screen-space Burley normalized diffusion, importance-sampled taps
+  kSsss,           // Jimenez separable screen-space SSS at full resolution
+  kTextureSpace,   // d'Eon & Luebke texture-space diffusion: the expensive baseline
 };
 
 const char* technique_name(Technique technique);

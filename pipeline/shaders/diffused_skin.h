@@ -1,0 +1,53 @@
+// Final skin shading of the techniques that diffuse light in a separate buffer (burley,
+// ssss: a full-resolution screen-space buffer; texture-space: a UV-space buffer). The
+// buffer holds diffused irradiance (light only, no albedo); albedo is applied here, so the
+// albedo texture stays sharp, and specular is evaluated here per pixel: it is never blurred
+// (Jimenez et al. 2015 keep diffuse and specular apart for this reason).
+#pragma once
+
+#include "pipeline/shaders/specular.h"
+#include "pipeline/shaders/technique_bindings.h"
+
+namespace skinsim::pipeline::shaders {
+
+enum class DiffusionSource {
+  kScreen,  // RGBA16F screen buffer, rgb = diffused irradiance (read at the pixel)
+  // RGBA16F UV-space buffer, rgb premultiplied by alpha = UV coverage (0 outside the UV
+  // islands, so bilinear reads at island edges divide back to the skin's value).
+  kUv,
+};
+
+template <GammaMode kGamma, SpecularModel kSpec, DiffusionSource kSource>
+struct DiffusedSkinFS {
+  static constexpr ShaderName kNameText =
+      shader_name({kSource == DiffusionSource::kScreen ? "diffused_skin_fs" : "uv_diffused_skin_fs",
+                   specular_suffix(kSpec), gamma_suffix(kGamma)});
+  static constexpr const char* kName = kNameText.text;
+  using Uniforms = TechniqueUniforms;
+  template <class L>
+  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
+                                   const Uniforms& u) {
+    using vec3 = typename L::vec3;
+    using vec4 = typename L::vec4;
+    using B = TechniqueBindings;
+    const vec4 base = tex.sample(B::kAlbedo, in.texcoord(SurfaceSlots::kUv));
+    const vec4 normal_map = tex.sample(B::kNormalMap, in.texcoord(SurfaceSlots::kUv));
+    const vec4 env = tex.sample_cube(B::kEnvironment, in.direction(SurfaceSlots::kNormal));
+    const TechniqueSurface<L> s = technique_surface<L, kGamma>(in, u, base, normal_map);
+    vec3 diffuse_light(0.0f);
+    if constexpr (kSource == DiffusionSource::kScreen) {
+      diffuse_light = sl::xyz(tex.sample(B::kDiffusion, in.screen_texcoord()));
+    } else {
+      const vec4 buffer = tex.sample(B::kDiffusion, in.texcoord(SurfaceSlots::kUv));
+      // Texels with no UV coverage nearby (alpha 0) fall back to the sharp light.
+      const vec3 sharp = vec3(u.light_radiance) * sl::saturate(s.n_dot_l) + vec3(u.ambient);
+      const vec3 diffused = sl::xyz(buffer) * sl::rcp(sl::max(sl::w(buffer), 1.0f / 255.0f));
+      diffuse_light = sl::mix(sharp, diffused, sl::w(buffer));
+    }
+    const Reflection<L> r = skin_specular<kSpec, L>(s, env, tex, u);
+    const vec3 color = s.albedo * diffuse_light * r.diffuse_energy + r.light;
+    return vec4(encode_gamma<kGamma>(color), 1.0f);
+  }
+};
+
+}  // namespace skinsim::pipeline::shaders

@@ -1,0 +1,83 @@
+// Penner & Borshukov pre-integrated skin (GPU Pro 2, 2011; docs/skin-techniques.md section
+// 3): one pass. The diffuse light of each colour channel is a dependent read of the
+// (N.L, curvature) LUT with that channel's own normal ("detail scattering"): red uses the
+// blurred (vertex) normal, green and blue blend from the sharp normal towards it with
+// f = saturate(1 - N_blur.L)^2 (green: 0.3 + 0.7 f, blue: f).
+// Curvature: a baked, smoothed UV-space texture (independent read), or
+// length(fwidth(N)) / length(fwidth(P)) from screen-space derivatives of the interpolated
+// vertex normal and position (GLES2 OES_standard_derivatives), which is constant across
+// each triangle: the known faceting noise on low-poly meshes.
+#pragma once
+
+#include <type_traits>
+
+#include "pipeline/shaders/specular.h"
+#include "pipeline/shaders/technique_bindings.h"
+
+namespace skinsim::pipeline::shaders {
+
+// fwidth() of a varying: |dFdx| + |dFdy|. In count mode dFdx and dFdy are recorded as one
+// ALU op each (the USSE derives them from neighbouring pixels of the 2x2 quad).
+template <class L>
+typename L::vec3 fwidth3(const typename L::FragIn& in, int slot) {
+  if constexpr (std::is_same_v<L, sim::Exec>) {
+    const auto d = in.direction(slot);
+    return sl::abs(d.ddx) + sl::abs(d.ddy);
+  } else {
+    const auto v = in.direction(slot).value;
+    const auto ddx = v - v;
+    const auto ddy = v - v;
+    return sl::abs(ddx) + sl::abs(ddy);
+  }
+}
+
+template <GammaMode kGamma, SpecularModel kSpec, CurvatureSource kCurvature>
+struct PreintegratedFS {
+  static constexpr ShaderName kNameText = shader_name(
+      {"preintegrated_fs", kCurvature == CurvatureSource::kDerivatives ? "_derivatives" : "",
+       specular_suffix(kSpec), gamma_suffix(kGamma)});
+  static constexpr const char* kName = kNameText.text;
+  using Uniforms = TechniqueUniforms;
+  template <class L>
+  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
+                                   const Uniforms& u) {
+    using vec2 = typename L::vec2;
+    using vec3 = typename L::vec3;
+    using vec4 = typename L::vec4;
+    using f32 = typename L::f32;
+    using B = TechniqueBindings;
+    const vec4 base = tex.sample(B::kAlbedo, in.texcoord(SurfaceSlots::kUv));
+    const vec4 normal_map = tex.sample(B::kNormalMap, in.texcoord(SurfaceSlots::kUv));
+    const vec4 env = tex.sample_cube(B::kEnvironment, in.direction(SurfaceSlots::kNormal));
+    f32 curvature(0.0f);  // LUT v coordinate: curvature / max curvature
+    if constexpr (kCurvature == CurvatureSource::kVertex) {
+      // The baked texture stores curvature / max curvature: the LUT v coordinate.
+      curvature = sl::x(tex.sample(B::kCurvature, in.texcoord(SurfaceSlots::kUv)));
+    } else {
+      const f32 dn = sl::length(fwidth3<L>(in, SurfaceSlots::kNormal));
+      const f32 dp = sl::length(fwidth3<L>(in, SurfaceSlots::kWorldPos));
+      curvature = dn * sl::rcp(sl::max(dp, 1e-6f)) * u.curvature_scale;
+    }
+    const TechniqueSurface<L> s = technique_surface<L, kGamma>(in, u, base, normal_map);
+
+    const vec3 l(u.light_dir);
+    const f32 blur_n_dot_l = sl::dot(s.vertex_normal, l);
+    const f32 f0 = sl::saturate(1.0f - blur_n_dot_l);
+    const f32 f = f0 * f0;
+    const vec3 n_g = sl::normalize(sl::mix(s.normal, s.vertex_normal, f * 0.7f + 0.3f));
+    const vec3 n_b = sl::normalize(sl::mix(s.normal, s.vertex_normal, f));
+    // N.L in [-1, 1] -> u in [0, 1]; curvature row v (row 0 flat, at the top).
+    const auto lut_u = [](const f32& n_dot_l) { return n_dot_l * 0.5f + 0.5f; };
+    const vec4 red = tex.sample(B::kPreintegratedLut, vec2(lut_u(blur_n_dot_l), curvature));
+    const vec4 green = tex.sample(B::kPreintegratedLut, vec2(lut_u(sl::dot(n_g, l)), curvature));
+    const vec4 blue = tex.sample(B::kPreintegratedLut, vec2(lut_u(sl::dot(n_b, l)), curvature));
+    const vec3 scattered(sl::x(red), sl::y(green), sl::z(blue));
+
+    const Reflection<L> r = skin_specular<kSpec, L>(s, env, tex, u);
+    const vec3 diffuse_light = vec3(u.light_radiance) * scattered + vec3(u.ambient);
+    const vec3 color = s.albedo * diffuse_light * r.diffuse_energy + r.light;
+    return vec4(encode_gamma<kGamma>(color), 1.0f);
+  }
+};
+
+}  // namespace skinsim::pipeline::shaders

@@ -1,0 +1,134 @@
+// Passes of the full-resolution screen-space diffusion techniques (burley, ssss):
+//   diffuse: normal-mapped irradiance of the key light plus ambient (no albedo, no
+//            specular), alpha = view distance in mm (0 = no skin). RGBA16F: irradiance
+//            above 1 survives, and half floats hold distances of a few metres to ~0.5 mm.
+//            A colour target carrying depth is what a GLES2 app on SGX does (no depth
+//            texture sampling without extensions), so its bandwidth is counted like any.
+//   sss:     Burley normalized diffusion, one 2D pass of importance-sampled taps
+//            (Golubev 2018), or sss_h + sss_v: Jimenez's separable kernel (2015).
+// Tap positions depend on the centre pixel's depth (the kernel is in mm on the skin), so
+// every tap but the centre is a dependent read. A tap that lands on a surface at a
+// different depth (or on background) is replaced by the centre value ("follow surface",
+// Jimenez et al.), which keeps light from bleeding across silhouettes.
+#pragma once
+
+#include <array>
+
+#include "pipeline/config.h"
+#include "pipeline/shaders/surface_vs.h"
+
+namespace skinsim::pipeline::shaders {
+
+// Full-target quad with screen coordinates in slot 0 (passes that read the screen buffer
+// at their own pixel use screen_texcoord(); slot 0 is for UV-space quads).
+struct QuadVS {
+  static constexpr const char* kName = "quad_vs";
+  struct Uniforms {};
+  template <class L>
+  static void vertex(const typename L::VertexIn& in, typename L::VertexOut& out, const Uniforms&) {
+    using vec4 = typename L::vec4;
+    const auto p = in.position();
+    out.position = vec4(sl::x(p), sl::y(p), 0.0f, 1.0f);
+    out.set(0, in.uv());
+  }
+};
+
+struct DiffuseDepthFS {
+  static constexpr const char* kName = "diffuse_depth_fs";
+  struct Uniforms {
+    glm::vec3 eye{0.0f};
+    glm::vec3 light_dir{0.0f, 0.0f, 1.0f};
+    glm::vec3 light_radiance{1.0f};
+    glm::vec3 ambient{0.0f};
+    float mm_per_unit = 1.0f;
+  };
+  static constexpr int kNormalMap = 1;
+  template <class L>
+  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
+                                   const Uniforms& u) {
+    using vec3 = typename L::vec3;
+    using vec4 = typename L::vec4;
+    const vec4 normal_map = tex.sample(kNormalMap, in.texcoord(SurfaceSlots::kUv));
+    const vec3 vertex_normal = sl::normalize(in.v3(SurfaceSlots::kNormal));
+    const auto tangent4 = in.v4(SurfaceSlots::kTangent);
+    const vec3 tangent = sl::xyz(tangent4);
+    const vec3 bitangent = sl::cross(vertex_normal, tangent) * sl::w(tangent4);
+    const vec3 nt = sl::xyz(normal_map) * 2.0f - 1.0f;
+    const vec3 n =
+        sl::normalize(tangent * sl::x(nt) + bitangent * sl::y(nt) + vertex_normal * sl::z(nt));
+    const vec3 irradiance =
+        vec3(u.light_radiance) * sl::saturate(sl::dot(n, vec3(u.light_dir))) + vec3(u.ambient);
+    const auto depth_mm = sl::length(vec3(u.eye) - in.v3(SurfaceSlots::kWorldPos)) * u.mm_per_unit;
+    return vec4(irradiance, depth_mm);
+  }
+};
+
+// Uniforms shared by the two kernels: uv per mm at depth 1 mm per axis (focal length in
+// pixels over the target size), and the follow-surface depth tolerance.
+struct ScreenKernelUniforms {
+  glm::vec2 focal_uv{1.0f};
+  float inv_follow_mm = 0.25f;  // 1 / depth difference (mm) at which a tap is fully replaced
+};
+
+// Burley normalized diffusion: `count` taps at precomputed offsets (mm, a Fibonacci spiral
+// with radii from the inverse CDF of the widest channel), RGB weights R_c(r) / pdf(r)
+// normalised per channel (techniques/kernels.h). The centre is read once, independently.
+struct BurleyFS {
+  static constexpr const char* kName = "burley_sss_fs";
+  struct Uniforms : ScreenKernelUniforms {
+    int count = 0;
+    std::array<glm::vec2, kMaxBurleySamples> offsets_mm{};
+    std::array<glm::vec3, kMaxBurleySamples> weights{};
+  };
+  template <class L>
+  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
+                                   const Uniforms& u) {
+    using vec2 = typename L::vec2;
+    using vec3 = typename L::vec3;
+    using vec4 = typename L::vec4;
+    const auto screen = in.screen_texcoord();
+    const vec4 centre = tex.sample(0, screen);
+    const auto depth = sl::w(centre);
+    const vec2 uv_per_mm = vec2(u.focal_uv) * sl::rcp(sl::max(depth, 1.0f));
+    vec3 sum(0.0f);
+    for (int i = 0; i < u.count; ++i) {
+      const vec4 t = tex.sample(0, screen.value + vec2(u.offsets_mm[i]) * uv_per_mm);
+      const auto off_surface = sl::saturate(sl::abs(sl::w(t) - depth) * u.inv_follow_mm);
+      sum = sum + sl::mix(sl::xyz(t), sl::xyz(centre), off_surface) * vec3(u.weights[i]);
+    }
+    return vec4(sum, depth);
+  }
+};
+
+// One axis of Jimenez's separable SSS (2015): a centre tap plus kSsssTaps - 1 taps at 1D
+// offsets (mm) along the axis, RGB weights of the six-Gaussian profile (techniques/kernels.h).
+inline constexpr int kSsssTaps = 17;  // Jimenez's default quality
+
+struct SsssBlurFS {
+  static constexpr const char* kName = "ssss_blur_fs";
+  struct Uniforms : ScreenKernelUniforms {
+    glm::vec2 axis{1.0f, 0.0f};
+    std::array<float, kSsssTaps> offsets_mm{};  // tap 0 is the centre (offset 0)
+    std::array<glm::vec3, kSsssTaps> weights{};
+  };
+  template <class L>
+  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
+                                   const Uniforms& u) {
+    using vec2 = typename L::vec2;
+    using vec3 = typename L::vec3;
+    using vec4 = typename L::vec4;
+    const auto screen = in.screen_texcoord();
+    const vec4 centre = tex.sample(0, screen);
+    const auto depth = sl::w(centre);
+    const vec2 step = vec2(u.focal_uv * u.axis) * sl::rcp(sl::max(depth, 1.0f));
+    vec3 sum = sl::xyz(centre) * vec3(u.weights[0]);
+    for (int i = 1; i < kSsssTaps; ++i) {
+      const vec4 t = tex.sample(0, screen.value + step * u.offsets_mm[i]);
+      const auto off_surface = sl::saturate(sl::abs(sl::w(t) - depth) * u.inv_follow_mm);
+      sum = sum + sl::mix(sl::xyz(t), sl::xyz(centre), off_surface) * vec3(u.weights[i]);
+    }
+    return vec4(sum, depth);
+  }
+};
+
+}  // namespace skinsim::pipeline::shaders

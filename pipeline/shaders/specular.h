@@ -1,0 +1,177 @@
+// The specular models every comparison technique can use (docs/skin-techniques.md section
+// 2), on top of the per-pixel surface terms those shaders share. All four scale the
+// microfacet lobe the same way as d'Eon & Luebke's KS_Skin_Specular (GPU Gems 3 ch. 14):
+//   specular = light * N.L * rho_s * pi D * F(V.H) * Vis * reflectivity
+// so rho_s = 0.18 means the same thing in each and only the lobe shape differs:
+//   ks_lut   - the dual Kelemen/Szirmay-Kalos lobes, Fresnel and diffuse energy from the BRDF
+//              LUT: one dependent read (what the mobile pipeline does);
+//   ks       - the same lobes in ALU: Beckmann D, Vis = 1 / (4 (V.H)^2) (Kelemen);
+//   ggx      - one GGX lobe, alpha = Beckmann m of lobe 1 (the usual equivalence), with
+//              the height-correlated Smith visibility in Hammon's approximation (GDC 2017);
+//   dual_ggx - two GGX lobes mixed in D by the lobe weights; visibility from the average
+//              alpha (the dual-lobe recipe of docs/skin-techniques.md).
+// The analytic models use Schlick F(N.V) for the environment rim light and 1 - F(N.V) as
+// the diffuse energy term (the LUT pre-integrates both over the lobes).
+#pragma once
+
+#include <array>
+
+#include "pipeline/bake/brdf_lut_encoding.h"
+#include "pipeline/shaders/gamma.h"
+#include "pipeline/shaders/skin.h"
+#include "pipeline/shaders/surface_vs.h"
+
+namespace skinsim::pipeline::shaders {
+
+// Uniforms of the comparison techniques' skin shaders: the mobile shader's plus the
+// analytic lobes and the technique knobs (each shader reads the ones it needs).
+struct TechniqueUniforms : SkinUniforms {
+  float lobe1_roughness = 0.3f;  // Beckmann m (GGX alpha)
+  float lobe2_roughness = 0.6f;
+  float f0 = 0.028f;             // skin, IOR ~1.4
+  float wrap = 0.5f;             // wrap lighting amount
+  float curvature_scale = 1.0f;  // derivative curvature (1/world unit) -> pre-integrated LUT v
+};
+
+// A shader name assembled at compile time from parts ("wrap_fs" "_ggx" "_srgb").
+struct ShaderName {
+  char text[64]{};
+};
+constexpr ShaderName shader_name(std::initializer_list<const char*> parts) {
+  ShaderName n;
+  int k = 0;
+  for (const char* p : parts) {
+    for (; *p != '\0' && k < 63; ++p) n.text[k++] = *p;
+  }
+  return n;
+}
+constexpr const char* specular_suffix(SpecularModel m) {
+  switch (m) {
+    case SpecularModel::kKsLut:
+      return "";
+    case SpecularModel::kKs:
+      return "_ks";
+    case SpecularModel::kGgx:
+      return "_ggx";
+    case SpecularModel::kDualGgx:
+      return "_dual_ggx";
+  }
+  return "";
+}
+constexpr const char* gamma_suffix(GammaMode g) {
+  return g == GammaMode::kSquare ? "" : "_srgb";
+}
+
+// Per-pixel terms without any LUT read.
+template <class L>
+struct TechniqueSurface {
+  typename L::vec3 normal;  // normal-mapped
+  typename L::vec3 vertex_normal;
+  typename L::vec3 view;
+  typename L::vec3 albedo;  // linear
+  typename L::f32 reflectivity;
+  typename L::f32 n_dot_l;  // signed, normal-mapped
+};
+
+template <class L, GammaMode kGamma>
+TechniqueSurface<L> technique_surface(const typename L::FragIn& in, const TechniqueUniforms& u,
+                                      const typename L::vec4& base,
+                                      const typename L::vec4& normal_map) {
+  using vec3 = typename L::vec3;
+  TechniqueSurface<L> s;
+  s.vertex_normal = sl::normalize(in.v3(SurfaceSlots::kNormal));
+  const auto tangent4 = in.v4(SurfaceSlots::kTangent);
+  const vec3 tangent = sl::xyz(tangent4);
+  const vec3 bitangent = sl::cross(s.vertex_normal, tangent) * sl::w(tangent4);
+  const vec3 nt = sl::xyz(normal_map) * 2.0f - 1.0f;
+  s.normal =
+      sl::normalize(tangent * sl::x(nt) + bitangent * sl::y(nt) + s.vertex_normal * sl::z(nt));
+  s.view = sl::normalize(vec3(u.eye) - in.v3(SurfaceSlots::kWorldPos));
+  s.n_dot_l = sl::dot(s.normal, vec3(u.light_dir));
+  s.albedo = decode_gamma<kGamma>(sl::xyz(base)) * u.albedo_factor;
+  s.reflectivity = sl::w(base) * u.reflectivity;
+  return s;
+}
+
+template <class L>
+struct Reflection {
+  typename L::vec3 light;          // key-light specular + environment rim light
+  typename L::f32 diffuse_energy;  // fraction of light entering the skin
+};
+
+namespace detail {
+// pi * GGX D for alpha^2 = a2 (the pi cancels D's 1/pi, as P_H does for Beckmann).
+template <class F>
+F pi_ggx_d(const F& n_dot_h2, float a2) {
+  const F t = n_dot_h2 * (a2 - 1.0f) + 1.0f;
+  return a2 * sl::rcp(t * t);
+}
+// Height-correlated Smith G / (4 N.L N.V), Hammon's linear approximation.
+template <class F>
+F ggx_visibility(const F& n_dot_l, const F& n_dot_v, float alpha) {
+  const F denom =
+      n_dot_l * (n_dot_v * (1.0f - alpha) + alpha) + n_dot_v * (n_dot_l * (1.0f - alpha) + alpha);
+  return 0.5f * sl::rcp(sl::max(denom, 1e-4f));
+}
+template <class F>
+F schlick(float f0, const F& cos_theta) {
+  const F k = 1.0f - cos_theta;
+  const F k2 = k * k;
+  return f0 + (1.0f - f0) * (k2 * k2 * k);
+}
+}  // namespace detail
+
+template <SpecularModel kSpec, class L>
+Reflection<L> skin_specular(const TechniqueSurface<L>& s, const typename L::vec4& env,
+                            typename L::TexUnit& tex, const TechniqueUniforms& u) {
+  using vec2 = typename L::vec2;
+  using vec3 = typename L::vec3;
+  using f32 = typename L::f32;
+  const vec3 half = sl::normalize(s.view + vec3(u.light_dir));
+  const f32 n_dot_h = sl::saturate(sl::dot(s.normal, half));
+  const f32 n_dot_v = sl::saturate(sl::dot(s.normal, s.view));
+  const f32 n_dot_l = sl::saturate(s.n_dot_l);
+  const vec3 radiance(u.light_radiance);
+  Reflection<L> r;
+  if constexpr (kSpec == SpecularModel::kKsLut) {
+    const auto lut = tex.sample_lod(SkinBindings::kBrdfLut, vec2(n_dot_h, n_dot_v), u.lut_lod);
+    const f32 lobes = bake::decode_specular_lobe(sl::x(lut)) * u.lobe1_weight +
+                      bake::decode_specular_lobe(sl::y(lut)) * u.lobe2_weight;
+    const f32 fresnel = bake::decode_fresnel(sl::z(lut));
+    r.light = radiance * (lobes * n_dot_l * u.specular_intensity * s.reflectivity) +
+              sl::xyz(env) * (fresnel * s.reflectivity * u.environment_intensity);
+    r.diffuse_energy = bake::decode_diffuse_energy(sl::w(lut));
+    return r;
+  } else {
+    const f32 v_dot_h = sl::max(sl::dot(s.view, half), 1e-3f);
+    const f32 c2 = sl::max(n_dot_h * n_dot_h, 1e-4f);
+    f32 lobe(0.0f);
+    if constexpr (kSpec == SpecularModel::kKs) {
+      // pi D_Beckmann = exp((c2 - 1) / (m^2 c2)) / (m^2 c2^2), Vis = 1 / (4 (V.H)^2).
+      const f32 inv_c2 = sl::rcp(c2);
+      const auto pi_beckmann = [&](float m) {
+        const float m2 = m * m;
+        return sl::exp((c2 - 1.0f) * inv_c2 * (1.0f / m2)) * inv_c2 * inv_c2 * (1.0f / m2);
+      };
+      const f32 pi_d = pi_beckmann(u.lobe1_roughness) * u.lobe1_weight +
+                       pi_beckmann(u.lobe2_roughness) * u.lobe2_weight;
+      lobe = pi_d * sl::rcp(v_dot_h * v_dot_h * 4.0f);
+    } else if constexpr (kSpec == SpecularModel::kGgx) {
+      const float a = u.lobe1_roughness;
+      lobe = detail::pi_ggx_d(c2, a * a) * detail::ggx_visibility(n_dot_l, n_dot_v, a);
+    } else {
+      const float a1 = u.lobe1_roughness, a2 = u.lobe2_roughness;
+      const f32 pi_d = detail::pi_ggx_d(c2, a1 * a1) * u.lobe1_weight +
+                       detail::pi_ggx_d(c2, a2 * a2) * u.lobe2_weight;
+      lobe = pi_d * detail::ggx_visibility(n_dot_l, n_dot_v, 0.5f * (a1 + a2));
+    }
+    const f32 f_h = detail::schlick(u.f0, v_dot_h);
+    const f32 f_v = detail::schlick(u.f0, n_dot_v);
+    r.light = radiance * (lobe * f_h * n_dot_l * u.specular_intensity * s.reflectivity) +
+              sl::xyz(env) * (f_v * s.reflectivity * u.environment_intensity);
+    r.diffuse_energy = 1.0f - f_v;
+    return r;
+  }
+}
+
+}  // namespace skinsim::pipeline::shaders

@@ -1,0 +1,88 @@
+// Passes of texture-space diffusion (d'Eon & Luebke, GPU Gems 3 ch. 14):
+//   uv_irradiance: the skin mesh rasterised into its UV layout (clip position = uv * 2 - 1),
+//                  normal-mapped irradiance per texel, alpha = 1 on the UV islands. This
+//                  needs non-overlapping UVs on the skin (true of the built-in head and of
+//                  LeePerrySmith): overlapping islands would share, and mix, texels.
+//   uv_blur_<i>_h/_v: one separable Gaussian per profile term, each from the previous
+//                  (variances add), with the mobile pipeline's mask-aware blur (blur.h).
+//   uv_combine:    the weighted sum of irradiance and the five blurred textures.
+// The final `skin` pass reads the combined texture with the mesh UV (diffused_skin.h).
+#pragma once
+
+#include <array>
+
+#include "pipeline/shaders/screen_diffusion.h"
+#include "pipeline/shaders/surface_vs.h"
+
+namespace skinsim::pipeline::shaders {
+
+struct UvSpaceVS {
+  static constexpr const char* kName = "uv_space_vs";
+  struct Uniforms {};
+  static constexpr int kNormal = 0;
+  static constexpr int kTangent = 3;
+  static constexpr int kUv = 7;
+  template <class L>
+  static void vertex(const typename L::VertexIn& in, typename L::VertexOut& out, const Uniforms&) {
+    using vec4 = typename L::vec4;
+    const auto uv = in.uv();
+    // Texture rows grow downwards (v = 0 at the top), clip y upwards.
+    out.position = vec4(sl::x(uv) * 2.0f - 1.0f, 1.0f - sl::y(uv) * 2.0f, 0.0f, 1.0f);
+    out.set(kNormal, in.normal());
+    out.set(kTangent, in.tangent());
+    out.set(kUv, uv);
+  }
+};
+
+struct UvIrradianceFS {
+  static constexpr const char* kName = "uv_irradiance_fs";
+  struct Uniforms {
+    glm::vec3 light_dir{0.0f, 0.0f, 1.0f};
+    glm::vec3 light_radiance{1.0f};
+    glm::vec3 ambient{0.0f};
+  };
+  static constexpr int kNormalMap = 1;
+  template <class L>
+  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
+                                   const Uniforms& u) {
+    using vec3 = typename L::vec3;
+    using vec4 = typename L::vec4;
+    const vec4 normal_map = tex.sample(kNormalMap, in.texcoord(UvSpaceVS::kUv));
+    const vec3 vertex_normal = sl::normalize(in.v3(UvSpaceVS::kNormal));
+    const auto tangent4 = in.v4(UvSpaceVS::kTangent);
+    const vec3 tangent = sl::xyz(tangent4);
+    const vec3 bitangent = sl::cross(vertex_normal, tangent) * sl::w(tangent4);
+    const vec3 nt = sl::xyz(normal_map) * 2.0f - 1.0f;
+    const vec3 n =
+        sl::normalize(tangent * sl::x(nt) + bitangent * sl::y(nt) + vertex_normal * sl::z(nt));
+    const vec3 irradiance =
+        vec3(u.light_radiance) * sl::saturate(sl::dot(n, vec3(u.light_dir))) + vec3(u.ambient);
+    return vec4(irradiance, 1.0f);
+  }
+};
+
+// The six profile terms' textures (irradiance first) weighted per channel; all six reads
+// are independent (same UV varying), within the SGX's eight texture units.
+inline constexpr int kTextureSpaceTerms = 6;
+
+struct UvCombineFS {
+  static constexpr const char* kName = "uv_combine_fs";
+  struct Uniforms {
+    std::array<glm::vec3, kTextureSpaceTerms> weights{};
+  };
+  template <class L>
+  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
+                                   const Uniforms& u) {
+    using vec3 = typename L::vec3;
+    using vec4 = typename L::vec4;
+    const auto uv = in.texcoord(0);
+    const vec4 first = tex.sample(0, uv);
+    vec3 sum = sl::xyz(first) * vec3(u.weights[0]);
+    for (int i = 1; i < kTextureSpaceTerms; ++i) {
+      sum = sum + sl::xyz(tex.sample(i, uv)) * vec3(u.weights[i]);
+    }
+    return vec4(sum, sl::w(first));
+  }
+};
+
+}  // namespace skinsim::pipeline::shaders

@@ -1,0 +1,35 @@
+// Light wrapping (docs/skin-techniques.md section 5): diffuse = max(0, (N.L + w) / (1 + w))
+// with the normal-mapped normal, one pass, no LUT for the diffuse part. The cheapest way to
+// soften the terminator; it brightens the shadow side without skin's red shift.
+#pragma once
+
+#include "pipeline/shaders/specular.h"
+#include "pipeline/shaders/technique_bindings.h"
+
+namespace skinsim::pipeline::shaders {
+
+template <GammaMode kGamma, SpecularModel kSpec>
+struct WrapFS {
+  static constexpr ShaderName kNameText =
+      shader_name({"wrap_fs", specular_suffix(kSpec), gamma_suffix(kGamma)});
+  static constexpr const char* kName = kNameText.text;
+  using Uniforms = TechniqueUniforms;
+  template <class L>
+  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
+                                   const Uniforms& u) {
+    using vec3 = typename L::vec3;
+    using vec4 = typename L::vec4;
+    using B = TechniqueBindings;
+    const vec4 base = tex.sample(B::kAlbedo, in.texcoord(SurfaceSlots::kUv));
+    const vec4 normal_map = tex.sample(B::kNormalMap, in.texcoord(SurfaceSlots::kUv));
+    const vec4 env = tex.sample_cube(B::kEnvironment, in.direction(SurfaceSlots::kNormal));
+    const TechniqueSurface<L> s = technique_surface<L, kGamma>(in, u, base, normal_map);
+    const auto wrapped = sl::saturate((s.n_dot_l + u.wrap) * (1.0f / (1.0f + u.wrap)));
+    const Reflection<L> r = skin_specular<kSpec, L>(s, env, tex, u);
+    const vec3 diffuse_light = vec3(u.light_radiance) * wrapped + vec3(u.ambient);
+    const vec3 color = s.albedo * diffuse_light * r.diffuse_energy + r.light;
+    return vec4(encode_gamma<kGamma>(color), 1.0f);
+  }
+};
+
+}  // namespace skinsim::pipeline::shaders

@@ -1,0 +1,84 @@
+// The one-pass techniques: pre-integrated skin and wrap lighting.
+#include <fmt/format.h>
+
+#include "pipeline/bake/preintegrated_lut.h"
+#include "pipeline/shaders/preintegrated.h"
+#include "pipeline/shaders/wrap.h"
+#include "pipeline/techniques/frame_setup.h"
+#include "pipeline/techniques/skin_pass.h"
+#include "pipeline/techniques/techniques.h"
+#include "pipeline/techniques/uv_layout.h"
+
+namespace skinsim::pipeline {
+
+namespace {
+
+// Resolution of the baked curvature texture: curvature is smooth by construction (baked
+// from vertices, then smoothed), so a small texture holds it.
+constexpr int kCurvatureTextureSize = 256;
+
+// The LUT as the GPU stores it: linear RGB in RGBA8 (values are in [0, 1]), bilinear,
+// clamped; row 0 (flat skin) at v = 0.
+sim::RenderTarget preintegrated_lut_target(const PipelineConfig& cfg) {
+  bake::PreintegratedLutParams params;
+  params.width = cfg.preintegrated_lut_width;
+  params.height = cfg.preintegrated_lut_height;
+  const bake::PreintegratedLut lut = bake::bake_preintegrated_lut(params);
+  sim::RenderTarget t("preintegrated_lut", lut.width, lut.height, sim::TexelFormat::kRGBA8);
+  for (std::size_t i = 0; i < lut.rgb.size(); ++i) {
+    t.pixels[i] = sim::quantize(glm::vec4(lut.rgb[i], 1.0f), sim::TexelFormat::kRGBA8);
+  }
+  return t;
+}
+
+}  // namespace
+
+FrameOutput render_preintegrated_frame(const GpuScene& gs, const PipelineConfig& cfg,
+                                       sim::Gpu& gpu) {
+  FrameOutput out = start_frame(gs, cfg);
+  const auto brdf_lut = brdf_lut_for(cfg);
+  sim::RenderTarget lut_target = preintegrated_lut_target(cfg);
+  const sim::Texture2D lut =
+      sim::as_texture(lut_target, {sim::Filter::kBilinear, sim::Wrap::kClamp});
+  const float max_curvature = bake::PreintegratedLutParams{}.max_curvature_per_mm;
+  std::optional<sim::Texture2D> curvature;
+  if (cfg.curvature == CurvatureSource::kVertex) {
+    require_skin_uvs(gs, "preintegrated (curvature vertex)");
+    curvature = curvature_texture(gs, kCurvatureTextureSize, max_curvature);
+  }
+  const auto shading = [&](const GpuMaterial& mat, sim::DrawCall& d) {
+    shaders::TechniqueUniforms u = technique_uniforms(gs, out.view, cfg, mat);
+    // Derivatives give curvature in 1/world unit: times units_per_mm is 1/mm.
+    u.curvature_scale = gs.scene().units_per_mm / max_curvature;
+    d.fragment_program = with_gamma_and_specular(cfg, [&](auto gamma, auto spec) {
+      if (cfg.curvature == CurvatureSource::kVertex) {
+        return sim::make_fragment_program<
+            shaders::PreintegratedFS<gamma(), spec(), CurvatureSource::kVertex>>(u);
+      }
+      return sim::make_fragment_program<
+          shaders::PreintegratedFS<gamma(), spec(), CurvatureSource::kDerivatives>>(u);
+    });
+    d.textures.textures[shaders::TechniqueBindings::kPreintegratedLut] = &lut;
+    if (curvature) d.textures.textures[shaders::TechniqueBindings::kCurvature] = &*curvature;
+    bind_brdf_lut(brdf_lut, d);
+  };
+  out.passes.push_back(skin_framebuffer_pass(gs, out.view, shading, out.frame, gpu));
+  out.intermediates.push_back({"preintegrated_lut", std::move(lut_target), 1.0f});
+  return out;
+}
+
+FrameOutput render_wrap_frame(const GpuScene& gs, const PipelineConfig& cfg, sim::Gpu& gpu) {
+  FrameOutput out = start_frame(gs, cfg);
+  const auto brdf_lut = brdf_lut_for(cfg);
+  const auto shading = [&](const GpuMaterial& mat, sim::DrawCall& d) {
+    const shaders::TechniqueUniforms u = technique_uniforms(gs, out.view, cfg, mat);
+    d.fragment_program = with_gamma_and_specular(cfg, [&](auto gamma, auto spec) {
+      return sim::make_fragment_program<shaders::WrapFS<gamma(), spec()>>(u);
+    });
+    bind_brdf_lut(brdf_lut, d);
+  };
+  out.passes.push_back(skin_framebuffer_pass(gs, out.view, shading, out.frame, gpu));
+  return out;
+}
+
+}  // namespace skinsim::pipeline

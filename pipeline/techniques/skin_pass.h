@@ -1,0 +1,59 @@
+// The framebuffer render every comparison technique ends with, named `skin` like the
+// mobile pipeline's so budgets and charts compare like with like: background, eyes and
+// skin in one render (no render-target switch between them), the skin drawn with the
+// technique's own fragment program and extra textures.
+#pragma once
+
+#include <functional>
+#include <memory>
+
+#include "pipeline/config.h"
+#include "pipeline/gpu_scene.h"
+#include "pipeline/shaders/specular.h"
+#include "sim/gpu.h"
+
+namespace skinsim::pipeline {
+
+struct SceneLighting {
+  glm::vec3 light_dir, light_radiance, ambient;
+};
+SceneLighting scene_lighting(const scene::Scene& scene);
+
+// The skin shaders' uniforms for one material: lighting, eye, albedo factor, the layer
+// split, the config's specular lobes and intensity, and the technique knobs.
+shaders::TechniqueUniforms technique_uniforms(const GpuScene& scene, const View& view,
+                                              const PipelineConfig& config,
+                                              const GpuMaterial& material);
+
+// Sets a skin draw's fragment program and its textures beyond albedo, normal map and
+// environment (which the pass binds) for one skin material.
+using SkinShading = std::function<void(const GpuMaterial&, sim::DrawCall&)>;
+
+sim::PassCounters skin_framebuffer_pass(const GpuScene& scene, const View& view,
+                                        const SkinShading& shading, sim::RenderTarget& frame,
+                                        sim::Gpu& gpu);
+
+// Calls f(std::integral_constant<GammaMode, g>, std::integral_constant<SpecularModel, s>)
+// for the config's gamma and specular model: picks the shader instantiation.
+template <class F>
+auto with_gamma_and_specular(const PipelineConfig& config, F&& f) {
+  const auto with_spec = [&](auto gamma) {
+    switch (config.specular) {
+      case SpecularModel::kKs:
+        return f(gamma, std::integral_constant<SpecularModel, SpecularModel::kKs>{});
+      case SpecularModel::kGgx:
+        return f(gamma, std::integral_constant<SpecularModel, SpecularModel::kGgx>{});
+      case SpecularModel::kDualGgx:
+        return f(gamma, std::integral_constant<SpecularModel, SpecularModel::kDualGgx>{});
+      case SpecularModel::kKsLut:
+        break;
+    }
+    return f(gamma, std::integral_constant<SpecularModel, SpecularModel::kKsLut>{});
+  };
+  if (config.gamma == GammaMode::kSquare) {
+    return with_spec(std::integral_constant<GammaMode, GammaMode::kSquare>{});
+  }
+  return with_spec(std::integral_constant<GammaMode, GammaMode::kSrgb>{});
+}
+
+}  // namespace skinsim::pipeline

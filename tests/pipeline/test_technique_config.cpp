@@ -1,0 +1,77 @@
+// The technique list and the technique knobs through set_config_field / get_config_field:
+// round trips, defaults, and errors that name the key.
+#include <gtest/gtest.h>
+
+#include "pipeline/config.h"
+#include "pipeline/technique.h"
+
+namespace skinsim::pipeline {
+namespace {
+
+TEST(TechniqueConfig, EveryTechniqueRoundTrips) {
+  const std::vector<std::string> names = technique_names();
+  EXPECT_EQ(names, (std::vector<std::string>{"mobile", "lod", "preintegrated", "wrap", "burley",
+                                             "ssss", "texture-space"}));
+  for (const std::string& name : names) {
+    PipelineConfig c;
+    set_config_field(c, "technique", name);
+    EXPECT_EQ(get_config_field(c, "technique"), name);
+  }
+}
+
+TEST(TechniqueConfig, KnobsRoundTrip) {
+  const std::vector<std::pair<std::string, std::string>> knobs = {
+      {"specular", "ks"},
+      {"specular", "ggx"},
+      {"specular", "dual_ggx"},
+      {"specular", "ks_lut"},
+      {"preintegrated_lut", "128x32"},
+      {"curvature", "derivatives"},
+      {"curvature", "vertex"},
+      {"wrap", "0.25"},
+      {"burley_samples", "24"},
+      {"burley_distance_mm", "1,0.5,0.25"},
+      {"burley_distance_mm", "auto"},
+      {"texture_space_size", "512"}};
+  for (const auto& [key, value] : knobs) {
+    PipelineConfig c;
+    set_config_field(c, key, value);
+    EXPECT_NO_THROW(c.validate()) << key;
+    EXPECT_EQ(get_config_field(c, key), value) << key;
+  }
+  for (const char* key : {"specular", "preintegrated_lut", "curvature", "wrap", "burley_samples",
+                          "burley_distance_mm", "texture_space_size"}) {
+    const auto& names = config_field_names();
+    EXPECT_NE(std::find(names.begin(), names.end(), key), names.end()) << key;
+  }
+}
+
+void expect_error(const std::string& key, const std::string& value, const std::string& needle) {
+  PipelineConfig c;
+  try {
+    set_config_field(c, key, value);
+    c.validate();
+    ADD_FAILURE() << key << "=" << value << " accepted";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+  }
+}
+
+TEST(TechniqueConfig, BadValuesNameTheKey) {
+  expect_error("technique", "sss", "technique");
+  expect_error("specular", "phong", "specular");
+  expect_error("preintegrated_lut", "64x63", "preintegrated_lut");
+  expect_error("preintegrated_lut", "2x64", "preintegrated_lut");
+  expect_error("curvature", "mesh", "curvature");
+  expect_error("wrap", "1.5", "wrap");
+  expect_error("wrap", "abc", "wrap");
+  expect_error("burley_samples", "2", "burley_samples");
+  expect_error("burley_samples", "65", "burley_samples");
+  expect_error("burley_distance_mm", "1,2", "burley_distance_mm");
+  expect_error("burley_distance_mm", "1,0,1", "burley_distance_mm");
+  expect_error("texture_space_size", "1000", "texture_space_size");
+  expect_error("texture_space_size", "32", "texture_space_size");
+}
+
+}  // namespace
+}  // namespace skinsim::pipeline

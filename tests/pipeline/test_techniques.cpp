@@ -1,0 +1,193 @@
+// Every comparison technique renders a small frame of a small head on the emulated GPU:
+// its passes are the designed ones, it shades the skin, and its shaders read textures the
+// intended way (independent vs dependent).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "pipeline/frame.h"
+#include "pipeline/gpu_scene.h"
+#include "scene/procedural_head.h"
+#include "sim/gpu.h"
+
+namespace skinsim::pipeline {
+namespace {
+
+const GpuScene& small_scene() {
+  static const scene::Scene s = [] {
+    scene::DefaultSceneOptions o;
+    o.head_triangles = 4000;
+    o.texture_size = 256;
+    o.eye_texture_size = 64;
+    o.environment_size = 16;
+    return scene::make_default_scene(o);
+  }();
+  static const GpuScene gs(s);
+  return gs;
+}
+
+PipelineConfig small_config(const std::string& technique) {
+  PipelineConfig c;
+  set_config_field(c, "technique", technique);
+  set_config_field(c, "resolution", "256x192");
+  set_config_field(c, "texture_space_size", "128");
+  set_config_field(c, "burley_samples", "8");
+  return c;
+}
+
+FrameOutput render(const PipelineConfig& c) {
+  sim::GpuConfig g;
+  g.threads = 2;
+  sim::Gpu gpu(g);
+  return render_frame(small_scene(), c, gpu);
+}
+
+std::vector<std::string> pass_names(const FrameOutput& out) {
+  std::vector<std::string> names;
+  for (const auto& p : out.passes) names.push_back(p.name);
+  return names;
+}
+
+const sim::DrawCounters& skin_draw(const FrameOutput& out) {
+  const sim::PassCounters& skin = out.passes.back();
+  for (const sim::DrawCounters& d : skin.draws) {
+    if (d.fragment_program != "background_fs" && d.fragment_program != "eye_fs") return d;
+  }
+  throw std::runtime_error("no skin draw");
+}
+
+// Mean luminance-ish of the frame's centre region (the face) and its colour balance.
+glm::vec3 centre_mean(const sim::RenderTarget& frame) {
+  glm::vec3 sum(0.0f);
+  int n = 0;
+  for (int y = frame.height * 3 / 8; y < frame.height * 5 / 8; ++y) {
+    for (int x = frame.width * 3 / 8; x < frame.width * 5 / 8; ++x) {
+      sum += glm::vec3(frame.at(x, y));
+      ++n;
+    }
+  }
+  return sum / static_cast<float>(n);
+}
+
+struct Expected {
+  std::string technique;
+  std::vector<std::string> passes;
+  std::string skin_program;
+  std::uint32_t independent;
+  std::uint32_t dependent;
+};
+
+class TechniqueFrame : public ::testing::TestWithParam<Expected> {};
+
+TEST_P(TechniqueFrame, PassesShadingAndReads) {
+  const Expected& e = GetParam();
+  const FrameOutput out = render(small_config(e.technique));
+  EXPECT_EQ(pass_names(out), e.passes);
+  const sim::DrawCounters& skin = skin_draw(out);
+  EXPECT_EQ(skin.fragment_program, e.skin_program);
+  EXPECT_GT(skin.fragments_shaded, 256u * 192u / 8u) << "skin covers a good part of the frame";
+  EXPECT_EQ(skin.fragment_profile.texture_reads_independent, e.independent);
+  EXPECT_EQ(skin.fragment_profile.texture_reads_dependent, e.dependent);
+  // Skin lit by a white key light: bright, and red above green above blue.
+  const glm::vec3 face = centre_mean(out.frame);
+  EXPECT_GT(face.r, 0.25f);
+  EXPECT_GT(face.r, face.g);
+  EXPECT_GT(face.g, face.b);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    All, TechniqueFrame,
+    ::testing::Values(
+        // albedo, normal, env, curvature; 3 pre-integrated LUT reads + the BRDF LUT
+        Expected{"preintegrated", {"skin"}, "preintegrated_fs", 4, 4},
+        Expected{"wrap", {"skin"}, "wrap_fs", 3, 1},
+        Expected{"burley", {"diffuse", "sss", "skin"}, "diffused_skin_fs", 4, 1},
+        Expected{"ssss", {"diffuse", "sss_h", "sss_v", "skin"}, "diffused_skin_fs", 4, 1},
+        Expected{"texture-space",
+                 {"uv_irradiance", "uv_blur_1_h", "uv_blur_1_v", "uv_blur_2_h", "uv_blur_2_v",
+                  "uv_blur_3_h", "uv_blur_3_v", "uv_blur_4_h", "uv_blur_4_v", "uv_blur_5_h",
+                  "uv_blur_5_v", "uv_combine", "skin"},
+                 "uv_diffused_skin_fs",
+                 4,
+                 1}),
+    [](const ::testing::TestParamInfo<Expected>& param) {
+      std::string name = param.param.technique;
+      std::replace(name.begin(), name.end(), '-', '_');
+      return name;
+    });
+
+const sim::DrawCounters& draw_named(const FrameOutput& out, const std::string& pass) {
+  for (const auto& p : out.passes) {
+    if (p.name == pass) return p.draws.at(0);
+  }
+  throw std::runtime_error("no pass " + pass);
+}
+
+TEST(TechniqueReads, BurleyTapsAreDependentAndFollowTheSampleCount) {
+  PipelineConfig c = small_config("burley");
+  set_config_field(c, "burley_samples", "12");
+  const FrameOutput out = render(c);
+  const sim::OpProfile& p = draw_named(out, "sss").fragment_profile;
+  EXPECT_EQ(p.texture_reads_independent, 1u);  // the centre
+  EXPECT_EQ(p.texture_reads_dependent, 12u);
+}
+
+TEST(TechniqueReads, SsssAxisHasSixteenDependentTaps) {
+  const FrameOutput out = render(small_config("ssss"));
+  for (const char* pass : {"sss_h", "sss_v"}) {
+    const sim::OpProfile& p = draw_named(out, pass).fragment_profile;
+    EXPECT_EQ(p.texture_reads_independent, 1u) << pass;
+    EXPECT_EQ(p.texture_reads_dependent, 16u) << pass;
+  }
+}
+
+TEST(TechniqueReads, AnalyticSpecularDropsTheBrdfLutRead) {
+  for (const char* spec : {"ks", "ggx", "dual_ggx"}) {
+    PipelineConfig c = small_config("wrap");
+    set_config_field(c, "specular", spec);
+    const FrameOutput out = render(c);
+    const sim::DrawCounters& skin = skin_draw(out);
+    EXPECT_EQ(skin.fragment_program, std::string("wrap_fs_") + spec);
+    EXPECT_EQ(skin.fragment_profile.texture_reads_dependent, 0u) << spec;
+    EXPECT_GT(skin.fragment_profile.alu_ops(), 0u);
+  }
+}
+
+TEST(TechniqueReads, DerivativeCurvatureReplacesTheCurvatureTexture) {
+  PipelineConfig c = small_config("preintegrated");
+  set_config_field(c, "curvature", "derivatives");
+  const FrameOutput out = render(c);
+  const sim::DrawCounters& skin = skin_draw(out);
+  EXPECT_EQ(skin.fragment_program, "preintegrated_fs_derivatives");
+  EXPECT_EQ(skin.fragment_profile.texture_reads_independent, 3u);
+  EXPECT_EQ(skin.fragment_profile.texture_reads_dependent, 4u);
+}
+
+TEST(TechniqueCost, TextureSpaceTrafficGrowsWithTheTextureSize) {
+  const auto traffic = [](const std::string& size) {
+    PipelineConfig c = small_config("texture-space");
+    set_config_field(c, "texture_space_size", size);
+    const FrameOutput out = render(c);
+    std::uint64_t bytes = 0;
+    for (const auto& p : out.passes) {
+      if (p.name != "skin") bytes += p.color_store_bytes + p.texture.dram_bytes;
+    }
+    return bytes;
+  };
+  const std::uint64_t small = traffic("64"), large = traffic("128");
+  EXPECT_GT(large, 3 * small);  // 4x the texels
+}
+
+TEST(TechniqueLook, WrapBrightensTheShadowSide) {
+  PipelineConfig none = small_config("wrap");
+  set_config_field(none, "wrap", "0");
+  PipelineConfig full = small_config("wrap");
+  set_config_field(full, "wrap", "1");
+  const glm::vec3 a = centre_mean(render(none).frame), b = centre_mean(render(full).frame);
+  EXPECT_GT(b.r + b.g + b.b, a.r + a.g + a.b);
+}
+
+}  // namespace
+}  // namespace skinsim::pipeline
