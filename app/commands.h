@@ -12,6 +12,7 @@ using Command = std::function<int()>;
 Command add_run_command(CLI::App& app);
 Command add_devices_command(CLI::App& app);
 Command add_shaders_command(CLI::App& app);
+Command add_sweep_command(CLI::App& app);
 Command add_microbench_command(CLI::App& app);
 
 }  // namespace skinsim::app

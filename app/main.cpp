@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   add(skinsim::app::add_run_command(app));
   add(skinsim::app::add_devices_command(app));
   add(skinsim::app::add_shaders_command(app));
+  add(skinsim::app::add_sweep_command(app));
   add(skinsim::app::add_microbench_command(app));
   try {
     app.parse(argc, argv);

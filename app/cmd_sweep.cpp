@@ -1,0 +1,196 @@
+// `skinsim sweep`: many pipeline configurations on one scene, their cost and quality against a
+// shared reference, results.json/csv, VTK charts and report.html. Resumable; Ctrl-C keeps every
+// finished configuration.
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <csignal>
+#include <filesystem>
+
+#include "app/cli_options.h"
+#include "app/commands.h"
+#include "driver/sweep_file.h"
+#include "driver/sweep_report.h"
+#include "driver/sweep_results.h"
+#include "driver/sweep_run.h"
+#include "driver/sweep_spec.h"
+#include "reports/pareto.h"
+
+namespace skinsim::app {
+
+namespace {
+
+// Set by the SIGINT handler; the sweep starts no new configuration once it is set.
+std::atomic<bool> g_interrupted{false};
+static_assert(std::atomic<bool>::is_always_lock_free, "used from a signal handler");
+
+void on_sigint(int) {
+  g_interrupted.store(true);
+  constexpr char kMessage[] =
+      "\nskinsim sweep: interrupted: finishing the configurations in flight (Ctrl-C again to "
+      "abort at once; finished results are kept)\n";
+  [[maybe_unused]] const ssize_t n = write(STDERR_FILENO, kMessage, sizeof kMessage - 1);
+  std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C ends the process
+}
+
+// 128 + SIGINT: what a shell reports for a program stopped by Ctrl-C.
+constexpr int kInterruptedExit = 130;
+
+struct SweepOptions {
+  std::string sweep_file;
+  std::map<std::string, std::vector<std::string>> axes;  // knob -> values, from options
+  std::map<std::string, std::string> axis_flags;         // knob -> the option's name
+  std::vector<std::string> fixed;                        // "knob=value"
+  driver::SceneSource scene;
+  std::vector<std::string> scene_flags_given;
+  std::string data_dir;
+  int threads = 0;
+  std::string out = "out/sweep";
+  bool charts = true;
+  bool require_charts = false;
+  double budget_ms = 0.0;  // 0 = the sweep file's or 33.3
+};
+
+driver::SweepSpec build_spec(const SweepOptions& o, const CLI::App& cmd) {
+  driver::SweepSpec spec =
+      o.sweep_file.empty() ? driver::default_sweep_spec() : driver::parse_sweep_file(o.sweep_file);
+  for (const auto& [knob, values] : o.axes) {
+    if (values.empty()) continue;
+    std::vector<std::string> v = values;
+    if (knob == "technique" && v == std::vector<std::string>{"all"}) {
+      v = pipeline::technique_names();
+    }
+    driver::set_axis(spec, knob, v, o.axis_flags.at(knob));
+  }
+  for (const std::string& f : o.fixed) {
+    const auto eq = f.find('=');
+    if (eq == std::string::npos) {
+      throw driver::SweepError(fmt::format("--set: expected knob=value, got '{}'", f));
+    }
+    spec.fixed.push_back({f.substr(0, eq), f.substr(eq + 1), "--set " + f});
+  }
+  // Scene options override the sweep file's only when given.
+  if (o.sweep_file.empty()) {
+    spec.scene = o.scene;
+  } else {
+    if (cmd.get_option("--scene")->count()) spec.scene.path = o.scene.path;
+    if (cmd.get_option("--head-triangles")->count())
+      spec.scene.head_triangles = o.scene.head_triangles;
+    if (cmd.get_option("--texture-size")->count()) spec.scene.texture_size = o.scene.texture_size;
+    if (cmd.get_option("--skin-materials")->count())
+      spec.scene.skin_materials = o.scene.skin_materials;
+    if (cmd.get_option("--units-per-mm")->count()) spec.scene.units_per_mm = o.scene.units_per_mm;
+  }
+  if (o.budget_ms > 0.0) spec.budget_ms = o.budget_ms;
+  return spec;
+}
+
+void print_recommendation(const reports::SweepTable& table) {
+  const auto knee =
+      reports::pareto_knee(table.rows, driver::kRecommendMetric, false, table.budget_ms);
+  if (!knee) {
+    fmt::print("no configuration fits the {:.1f} ms budget\n", table.budget_ms);
+    return;
+  }
+  const reports::ConfigResult& r = table.rows[*knee];
+  fmt::print("recommended: {} ({}): {:.2f} ms ({:.1f} fps), FLIP over skin {:.4f}\n", r.id, r.label,
+             r.frame_ms, r.fps, r.quality.at(driver::kRecommendMetric));
+}
+
+int run(const SweepOptions& o, const CLI::App& cmd) {
+  const driver::SweepSpec spec = build_spec(o, cmd);
+  const std::vector<driver::SweepConfig> configs = driver::expand_sweep(spec);
+
+  driver::SweepRunOptions run_options;
+  run_options.out_dir = o.out;
+  run_options.data_dir = o.data_dir.empty() ? default_data_dir() : o.data_dir;
+  run_options.threads = o.threads;
+  run_options.cancel = &g_interrupted;
+  g_interrupted.store(false);
+  std::signal(SIGINT, on_sigint);
+  const driver::SweepRunSummary summary = driver::run_sweep(spec, configs, run_options);
+  std::signal(SIGINT, SIG_DFL);
+
+  fmt::print("skinsim sweep: {} configurations on {}: {} computed, {} resumed{} in {:.1f} s\n",
+             summary.total, spec.scene.label(), summary.computed.size(), summary.resumed,
+             summary.not_run ? fmt::format(", {} not run", summary.not_run) : "", summary.seconds);
+  const reports::SweepTable table = driver::assemble_sweep_table(spec, configs, o.out);
+  driver::write_sweep_data(table, o.out);
+  std::vector<std::string> written = {"results.json", "results.csv", "configs/"};
+  if (summary.cancelled) {
+    fmt::print(
+        "interrupted: {} of {} configurations finished; wrote {}/{{{}}}; run the same "
+        "command again to resume\n",
+        table.rows.size(), summary.total, o.out, fmt::join(written, ", "));
+    return kInterruptedExit;
+  }
+
+  const driver::SweepReportOutcome report = driver::write_sweep_report(table, o.out, o.charts);
+  if (!report.report_path.empty()) {
+    written.push_back(report.charts_drawn ? "report.html + charts" : "report.html (no charts)");
+  }
+  if (!report.note.empty()) fmt::print(stderr, "skinsim sweep: note: {}\n", report.note);
+  print_recommendation(table);
+  fmt::print("wrote {}/{{{}}}\n", o.out, fmt::join(written, ", "));
+  return o.charts && o.require_charts && !report.charts_drawn ? 1 : 0;
+}
+
+void axis_option(CLI::App& cmd, SweepOptions& o, const std::string& flag, const std::string& knob,
+                 const std::string& help) {
+  o.axis_flags[knob] = flag;
+  cmd.add_option(flag, o.axes[knob], help)->delimiter(',');
+}
+
+}  // namespace
+
+Command add_sweep_command(CLI::App& app) {
+  auto o = std::make_shared<SweepOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "sweep",
+      "Run many pipeline configurations (default: 4 buffer scales x 4 LUT sizes on ipad4), "
+      "compare each with the reference, write results.csv/json, charts and report.html");
+  cmd->add_option("--sweep-file", o->sweep_file,
+                  "TOML sweep file ([axes], [fixed], [scene], "
+                  "[report]; see docs/sweeps.md)")
+      ->check(CLI::ExistingFile);
+  axis_option(*cmd, *o, "--scales", "scale",
+              "Integration-buffer scales, e.g. 1,0.5,0.25,0.125 (default sweep: those)");
+  axis_option(*cmd, *o, "--luts", "lut",
+              "BRDF LUT sizes WxH, e.g. 8x32,16x64,32x128,64x256 (default sweep: those)");
+  axis_option(*cmd, *o, "--lut-formats", "lut_format", "BRDF LUT formats: rgba8,rgba16f");
+  axis_option(*cmd, *o, "--blur-iterations", "blur_iterations",
+              "Blur iteration counts, e.g. 1,2,4");
+  axis_option(*cmd, *o, "--techniques", "technique",
+              "Techniques (" + fmt::format("{}", fmt::join(pipeline::technique_names(), ", ")) +
+                  ") or 'all'");
+  axis_option(*cmd, *o, "--devices", "device",
+              "Device profiles: shipped names (see `skinsim devices`) or .toml files");
+  axis_option(*cmd, *o, "--resolutions", "resolution",
+              "Render resolutions WxH, or 'display' for the device's (default)");
+  cmd->add_option("--set", o->fixed,
+                  "Hold a knob fixed for every configuration: knob=value (repeatable; knobs as "
+                  "in `skinsim run`, e.g. blur_width_mm=2, gamma=srgb)");
+  add_scene_options(*cmd, o->scene);
+  cmd->add_option("--data-dir", o->data_dir,
+                  "Directory holding devices/*.toml (default: $SKINSIM_DATA_DIR or the source "
+                  "tree's data/)");
+  cmd->add_option("--threads", o->threads,
+                  "Host worker threads; 0 = all cores (results are identical for any count)")
+      ->check(CLI::Range(0, 256))
+      ->capture_default_str();
+  cmd->add_option("--out", o->out, "Sweep directory (re-running into it resumes)")
+      ->capture_default_str();
+  cmd->add_option("--budget-ms", o->budget_ms,
+                  "Frame budget for the recommendation (default: the sweep file's, else 33.3)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("!--no-charts", o->charts,
+                "Write report.html without the VTK charts (no X display needed)");
+  cmd->add_flag("--require-charts", o->require_charts,
+                "Exit 1 if the charts cannot be drawn (default: warn and write the report "
+                "without them)");
+  return [o, cmd] { return run(*o, *cmd); };
+}
+
+}  // namespace skinsim::app

@@ -1,0 +1,127 @@
+#include "driver/sweep_config_result.h"
+
+#include <fmt/format.h>
+
+#include <fstream>
+
+#include "gpu_model/sensitivity.h"
+#include "gpu_model/timing.h"
+
+namespace skinsim::driver {
+
+namespace {
+
+constexpr int kFormatVersion = 1;
+
+std::map<std::string, double> dram_by_cause(const gpu_model::DramBytes& d) {
+  return {{"parameter_write", d.parameter_write},
+          {"parameter_read", d.parameter_read},
+          {"texture", d.texture},
+          {"color_load", d.color_load},
+          {"color_store", d.color_store},
+          {"depth_load", d.depth_load},
+          {"depth_store", d.depth_store}};
+}
+
+}  // namespace
+
+reports::ConfigResult config_row(const SweepConfig& config, const FrameResult& frame,
+                                 const FrameQuality& quality, const std::string& frame_image,
+                                 const std::string& error_image) {
+  reports::ConfigResult row;
+  row.id = config.id;
+  row.label = config.label;
+  for (const auto& [knob, value] : all_knobs(config, frame.config.width, frame.config.height)) {
+    row.knobs[knob] = value;
+  }
+  row.frame_ms = frame.timing.frame_ms;
+  row.fps = frame.timing.fps;
+  row.dram_bytes = frame.timing.dram_bytes;
+  for (const gpu_model::PassTiming& p : frame.timing.passes) {
+    row.passes.push_back({p.name, p.ms, gpu_model::unit_name(p.bottleneck), dram_by_cause(p.dram)});
+  }
+  row.quality = quality.metrics;
+  row.frame_image = frame_image;
+  row.error_image = error_image;
+  return row;
+}
+
+std::optional<reports::TileHeatmap> pass_heatmap(const FrameResult& frame, const std::string& pass,
+                                                 const std::string& config_id) {
+  for (std::size_t i = 0; i < frame.timing.passes.size(); ++i) {
+    const gpu_model::PassTiming& timing = frame.timing.passes[i];
+    if (timing.name != pass) continue;
+    const sim::PassCounters& counters = frame.output.passes.at(i);
+    reports::TileHeatmap map;
+    map.tiles_x = counters.tiles_x;
+    map.tiles_y = counters.tiles_y;
+    map.tile_size = counters.tile_size;
+    map.pass_name = pass;
+    map.config_id = config_id;
+    const std::size_t n = static_cast<std::size_t>(map.tiles_x) * map.tiles_y;
+    map.ms.assign(n, 0.0);
+    map.bottleneck.assign(n, gpu_model::unit_name(gpu_model::Unit::kOverhead));
+    // Tile rows count from the top of the frame, as the images and the heat map do.
+    for (const gpu_model::TileTiming& t : timing.tiles) {
+      const std::size_t k = static_cast<std::size_t>(t.tile_y) * map.tiles_x + t.tile_x;
+      if (k >= n) continue;
+      map.ms[k] = t.ms;
+      map.bottleneck[k] = gpu_model::unit_name(t.bottleneck);
+    }
+    return map;
+  }
+  return std::nullopt;
+}
+
+void add_sensitivity(const FrameResult& frame, const gpu_model::DeviceProfile& device,
+                     StoredConfig& stored) {
+  bool skipped_recount = false;
+  for (const gpu_model::SensitivityRow& s : gpu_model::sensitivity(frame.output.passes, device)) {
+    stored.assumptions.push_back(
+        fmt::format("{} = {} {} ({} confidence; plausible {} to {})", s.figure, s.value_base,
+                    s.unit, gpu_model::confidence_name(s.confidence), s.value_min, s.value_max));
+    if (!s.frame_ms_min || !s.frame_ms_max) {
+      skipped_recount = true;
+      continue;
+    }
+    stored.sensitivity.push_back({s.figure, s.unit, s.value_min, s.value_base, s.value_max,
+                                  *s.frame_ms_min, s.frame_ms_base, *s.frame_ms_max});
+  }
+  if (skipped_recount) {
+    stored.assumptions.push_back(
+        "Figures that change what the emulator counts (texture cache, tile size) are not "
+        "re-emulated in sweeps; `skinsim run --sensitivity` gives their effect.");
+  }
+}
+
+nlohmann::json to_json(const StoredConfig& stored) {
+  nlohmann::json j = {{"format", kFormatVersion},
+                      {"fingerprint", stored.fingerprint},
+                      {"row", stored.row},
+                      {"sensitivity", stored.sensitivity},
+                      {"assumptions", stored.assumptions}};
+  if (stored.heatmap) j["heatmap"] = *stored.heatmap;
+  return j;
+}
+
+std::optional<StoredConfig> read_stored_config(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) return std::nullopt;
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (j.is_discarded() || !j.is_object() || j.value("format", 0) != kFormatVersion) {
+    return std::nullopt;
+  }
+  try {
+    StoredConfig s;
+    s.fingerprint = j.at("fingerprint");
+    s.row = j.at("row").get<reports::ConfigResult>();
+    s.sensitivity = j.at("sensitivity").get<std::vector<reports::SensitivityRow>>();
+    s.assumptions = j.at("assumptions").get<std::vector<std::string>>();
+    if (j.contains("heatmap")) s.heatmap = j["heatmap"].get<reports::TileHeatmap>();
+    return s;
+  } catch (const std::exception&) {
+    return std::nullopt;  // incomplete or from another version: compute it again
+  }
+}
+
+}  // namespace skinsim::driver

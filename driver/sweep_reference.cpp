@@ -1,0 +1,90 @@
+#include "driver/sweep_reference.h"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
+
+#include "driver/sweep_spec.h"
+#include "pipeline/reference/reference.h"
+#include "quality/image.h"
+#include "reports/atomic_file.h"
+
+namespace skinsim::driver {
+
+namespace {
+
+nlohmann::json reference_fingerprint(const pipeline::PipelineConfig& c, const SceneSource& s) {
+  nlohmann::json knobs = nlohmann::json::object();
+  for (const char* key : {"resolution", "lobe1", "lobe2", "specular_intensity"}) {
+    knobs[key] = pipeline::get_config_field(c, key);
+  }
+  return {{"knobs", knobs},
+          {"scene",
+           {{"label", s.label()},
+            {"head_triangles", s.head_triangles},
+            {"texture_size", s.texture_size},
+            {"skin_materials", s.skin_materials},
+            {"units_per_mm", s.units_per_mm}}}};
+}
+
+// The 8-bit quantisation reference_images applies, applied to a loaded PNG too, so the
+// cached and the fresh reference hold exactly the same floats.
+void quantise(quality::Image& image) {
+  for (glm::vec3& c : image.rgb) c = glm::round(c * 255.0f) / 255.0f;
+}
+
+bool load_cached(const std::filesystem::path& marker, const nlohmann::json& fingerprint,
+                 const std::filesystem::path& image_path, const std::filesystem::path& mask_path,
+                 ReferenceImages& out) {
+  std::ifstream in(marker);
+  if (!in) return false;
+  const nlohmann::json stored = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (stored.is_discarded() || !stored.contains("fingerprint") ||
+      stored["fingerprint"] != fingerprint) {
+    return false;
+  }
+  try {
+    out.image = quality::load_png(image_path);
+    out.skin = quality::load_mask_png(mask_path);
+  } catch (const std::exception&) {
+    return false;  // damaged or deleted by hand: render again
+  }
+  quantise(out.image);
+  return out.image.width == out.skin.width && out.image.height == out.skin.height;
+}
+
+}  // namespace
+
+std::string reference_stem(const pipeline::PipelineConfig& resolved, const SceneSource& scene) {
+  return fmt::format("reference_{}x{}_{}", resolved.width, resolved.height,
+                     short_hash(reference_fingerprint(resolved, scene).dump()).substr(0, 8));
+}
+
+ReferenceImages cached_reference(const pipeline::GpuScene& scene,
+                                 const pipeline::PipelineConfig& resolved,
+                                 const SceneSource& source, const std::filesystem::path& refs_dir,
+                                 int threads, bool* rendered) {
+  const std::string stem = reference_stem(resolved, source);
+  const std::filesystem::path image_path = refs_dir / (stem + ".png");
+  const std::filesystem::path mask_path = refs_dir / (stem + "_skin.png");
+  const std::filesystem::path marker = refs_dir / (stem + ".json");
+  const nlohmann::json fingerprint = reference_fingerprint(resolved, source);
+
+  ReferenceImages images;
+  if (load_cached(marker, fingerprint, image_path, mask_path, images)) {
+    if (rendered) *rendered = false;
+    return images;
+  }
+  images = reference_images(pipeline::render_reference(scene, resolved, threads));
+  std::filesystem::create_directories(refs_dir);
+  quality::save_png(images.image, image_path);
+  quality::save_mask_png(images.skin, mask_path);
+  reports::write_file_atomically(marker.string(),
+                                 nlohmann::json{{"fingerprint", fingerprint}}.dump(2) + "\n");
+  if (rendered) *rendered = true;
+  return images;
+}
+
+}  // namespace skinsim::driver

@@ -1,0 +1,31 @@
+// The reference frame of a sweep, rendered once per (scene, resolution, material knobs) and
+// cached in the sweep directory (refs/), so a resumed sweep does not render it again.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "driver/frame_quality.h"
+#include "driver/scene_source.h"
+#include "pipeline/config.h"
+#include "pipeline/gpu_scene.h"
+
+namespace skinsim::driver {
+
+// File stem of the reference a resolved configuration is compared against, e.g.
+// "reference_2048x1536_1f0c...". The reference depends on the configuration only through
+// the resolution and the BRDF parameters (lobe1, lobe2, specular_intensity: see
+// pipeline/reference/reference.cpp and brdf_lut_params), so configurations that differ in
+// other knobs share it.
+std::string reference_stem(const pipeline::PipelineConfig& resolved, const SceneSource& scene);
+
+// Loads refs/<stem>.png and its skin mask from `refs_dir` if a complete cached copy exists,
+// else renders the reference with `threads` host threads and writes it there (atomically;
+// the .json marker last). `rendered` (optional) tells which happened. Both paths give
+// bit-identical images.
+ReferenceImages cached_reference(const pipeline::GpuScene& scene,
+                                 const pipeline::PipelineConfig& resolved,
+                                 const SceneSource& source, const std::filesystem::path& refs_dir,
+                                 int threads, bool* rendered = nullptr);
+
+}  // namespace skinsim::driver

@@ -1,0 +1,31 @@
+#include "driver/sweep_report.h"
+
+#include "driver/sweep_results.h"
+#include "reports/display_check.h"
+#include "reports/html_report.h"
+
+namespace skinsim::driver {
+
+SweepReportOutcome write_sweep_report(const reports::SweepTable& table, const std::string& out_dir,
+                                      bool charts) {
+  SweepReportOutcome outcome;
+  if (table.rows.empty()) {
+    outcome.note = "no finished configuration: no report";
+    return outcome;
+  }
+  std::string why;
+  if (charts && !reports::charts_available(&why)) {
+    outcome.note = why;
+    charts = false;
+  }
+  reports::ReportOptions options;
+  options.quality_metric = kRecommendMetric;
+  options.higher_is_better = false;
+  options.draw_charts = charts;
+  options.write_data_files = false;  // write_sweep_data writes results.json / results.csv
+  outcome.report_path = reports::write_report(table, out_dir, options);
+  outcome.charts_drawn = charts;
+  return outcome;
+}
+
+}  // namespace skinsim::driver

@@ -1,0 +1,24 @@
+// report.html and the VTK charts of a sweep (reports::write_report), or, when charts cannot
+// be drawn (no X display, or a build without VTK), the reason.
+#pragma once
+
+#include <string>
+
+#include "reports/sweep_table.h"
+
+namespace skinsim::driver {
+
+struct SweepReportOutcome {
+  std::string report_path;  // "" when no report was written
+  bool charts_drawn = false;
+  std::string note;  // why charts or the report are missing ("" if nothing is)
+};
+
+// Writes out_dir/report.html, with the charts when `charts` is set and an X display is
+// available; without a display the report is written without charts and `note` says how to
+// get them (run under `xvfb-run -a` or pass --no-charts). Throws reports::ReportError on
+// write failures.
+SweepReportOutcome write_sweep_report(const reports::SweepTable& table, const std::string& out_dir,
+                                      bool charts);
+
+}  // namespace skinsim::driver

@@ -1,0 +1,75 @@
+#include "driver/sweep_results.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <filesystem>
+#include <optional>
+#include <set>
+
+#include "driver/sweep_config_result.h"
+#include "driver/sweep_run.h"
+#include "reports/csv_writer.h"
+#include "reports/pareto.h"
+
+namespace skinsim::driver {
+
+namespace {
+
+// Stored results belong to a configuration when every swept knob has the swept value (run_sweep
+// has already replaced stored results whose full fingerprint no longer matched).
+bool belongs_to(const StoredConfig& stored, const SweepConfig& config) {
+  if (reports::knob_value(stored.row, "device") != config.device) return false;
+  for (const auto& [knob, value] : config.swept) {
+    if (reports::knob_value(stored.row, knob) != value) return false;
+  }
+  return true;
+}
+
+std::string joined(const std::set<std::string>& values) {
+  return fmt::format("{}", fmt::join(values, ", "));
+}
+
+}  // namespace
+
+reports::SweepTable assemble_sweep_table(const SweepSpec& spec,
+                                         const std::vector<SweepConfig>& configs,
+                                         const std::string& out_dir) {
+  reports::SweepTable table;
+  table.scene = spec.scene.label();
+  table.budget_ms = spec.budget_ms;
+  std::vector<StoredConfig> stored;
+  std::set<std::string> devices, resolutions;
+  for (const SweepConfig& c : configs) {
+    std::optional<StoredConfig> s =
+        read_stored_config(std::filesystem::path(out_dir) / config_json_path(c.id));
+    if (!s || !belongs_to(*s, c)) continue;
+    devices.insert(reports::knob_value(s->row, "device"));
+    resolutions.insert(reports::knob_value(s->row, "resolution"));
+    table.rows.push_back(s->row);
+    stored.push_back(std::move(*s));
+  }
+  table.device = joined(devices);
+  table.resolution = joined(resolutions);
+  if (stored.empty()) return table;
+
+  const std::optional<std::size_t> knee =
+      reports::pareto_knee(table.rows, kRecommendMetric, false, table.budget_ms);
+  const StoredConfig& chosen = stored[knee.value_or(0)];
+  table.heatmap = chosen.heatmap;
+  table.sensitivity = chosen.sensitivity;
+  table.assumptions.push_back(fmt::format(
+      "Device figures, heat map and sensitivity are those of configuration '{}' ({}).",
+      chosen.row.id, knee ? "the recommended one" : "none fits the budget; the first one"));
+  table.assumptions.insert(table.assumptions.end(), chosen.assumptions.begin(),
+                           chosen.assumptions.end());
+  return table;
+}
+
+void write_sweep_data(const reports::SweepTable& table, const std::string& out_dir) {
+  const std::filesystem::path dir(out_dir);
+  reports::write_sweep_json(table, (dir / "results.json").string());
+  reports::write_sweep_csv(table, (dir / "results.csv").string());
+}
+
+}  // namespace skinsim::driver

@@ -1,0 +1,85 @@
+// What a sweep runs: axes of knob values (any pipeline knob by name, plus `device`), knobs held
+// fixed, and the scene; expanded into configurations with short, stable, readable ids.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "driver/scene_source.h"
+#include "pipeline/config.h"
+
+namespace skinsim::driver {
+
+// Bad sweep input (an unknown knob, a bad value, a broken sweep file); the message names the
+// option or file, line and key at fault.
+class SweepError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// One swept knob: every value is tried with every value of the other axes.
+struct SweepAxis {
+  std::string knob;                 // a key of pipeline::config_field_names(), or "device"
+  std::vector<std::string> values;  // as given; canonicalised by expand_sweep
+  std::string origin;               // where it came from, for errors: "--scales", "s.toml:4"
+};
+
+// A knob every configuration shares (e.g. blur_iterations = 2).
+struct FixedKnob {
+  std::string knob;
+  std::string value;
+  std::string origin;
+};
+
+struct SweepSpec {
+  std::vector<SweepAxis> axes;  // the first axis varies slowest
+  std::vector<FixedKnob> fixed;
+  SceneSource scene;
+  double budget_ms = 1000.0 / 30.0;  // frame budget the report recommends within
+};
+
+// The default sweep: integration-buffer scales 1, 0.5, 0.25, 0.125 x BRDF LUT sizes 8x32,
+// 16x64, 32x128, 64x256, on ipad4 at its display resolution, built-in scene.
+SweepSpec default_sweep_spec();
+
+// Adds an axis, replacing an existing axis of the same knob (the command line overrides a
+// sweep file this way). Throws SweepError naming `origin` for an unknown knob or no values.
+void set_axis(SweepSpec& spec, const std::string& knob, const std::vector<std::string>& values,
+              const std::string& origin);
+
+// The knob names an axis or a fixed knob may use: config_field_names() and "device".
+std::vector<std::string> sweep_knob_names();
+
+struct SweepConfig {
+  std::string id;      // unique in the sweep, file-name safe, e.g. "scale0.5_lut32x128"
+  std::string label;   // e.g. "scale 0.5, lut 32x128"
+  std::string device;  // profile name or .toml path
+  pipeline::PipelineConfig config;  // fixed and swept knobs applied, validated (resolution
+                                    // 0x0 = the device's display, resolved at run time)
+  std::vector<std::pair<std::string, std::string>> swept;  // (knob, canonical value), axis order
+};
+
+// Every combination of the axes' values, in axis order (last axis fastest). Values are
+// validated and canonicalised through pipeline::set_config_field/get_config_field ("1.0" ->
+// "1"), and every configuration through PipelineConfig::validate(). Throws SweepError naming
+// the axis origin and value, or a duplicate value on one axis.
+std::vector<SweepConfig> expand_sweep(const SweepSpec& spec);
+
+// Everything a finished configuration's results depend on that the sweep controls: every
+// pipeline knob (resolution resolved to `width`x`height`), the device and the scene options.
+// A stored result is reused only when its fingerprint equals this one.
+nlohmann::json config_fingerprint(const SweepConfig& config, const SceneSource& scene, int width,
+                                  int height);
+
+// Knob values as reports::ConfigResult::knobs holds them: every pipeline knob plus device,
+// with the resolution resolved.
+std::vector<std::pair<std::string, std::string>> all_knobs(const SweepConfig& config, int width,
+                                                           int height);
+
+// FNV-1a 64-bit hash of `text` as 16 hex digits (file names of cached references).
+std::string short_hash(const std::string& text);
+
+}  // namespace skinsim::driver

@@ -1,0 +1,199 @@
+// Tiny sweeps on the built-in scene (256x192, small mesh and texture): the files a sweep
+// writes, resume, cancellation and thread-count invariance.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "driver/sweep_results.h"
+#include "driver/sweep_run.h"
+#include "driver/sweep_spec.h"
+#include "reports/sweep_table.h"
+
+namespace skinsim::driver {
+namespace {
+
+namespace fs = std::filesystem;
+
+SweepSpec tiny_spec() {
+  SweepSpec spec;
+  set_axis(spec, "scale", {"0.5", "0.25"}, "test");
+  spec.fixed.push_back({"resolution", "256x192", "test"});
+  spec.scene.head_triangles = 2000;
+  spec.scene.texture_size = 64;
+  return spec;
+}
+
+// A fresh directory per test, kept after the run for inspection.
+fs::path out_dir(const std::string& name) {
+  const fs::path dir = fs::path(SKINSIM_TEST_OUT_DIR) / name;
+  fs::remove_all(dir);
+  return dir;
+}
+
+SweepRunOptions options(const fs::path& dir, int threads) {
+  SweepRunOptions o;
+  o.out_dir = dir.string();
+  o.data_dir = SKINSIM_TEST_DATA_DIR;
+  o.threads = threads;
+  o.progress = nullptr;
+  return o;
+}
+
+std::string read_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Runs the sweep and writes results.json/csv; returns the table.
+reports::SweepTable run_and_write(const SweepSpec& spec, const SweepRunOptions& o,
+                                  SweepRunSummary* summary = nullptr) {
+  const std::vector<SweepConfig> configs = expand_sweep(spec);
+  const SweepRunSummary s = run_sweep(spec, configs, o);
+  if (summary) *summary = s;
+  reports::SweepTable table = assemble_sweep_table(spec, configs, o.out_dir);
+  write_sweep_data(table, o.out_dir);
+  return table;
+}
+
+TEST(SweepRun, WritesOneRowPerConfigurationWithCostAndQuality) {
+  const fs::path dir = out_dir("rows");
+  SweepRunSummary summary;
+  const reports::SweepTable table = run_and_write(tiny_spec(), options(dir, 2), &summary);
+  EXPECT_EQ(summary.total, 2);
+  EXPECT_EQ(summary.computed.size(), 2u);
+  EXPECT_EQ(summary.references_rendered, 1);  // one reference shared by both
+
+  const reports::SweepTable read = reports::read_sweep_json((dir / "results.json").string());
+  ASSERT_EQ(read.rows.size(), 2u);
+  EXPECT_EQ(read.rows[0].id, "scale0.5");
+  EXPECT_EQ(read.rows[1].id, "scale0.25");
+  EXPECT_EQ(read.resolution, "256x192");
+  EXPECT_EQ(read.device, "ipad4");
+  for (const reports::ConfigResult& r : read.rows) {
+    EXPECT_GT(r.frame_ms, 0.0);
+    EXPECT_NEAR(r.fps, 1000.0 / r.frame_ms, 1e-6 * r.fps);
+    EXPECT_GT(r.dram_bytes, 0.0);
+    EXPECT_EQ(reports::knob_value(r, "technique"), "mobile");
+    EXPECT_EQ(reports::knob_value(r, "lut"), "32x128");
+    ASSERT_FALSE(r.passes.empty());
+    for (const char* m :
+         {"psnr_skin", "ssim_skin", "flip_skin", "psnr_frame", "ssim_frame", "flip_frame"}) {
+      ASSERT_TRUE(r.quality.count(m)) << m;
+    }
+    EXPECT_GT(r.quality.at("ssim_skin"), 0.5);  // the pipeline approximates the reference
+    EXPECT_LT(r.quality.at("flip_skin"), 0.5);
+    EXPECT_TRUE(fs::exists(dir / r.frame_image)) << r.frame_image;
+    EXPECT_TRUE(fs::exists(dir / r.error_image)) << r.error_image;
+  }
+  // A quarter-size integration buffer stores fewer tiles than a half-size one.
+  ASSERT_EQ(read.rows[0].passes.front().name, "irradiance");
+  EXPECT_LT(read.rows[1].passes.front().dram_bytes_by_cause.at("color_store"),
+            read.rows[0].passes.front().dram_bytes_by_cause.at("color_store"));
+  ASSERT_TRUE(read.heatmap.has_value());
+  EXPECT_EQ(read.heatmap->pass_name, "skin");
+  EXPECT_EQ(read.heatmap->tiles_x, 8);
+  EXPECT_EQ(read.heatmap->tiles_y, 6);
+  EXPECT_FALSE(read.assumptions.empty());
+
+  const std::string csv = read_file(dir / "results.csv");
+  const std::string header = csv.substr(0, csv.find('\n'));
+  for (const char* column : {"id", "scale", "lut", "device", "frame_ms", "fps", "dram_bytes",
+                             "skin.ms", "skin.bottleneck", "flip_skin", "psnr_skin"}) {
+    EXPECT_NE(header.find(column), std::string::npos) << column << " in " << header;
+  }
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3);  // header + 2 rows
+}
+
+TEST(SweepRun, ResumeComputesOnlyWhatIsMissing) {
+  const fs::path dir = out_dir("resume");
+  const SweepSpec spec = tiny_spec();
+  run_and_write(spec, options(dir, 2));
+  const std::string results_before = read_file(dir / "results.json");
+
+  SweepRunSummary again;
+  run_and_write(spec, options(dir, 2), &again);
+  EXPECT_EQ(again.resumed, 2);
+  EXPECT_TRUE(again.computed.empty());
+  EXPECT_EQ(again.references_rendered, 0);  // loaded from refs/
+
+  fs::remove(dir / config_json_path("scale0.25"));
+  SweepRunSummary partial;
+  run_and_write(spec, options(dir, 2), &partial);
+  EXPECT_EQ(partial.resumed, 1);
+  EXPECT_EQ(partial.computed, std::vector<std::string>{"scale0.25"});
+  EXPECT_EQ(partial.references_rendered, 0);
+  // The cached reference gives the same metrics as the freshly rendered one.
+  EXPECT_EQ(read_file(dir / "results.json"), results_before);
+
+  // A changed knob invalidates the stored result of the same id.
+  SweepSpec changed = spec;
+  changed.fixed.push_back({"blur_iterations", "2", "test"});
+  SweepRunSummary recomputed;
+  run_and_write(changed, options(dir, 2), &recomputed);
+  EXPECT_EQ(recomputed.resumed, 0);
+  EXPECT_EQ(recomputed.computed.size(), 2u);
+}
+
+TEST(SweepRun, CancellationLeavesOnlyCompleteFiles) {
+  const fs::path dir = out_dir("cancel");
+  SweepSpec spec = tiny_spec();
+  set_axis(spec, "lut", {"8x32", "32x128"}, "test");  // 4 configurations
+  std::atomic<bool> cancel{false};
+  SweepRunOptions o = options(dir, 1);
+  o.cancel = &cancel;
+  o.on_finished = [&](const std::string&) { cancel = true; };  // "Ctrl-C" after the first
+  SweepRunSummary summary;
+  const reports::SweepTable table = run_and_write(spec, o, &summary);
+  EXPECT_TRUE(summary.cancelled);
+  EXPECT_EQ(summary.computed.size(), 1u);
+  EXPECT_EQ(summary.not_run, 3);
+  EXPECT_EQ(table.rows.size(), 1u);
+
+  // Every file in configs/ belongs to a finished configuration; no temporary files remain.
+  std::set<std::string> files;
+  for (const auto& e : fs::directory_iterator(dir / "configs")) {
+    files.insert(e.path().filename().string());
+  }
+  const std::string id = summary.computed.front();
+  EXPECT_EQ(files, (std::set<std::string>{id + ".json", id + "_frame.png", id + "_flip.png"}));
+
+  // Resuming finishes the rest.
+  cancel = false;
+  o.on_finished = nullptr;
+  SweepRunSummary resumed;
+  run_and_write(spec, o, &resumed);
+  EXPECT_EQ(resumed.resumed, 1);
+  EXPECT_EQ(resumed.computed.size(), 3u);
+  EXPECT_FALSE(resumed.cancelled);
+}
+
+TEST(SweepRun, ResultsDoNotDependOnThreadCount) {
+  const fs::path one = out_dir("threads1");
+  const fs::path two = out_dir("threads2");
+  run_and_write(tiny_spec(), options(one, 1));
+  run_and_write(tiny_spec(), options(two, 2));
+  EXPECT_EQ(read_file(one / "results.json"), read_file(two / "results.json"));
+  EXPECT_EQ(read_file(one / "results.csv"), read_file(two / "results.csv"));
+  for (const char* id : {"scale0.5", "scale0.25"}) {
+    EXPECT_EQ(read_file(one / config_frame_path(id)), read_file(two / config_frame_path(id)));
+    EXPECT_EQ(read_file(one / config_error_path(id)), read_file(two / config_error_path(id)));
+  }
+}
+
+TEST(SweepRun, UnknownDeviceFailsBeforeAnyWork) {
+  const fs::path dir = out_dir("bad_device");
+  SweepSpec spec = tiny_spec();
+  set_axis(spec, "device", {"ipad4", "no_such_device"}, "test");
+  const std::vector<SweepConfig> configs = expand_sweep(spec);
+  EXPECT_ANY_THROW(run_sweep(spec, configs, options(dir, 1)));
+  EXPECT_TRUE(fs::is_empty(dir / "configs"));
+}
+
+}  // namespace
+}  // namespace skinsim::driver
