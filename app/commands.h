@@ -14,5 +14,7 @@ Command add_devices_command(CLI::App& app);
 Command add_shaders_command(CLI::App& app);
 Command add_sweep_command(CLI::App& app);
 Command add_microbench_command(CLI::App& app);
+Command add_check_command(CLI::App& app);
+Command add_baseline_command(CLI::App& app);
 
 }  // namespace skinsim::app

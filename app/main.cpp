@@ -20,6 +20,8 @@ int main(int argc, char** argv) {
   add(skinsim::app::add_shaders_command(app));
   add(skinsim::app::add_sweep_command(app));
   add(skinsim::app::add_microbench_command(app));
+  add(skinsim::app::add_check_command(app));
+  add(skinsim::app::add_baseline_command(app));
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
