@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <fstream>
 
 #include "gpu_model/sensitivity.h"
@@ -40,7 +41,11 @@ reports::ConfigResult config_row(const SweepConfig& config, const FrameResult& f
   for (const gpu_model::PassTiming& p : frame.timing.passes) {
     row.passes.push_back({p.name, p.ms, gpu_model::unit_name(p.bottleneck), dram_by_cause(p.dram)});
   }
-  row.quality = quality.metrics;
+  // The table holds finite numbers only (JSON has no infinity): PSNR of a frame identical to
+  // the reference is +inf, and such a cell is left empty rather than given a made-up value.
+  for (const auto& [name, value] : quality.metrics) {
+    if (std::isfinite(value)) row.quality[name] = value;
+  }
   row.frame_image = frame_image;
   row.error_image = error_image;
   return row;

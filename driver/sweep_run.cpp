@@ -97,15 +97,15 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
                           const SweepRunOptions& options) {
   const Clock::time_point start = Clock::now();
   const fs::path dir(options.out_dir);
-  fs::create_directories(dir / "configs");
 
-  // Devices first: an unknown profile fails before any work.
+  // Devices first: an unknown profile fails before any work or directory.
   std::map<std::string, gpu_model::DeviceProfile> devices;
   for (const SweepConfig& c : configs) {
     if (!devices.count(c.device)) {
       devices.emplace(c.device, gpu_model::load_device_profile(c.device, options.data_dir));
     }
   }
+  fs::create_directories(dir / "configs");
 
   SweepRunSummary summary;
   summary.total = static_cast<int>(configs.size());
