@@ -40,6 +40,39 @@ std::vector<std::string> technique_names() {
   return names;
 }
 
+const std::vector<std::string>& technique_knobs(Technique t) {
+  // The BRDF LUT knobs matter wherever the ks_lut specular model can read the LUT.
+  static const std::vector<std::string> mobile = {
+      "scale",         "lut", "lut_format", "blur_iterations", "blur_width_mm", "normal_offset_mm",
+      "lod_distance_m"};
+  static const std::vector<std::string> lod = {"lut", "lut_format"};
+  static const std::vector<std::string> preintegrated = {"preintegrated_lut", "curvature",
+                                                         "specular", "lut", "lut_format"};
+  static const std::vector<std::string> wrap = {"wrap", "specular", "lut", "lut_format"};
+  static const std::vector<std::string> burley = {"burley_samples", "burley_distance_mm",
+                                                  "specular", "lut", "lut_format"};
+  static const std::vector<std::string> ssss = {"specular", "lut", "lut_format"};
+  static const std::vector<std::string> texture_space = {"texture_space_size", "specular", "lut",
+                                                         "lut_format"};
+  switch (t) {
+    case Technique::kMobile:
+      return mobile;
+    case Technique::kLod:
+      return lod;
+    case Technique::kPreintegrated:
+      return preintegrated;
+    case Technique::kWrap:
+      return wrap;
+    case Technique::kBurley:
+      return burley;
+    case Technique::kSsss:
+      return ssss;
+    case Technique::kTextureSpace:
+      return texture_space;
+  }
+  return ssss;
+}
+
 Technique parse_technique(const std::string& name) {
   for (const Technique t : all_techniques()) {
     if (name == technique_name(t)) return t;

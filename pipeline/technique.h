@@ -24,4 +24,9 @@ Technique parse_technique(const std::string& name);
 const std::vector<Technique>& all_techniques();
 std::vector<std::string> technique_names();
 
+// The knobs (set_config_field keys) a technique's frame depends on besides the ones every
+// technique uses (technique, resolution, gamma, lobe1, lobe2, specular_intensity). A sweep
+// that varies any other knob renders the same frame again for this technique.
+const std::vector<std::string>& technique_knobs(Technique technique);
+
 }  // namespace skinsim::pipeline

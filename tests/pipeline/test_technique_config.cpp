@@ -46,6 +46,20 @@ TEST(TechniqueConfig, KnobsRoundTrip) {
   }
 }
 
+TEST(TechniqueConfig, TechniqueKnobsAreKnownKeys) {
+  const auto& names = config_field_names();
+  for (const Technique t : all_techniques()) {
+    for (const std::string& knob : technique_knobs(t)) {
+      EXPECT_NE(std::find(names.begin(), names.end(), knob), names.end())
+          << technique_name(t) << ": " << knob;
+    }
+  }
+  const auto& mobile = technique_knobs(Technique::kMobile);
+  EXPECT_NE(std::find(mobile.begin(), mobile.end(), "scale"), mobile.end());
+  const auto& burley = technique_knobs(Technique::kBurley);
+  EXPECT_EQ(std::find(burley.begin(), burley.end(), "scale"), burley.end());
+}
+
 void expect_error(const std::string& key, const std::string& value, const std::string& needle) {
   PipelineConfig c;
   try {
