@@ -94,6 +94,46 @@ TEST(Cli, DevicesAndShadersPrintTables) {
   EXPECT_NE(s.output.find("\"texture_reads_dependent\""), std::string::npos);
 }
 
+double frame_ms_of(const std::filesystem::path& result_json) {
+  std::ifstream in(result_json);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto key = text.find("\"frame_ms\"");
+  EXPECT_NE(key, std::string::npos);
+  return std::stod(text.substr(text.find(':', key) + 1));
+}
+
+// A what-if profile: the shipped iPad 4 profile with a higher clock (and its range widened
+// to contain it) runs the same frame faster, by at most the clock ratio.
+TEST(Cli, UserProfileWithHigherClockRunsFaster) {
+  const auto dir = temp_dir("whatif");
+  std::ifstream in(std::string(SKINSIM_DATA_DIR) + "/devices/ipad4.toml");
+  std::string profile((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string from = "value = 300.0\nrange = [280.0, 300.0]";
+  ASSERT_NE(profile.find(from), std::string::npos);
+  profile.replace(profile.find(from), from.size(), "value = 450.0\nrange = [280.0, 450.0]");
+  std::ofstream(dir / "fast.toml") << profile;
+  const std::string common = " --resolution 512x384 --head-triangles 6000 --texture-size 128 --no-reference";
+  ASSERT_EQ(run("run --device ipad4 --out " + (dir / "base").string() + common).exit_code, 0);
+  const Result fast = run("run --device " + (dir / "fast.toml").string() + " --out " +
+                          (dir / "fast").string() + common);
+  ASSERT_EQ(fast.exit_code, 0) << fast.output;
+  const double base_ms = frame_ms_of(dir / "base" / "result.json");
+  const double fast_ms = frame_ms_of(dir / "fast" / "result.json");
+  EXPECT_LT(fast_ms, base_ms);
+  EXPECT_GE(fast_ms, base_ms * 300.0 / 450.0 - 1e-9);
+}
+
+TEST(Cli, InvalidProfileNamesTheField) {
+  const auto dir = temp_dir("badprofile");
+  std::ifstream in(std::string(SKINSIM_DATA_DIR) + "/devices/ipad4.toml");
+  std::string profile((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  profile.replace(profile.find("value = 300.0"), 13, "value = -3.0");
+  std::ofstream(dir / "bad.toml") << profile;
+  const Result r = run("run --no-reference --device " + (dir / "bad.toml").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("gpu.clock_mhz"), std::string::npos) << r.output;
+}
+
 TEST(Cli, RunsTheRealHeadScanAndWritesResults) {
   if (!std::filesystem::exists(SKINSIM_TEST_LEE)) GTEST_SKIP() << "asset not present";
   const auto dir = temp_dir("lee");
