@@ -3,39 +3,11 @@
 #include <cmath>
 
 #include "pipeline/shaders/blur.h"
+#include "pipeline/techniques/screen_quad.h"
 #include "sim/program.h"
 
 namespace skinsim::pipeline {
 
-namespace {
-
-// Clip-space quad over a pixel rectangle of a w x h target, with matching texture coords.
-struct ScreenQuad {
-  std::vector<glm::vec3> positions;
-  std::vector<glm::vec2> uvs;
-  std::vector<std::uint32_t> indices{0, 1, 2, 0, 2, 3};
-  ScreenQuad(const sim::PixelRect& r, int w, int h) {
-    const float u0 = static_cast<float>(r.x0) / w, u1 = static_cast<float>(r.x1) / w;
-    const float v0 = static_cast<float>(r.y0) / h, v1 = static_cast<float>(r.y1) / h;
-    // Texture v grows downwards (row 0 at the top), clip y upwards.
-    for (const glm::vec2 uv : {glm::vec2(u0, v1), glm::vec2(u1, v1), glm::vec2(u1, v0),
-                               glm::vec2(u0, v0)}) {
-      positions.emplace_back(uv.x * 2.0f - 1.0f, 1.0f - uv.y * 2.0f, 0.0f);
-      uvs.push_back(uv);
-    }
-  }
-  sim::Geometry geometry() const {
-    sim::Geometry g;
-    g.attributes.positions = positions.data();
-    g.attributes.uvs = uvs.data();
-    g.vertex_count = positions.size();
-    g.indices = indices.data();
-    g.index_count = indices.size();
-    return g;
-  }
-};
-
-}  // namespace
 
 // One separable blur axis over the skin's bounding rectangle of the buffer.
 sim::PassCounters blur_pass(const std::string& name, const sim::RenderTarget& source,

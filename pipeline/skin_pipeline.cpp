@@ -5,8 +5,7 @@
 
 #include "pipeline/blur_pass.h"
 #include "pipeline/diffusion.h"
-#include "pipeline/shaders/background.h"
-#include "pipeline/shaders/eye.h"
+#include "pipeline/techniques/skin_pass.h"
 #include "pipeline/shaders/irradiance.h"
 #include "pipeline/shaders/skin.h"
 
@@ -23,17 +22,9 @@ sim::PixelRect scale_rect(const sim::PixelRect& r, float sx, float sy, int w, in
           std::clamp(static_cast<int>(std::ceil(r.y1 * sy)) + 1, 0, h)};
 }
 
-struct Lighting {
-  glm::vec3 light_dir, light_radiance, ambient;
-};
-
-Lighting scene_lighting(const scene::Scene& s) {
-  return {glm::normalize(s.key_light.direction), s.key_light.radiance, s.ambient};
-}
-
 sim::PassCounters irradiance_pass(const GpuScene& gs, const View& view, const PipelineConfig& cfg,
                                   sim::RenderTarget& buffer, sim::Gpu& gpu) {
-  const Lighting light = scene_lighting(gs.scene());
+  const SceneLighting light = scene_lighting(gs.scene());
   const float offset = cfg.normal_offset_mm * gs.scene().units_per_mm;
   auto vs = sim::make_vertex_program<shaders::PositionNormalVS>({view.view_proj, offset});
   auto fs = sim::make_fragment_program<shaders::IrradianceFS>(
@@ -63,62 +54,27 @@ sim::PassCounters framebuffer_pass(const GpuScene& gs, const View& view,
                                    const PipelineConfig& cfg, const BrdfLutTexture& lut,
                                    const sim::Texture2D* irradiance, bool lod,
                                    sim::RenderTarget& frame, sim::Gpu& gpu) {
-  const scene::Scene& sc = gs.scene();
-  const Lighting light = scene_lighting(sc);
   const LayerSplit split = skin_layer_split();
-  auto vs = sim::make_vertex_program<shaders::SurfaceVS>({view.view_proj, 0.0f});
-
-  sim::RenderPassDesc pass;
-  pass.name = "skin";
-  pass.color = &frame;
-  pass.clear_color = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
-  // Draw order: background, eyes, skin. HSR makes the order irrelevant to shading cost.
-  for (const MaterialKind kind : {MaterialKind::kOther, MaterialKind::kEye, MaterialKind::kSkin}) {
-    for (const GpuMesh& m : gs.meshes()) {
-      const GpuMaterial& mat = gs.materials()[m.material];
-      if (mat.kind != kind) continue;
-      sim::DrawCall d;
-      d.geometry = m.geometry;
-      d.vertex_program = vs;
-      const glm::vec3 factor(mat.base_color_factor);
-      d.textures.textures[0] = mat.base_color;
-      if (kind == MaterialKind::kOther) {
-        d.fragment_program = sim::make_fragment_program<shaders::BackgroundFS>(
-            {light.light_dir, light.light_radiance, light.ambient, factor});
-      } else if (kind == MaterialKind::kEye) {
-        shaders::EyeFS::Uniforms u;
-        u.eye = view.eye;
-        u.light_dir = light.light_dir;
-        u.light_radiance = light.light_radiance;
-        u.ambient = light.ambient;
-        u.albedo_factor = factor;
-        d.fragment_program = sim::make_fragment_program<shaders::EyeFS>(u);
-        d.textures.cubes[shaders::EyeFS::kEnvironment] = &gs.environment();
-      } else {
-        shaders::SkinUniforms u;
-        u.eye = view.eye;
-        u.light_dir = light.light_dir;
-        u.light_radiance = light.light_radiance;
-        u.ambient = light.ambient;
-        u.albedo_factor = factor;
-        u.layer_mix = split.wide_fraction;
-        u.reflectivity = mat.reflectivity;
-        u.specular_intensity = cfg.specular_intensity;
-        u.lobe1_weight = cfg.lobe1.weight;
-        u.lobe2_weight = cfg.lobe2.weight;
-        u.lut_lod = bake::brdf_lut_lod(1.0f);  // the config's own roughness
-        d.fragment_program = cfg.gamma == GammaMode::kSquare
-                                 ? skin_program<GammaMode::kSquare>(lod, u)
-                                 : skin_program<GammaMode::kSrgb>(lod, u);
-        d.textures.textures[shaders::SkinBindings::kNormalMap] = mat.normal;
-        d.textures.cubes[shaders::SkinBindings::kEnvironment] = &gs.environment_diffuse();
-        d.textures.textures[shaders::SkinBindings::kIrradiance] = irradiance;
-        d.textures.textures[shaders::SkinBindings::kBrdfLut] = &lut.texture();
-      }
-      pass.draws.push_back(d);
-    }
-  }
-  return gpu.execute(pass);
+  const auto shading = [&](const GpuMaterial& mat, sim::DrawCall& d) {
+    const SceneLighting light = scene_lighting(gs.scene());
+    shaders::SkinUniforms u;
+    u.eye = view.eye;
+    u.light_dir = light.light_dir;
+    u.light_radiance = light.light_radiance;
+    u.ambient = light.ambient;
+    u.albedo_factor = glm::vec3(mat.base_color_factor);
+    u.layer_mix = split.wide_fraction;
+    u.reflectivity = mat.reflectivity;
+    u.specular_intensity = cfg.specular_intensity;
+    u.lobe1_weight = cfg.lobe1.weight;
+    u.lobe2_weight = cfg.lobe2.weight;
+    u.lut_lod = bake::brdf_lut_lod(1.0f);  // the config's own roughness
+    d.fragment_program = cfg.gamma == GammaMode::kSquare ? skin_program<GammaMode::kSquare>(lod, u)
+                                                         : skin_program<GammaMode::kSrgb>(lod, u);
+    d.textures.textures[shaders::SkinBindings::kIrradiance] = irradiance;
+    d.textures.textures[shaders::SkinBindings::kBrdfLut] = &lut.texture();
+  };
+  return skin_framebuffer_pass(gs, view, shading, frame, gpu);
 }
 
 }  // namespace
