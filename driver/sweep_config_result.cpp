@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 
@@ -40,6 +41,25 @@ reports::ConfigResult config_row(const SweepConfig& config, const FrameResult& f
   row.dram_bytes = frame.timing.dram_bytes;
   for (const gpu_model::PassTiming& p : frame.timing.passes) {
     row.passes.push_back({p.name, p.ms, gpu_model::unit_name(p.bottleneck), dram_by_cause(p.dram)});
+  }
+  for (const sim::PassCounters& pass : frame.output.passes) {
+    for (const sim::DrawCounters& d : pass.draws) {
+      if (d.fragments_shaded == 0) continue;
+      const auto same = [&](const reports::ProgramCost& c) {
+        return c.pass == pass.name && c.program == d.fragment_program;
+      };
+      auto it = std::find_if(row.programs.begin(), row.programs.end(), same);
+      if (it == row.programs.end()) {
+        const sim::OpProfile& p = d.fragment_profile;
+        row.programs.push_back({pass.name, d.fragment_program, 0.0, static_cast<int>(p.vector_ops),
+                                static_cast<int>(p.scalar_ops),
+                                static_cast<int>(p.transcendental_ops),
+                                static_cast<int>(p.texture_reads_independent),
+                                static_cast<int>(p.texture_reads_dependent)});
+        it = std::prev(row.programs.end());
+      }
+      it->fragments += static_cast<double>(d.fragments_shaded);
+    }
   }
   // The table holds finite numbers only (JSON has no infinity): PSNR of a frame identical to
   // the reference is +inf, and such a cell is left empty rather than given a made-up value.

@@ -174,6 +174,55 @@ std::string table_section(const SweepTable& t, const ReportOptions& o,
   return h + "</table>\n";
 }
 
+// One row per technique (when the sweep compares several): its best configuration by the
+// quality metric, the passes it runs, its DRAM traffic, and the op profile of every skin
+// program it runs (eyes and background are the same for all techniques and left out).
+std::string techniques_section(const SweepTable& t, const ReportOptions& o) {
+  std::map<std::string, const ConfigResult*> best;
+  for (const ConfigResult& r : t.rows) {
+    const std::string technique = knob_value(r, "technique");
+    if (technique.empty()) continue;
+    const auto q = r.quality.find(o.quality_metric);
+    const ConfigResult*& slot = best[technique];
+    if (!slot) {
+      slot = &r;
+      continue;
+    }
+    const auto q_best = slot->quality.find(o.quality_metric);
+    if (q != r.quality.end() &&
+        (q_best == slot->quality.end() ||
+         (o.higher_is_better ? q->second > q_best->second : q->second < q_best->second))) {
+      slot = &r;
+    }
+  }
+  if (best.size() < 2) return "";
+  std::string h =
+      "<h2>Techniques compared</h2>\n<p>Each technique's best configuration by " +
+      esc(o.quality_metric) +
+      ". Programs: ALU ops per fragment (vector + scalar + transcendental, from the shader's own "
+      "code) and texture reads (independent + dependent), and the fragments each shaded.</p>\n"
+      "<table>\n<tr><th>technique</th><th>configuration</th><th>frame ms</th><th>passes (ms)</th>"
+      "<th>DRAM MB</th><th>skin programs</th></tr>\n";
+  for (const auto& [technique, r] : best) {
+    std::string passes, programs;
+    for (const PassCost& p : merged_passes(*r)) {
+      passes += esc(p.name) + " " + ms(p.ms) + "<br>";
+    }
+    for (const ProgramCost& p : r->programs) {
+      if (p.program == "background_fs" || p.program == "eye_fs") continue;
+      programs +=
+          fmt::format("{} ({}): {}+{}+{} ALU, {}+{} tex, {:.2f} M frag<br>", esc(p.program),
+                      esc(p.pass), p.vector_ops, p.scalar_ops, p.transcendental_ops,
+                      p.texture_reads_independent, p.texture_reads_dependent, p.fragments / 1e6);
+    }
+    h += "<tr><td class=\"text\">" + esc(technique) + "</td><td class=\"text\">" +
+         esc(name_of(*r)) + "</td><td>" + ms(r->frame_ms) + "</td><td class=\"text\">" + passes +
+         "</td><td>" + fmt::format("{:.1f}", r->dram_bytes / 1e6) + "</td><td class=\"text\">" +
+         programs + "</td></tr>\n";
+  }
+  return h + "</table>\n";
+}
+
 std::string thumbnails_section(const SweepTable& t) {
   std::string cells;
   for (const ConfigResult& r : t.rows) {
@@ -251,10 +300,10 @@ std::string write_report(const SweepTable& table, const std::string& dir,
 
   std::string page = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
   page += "<title>" + esc(options.title) + "</title>\n<style>" + kStyle + "</style>\n</head>\n";
-  page += "<body>\n" + header_section(table, options) +
-          recommendation_section(table, options, knee) +
-          charts_section(figures, options.draw_charts) + table_section(table, options, knee) +
-          thumbnails_section(table) + assumptions_section(table);
+  page +=
+      "<body>\n" + header_section(table, options) + recommendation_section(table, options, knee) +
+      charts_section(figures, options.draw_charts) + techniques_section(table, options) +
+      table_section(table, options, knee) + thumbnails_section(table) + assumptions_section(table);
   if (options.write_data_files) {
     page +=
         "<h2>Data</h2>\n<p><a href=\"results.json\">results.json</a> (everything on this "

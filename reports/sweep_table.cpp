@@ -103,6 +103,19 @@ PassCost parse_pass(const json& j, const std::string& where) {
   return p;
 }
 
+ProgramCost parse_program(const json& j, const std::string& where) {
+  ProgramCost p;
+  p.pass = req_string(j, where, "pass");
+  p.program = req_string(j, where, "program");
+  p.fragments = req_number(j, where, "fragments");
+  p.vector_ops = req_int(j, where, "vector_ops");
+  p.scalar_ops = req_int(j, where, "scalar_ops");
+  p.transcendental_ops = req_int(j, where, "transcendental_ops");
+  p.texture_reads_independent = req_int(j, where, "texture_reads_independent");
+  p.texture_reads_dependent = req_int(j, where, "texture_reads_dependent");
+  return p;
+}
+
 ConfigResult parse_config(const json& j, const std::string& where) {
   ConfigResult c;
   c.id = req_string(j, where, "id");
@@ -116,6 +129,13 @@ ConfigResult parse_config(const json& j, const std::string& where) {
     const json& passes = array_at(j["passes"], p);
     for (std::size_t i = 0; i < passes.size(); ++i) {
       c.passes.push_back(parse_pass(passes[i], index_path(p, i)));
+    }
+  }
+  if (j.contains("programs")) {
+    const std::string p = field_path(where, "programs");
+    const json& programs = array_at(j["programs"], p);
+    for (std::size_t i = 0; i < programs.size(); ++i) {
+      c.programs.push_back(parse_program(programs[i], index_path(p, i)));
     }
   }
   if (j.contains("quality")) c.quality = map_at<double>(j["quality"], field_path(where, "quality"));
@@ -209,6 +229,17 @@ void to_json(json& j, const PassCost& v) {
            {"dram_bytes_by_cause", v.dram_bytes_by_cause}};
 }
 
+void to_json(json& j, const ProgramCost& v) {
+  j = json{{"pass", v.pass},
+           {"program", v.program},
+           {"fragments", v.fragments},
+           {"vector_ops", v.vector_ops},
+           {"scalar_ops", v.scalar_ops},
+           {"transcendental_ops", v.transcendental_ops},
+           {"texture_reads_independent", v.texture_reads_independent},
+           {"texture_reads_dependent", v.texture_reads_dependent}};
+}
+
 void to_json(json& j, const ConfigResult& v) {
   j = json{{"id", v.id},
            {"label", v.label},
@@ -217,6 +248,7 @@ void to_json(json& j, const ConfigResult& v) {
            {"fps", v.fps},
            {"dram_bytes", v.dram_bytes},
            {"passes", v.passes},
+           {"programs", v.programs},
            {"quality", v.quality},
            {"frame_image", v.frame_image},
            {"error_image", v.error_image}};

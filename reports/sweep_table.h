@@ -19,6 +19,19 @@ struct PassCost {
   std::map<std::string, double> dram_bytes_by_cause;  // e.g. "color_store", "texture_miss"
 };
 
+// A fragment program one configuration ran: where, on how many fragments, and its op profile
+// (from the shader's own code: ALU ops by class, texture reads by kind).
+struct ProgramCost {
+  std::string pass;
+  std::string program;
+  double fragments = 0.0;
+  int vector_ops = 0;
+  int scalar_ops = 0;
+  int transcendental_ops = 0;
+  int texture_reads_independent = 0;
+  int texture_reads_dependent = 0;
+};
+
 // One configuration of the sweep and what it cost and bought.
 struct ConfigResult {
   std::string id;     // unique within the sweep; used in file names and tables
@@ -29,6 +42,7 @@ struct ConfigResult {
   double fps = 0.0;
   double dram_bytes = 0.0;  // per frame
   std::vector<PassCost> passes;
+  std::vector<ProgramCost> programs;  // fragment programs with shaded fragments
   // Image quality against the reference: psnr_skin, ssim_skin, flip_skin, psnr_frame, ...
   std::map<std::string, double> quality;
   std::string frame_image;  // relative path inside the sweep directory ("" if none)
@@ -74,6 +88,7 @@ struct SweepTable {
 // JSON mapping (nlohmann ADL hooks). from_json throws ReportError naming the field at fault,
 // e.g. "rows[3].frame_ms: expected a number".
 void to_json(nlohmann::json& j, const PassCost& v);
+void to_json(nlohmann::json& j, const ProgramCost& v);
 void to_json(nlohmann::json& j, const ConfigResult& v);
 void to_json(nlohmann::json& j, const TileHeatmap& v);
 void to_json(nlohmann::json& j, const SensitivityRow& v);

@@ -109,6 +109,23 @@ TEST(HtmlReport, SaysSoWhenNothingFitsTheBudget) {
   EXPECT_NE(html.find("No configuration with flip_skin fits the frame budget"), std::string::npos);
 }
 
+TEST(HtmlReport, ComparesTechniquesWithTheirProgramsWhenThereAreSeveral) {
+  SweepTable sweep = synthetic_sweep();
+  const std::string single = read_text(write_report(sweep, fresh_output_dir(), no_charts()));
+  EXPECT_EQ(single.find("Techniques compared"), std::string::npos);
+  for (std::size_t i = 0; i < sweep.rows.size(); ++i) {
+    ConfigResult& r = sweep.rows[i];
+    r.knobs["technique"] = i % 2 ? "wrap" : "mobile";
+    r.programs = {{"skin", i % 2 ? "wrap_fs" : "skin_fs", 2.5e6, 30, 18, 7, 4, 1},
+                  {"skin", "background_fs", 1e5, 8, 1, 4, 1, 0}};
+  }
+  const std::string html = read_text(write_report(sweep, fresh_output_dir(), no_charts()));
+  EXPECT_NE(html.find("Techniques compared"), std::string::npos);
+  EXPECT_NE(html.find("skin_fs (skin): 30+18+7 ALU, 4+1 tex, 2.50 M frag"), std::string::npos);
+  EXPECT_NE(html.find("wrap_fs (skin)"), std::string::npos);
+  EXPECT_EQ(html.find("background_fs (skin)"), std::string::npos);
+}
+
 TEST(HtmlReport, SaysSoWhenNoRowHasTheMetric) {
   ReportOptions options = no_charts();
   options.quality_metric = "no_such_metric";

@@ -32,7 +32,8 @@ std::string error_of(const nlohmann::json& j) {
 }
 
 TEST(SweepJson, RoundTripIsExact) {
-  const SweepTable sweep = testing::synthetic_sweep();
+  SweepTable sweep = testing::synthetic_sweep();
+  sweep.rows[2].programs = {{"skin", "skin_fs", 3.1e6, 30, 18, 7, 4, 1}};
   const std::string path = temp_file("results.json");
   write_sweep_json(sweep, path);
   const SweepTable back = read_sweep_json(path);
@@ -43,6 +44,8 @@ TEST(SweepJson, RoundTripIsExact) {
             sweep.rows[5].passes[3].dram_bytes_by_cause);
   EXPECT_DOUBLE_EQ(back.rows[5].frame_ms, sweep.rows[5].frame_ms);
   EXPECT_EQ(back.rows[5].knobs.at("lut"), "32x128");
+  ASSERT_EQ(back.rows[2].programs.size(), 1u);
+  EXPECT_EQ(back.rows[2].programs[0].texture_reads_dependent, 1);
   ASSERT_TRUE(back.heatmap);
   EXPECT_EQ(back.heatmap->bottleneck, sweep.heatmap->bottleneck);
   EXPECT_EQ(back.sensitivity[1].unit, "KB");
