@@ -5,9 +5,10 @@ set -euo pipefail
 packages=(
   cmake g++ make pkg-config
   libglm-dev libtinygltf-dev libstb-dev libopenimageio-dev libtbb-dev
-  libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libfmt-dev libspdlog-dev
+  libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libvtk9-dev xvfb xauth
+  python3  # the budget CLI test parses JUnit XML with its standard library
   # Debian's OpenImageIO CMake config references these files (iconvert, PyImath) and
   # lists /usr/include/opencv4 as an include directory of OpenImageIO::OpenImageIO.
   openimageio-tools python3-imath libopencv-core-dev
