@@ -6,6 +6,7 @@
 #include "driver/frame_job.h"
 #include "driver/scene_source.h"
 #include "gpu_model/profile_loader.h"
+#include "pipeline/bake/brdf_lut.h"
 
 namespace {
 
@@ -45,6 +46,18 @@ void BM_DefaultSceneBuild(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_DefaultSceneBuild)->Unit(benchmark::kMillisecond);
+
+// The BRDF LUT baker at 8x32 ... 128x512 (width = 8 x arg, height = 32 x arg).
+void BM_BrdfLutBake(benchmark::State& state) {
+  bake::BrdfLutParams p;
+  p.width = 8 * static_cast<int>(state.range(0));
+  p.height = 32 * static_cast<int>(state.range(0));
+  for (auto _ : state) {
+    const bake::BrdfLut lut = bake::bake_brdf_lut(p);
+    benchmark::DoNotOptimize(lut.levels.size());
+  }
+}
+BENCHMARK(BM_BrdfLutBake)->Arg(1)->Arg(4)->Arg(16)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

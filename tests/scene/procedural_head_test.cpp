@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <ctime>
 #include <map>
 
 #include "scene/head_shape.h"
@@ -36,14 +35,9 @@ const Mesh& mesh_named(const Scene& s, const std::string& name) {
   throw std::runtime_error("no mesh " + name);
 }
 
-// The budget is 0.5 s in Release. Measured as CPU time of all threads, which bounds the
-// wall time on an idle machine and does not fail when other jobs share the cores.
-TEST(DefaultScene, BuildsFastAtDefaultSize) {
-  const std::clock_t start = std::clock();
+// Build time is measured by bench/bench_frame (BM_DefaultSceneBuild), not asserted here.
+TEST(DefaultScene, BuildsAtDefaultSize) {
   const Scene s = make_default_scene({});
-  const double cpu_seconds = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
-  RecordProperty("build_cpu_seconds", std::to_string(cpu_seconds));
-  EXPECT_LT(cpu_seconds, 0.5);
   EXPECT_EQ(s.meshes.size(), 5u);
 }
 
