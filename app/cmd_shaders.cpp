@@ -26,11 +26,11 @@ Command add_shaders_command(CLI::App& app) {
       fmt::print("{}\n", out.dump(2));
       return 0;
     }
-    fmt::print("{:<22} {:>6} {:>6} {:>6} {:>6} {:>6} {:>6} {:>6}\n", "shader", "vector",
+    fmt::print("{:<30} {:>6} {:>6} {:>6} {:>6} {:>7} {:>6} {:>7}\n", "shader", "vector",
                "scalar", "transc", "tex_in", "tex_dep", "inputs", "outputs");
     for (const auto& s : catalog) {
       const sim::OpProfile& p = s.profile;
-      fmt::print("{:<22} {:>6} {:>6} {:>6} {:>6} {:>6} {:>6} {:>6}\n", s.name, p.vector_ops,
+      fmt::print("{:<30} {:>6} {:>6} {:>6} {:>6} {:>7} {:>6} {:>7}\n", s.name, p.vector_ops,
                  p.scalar_ops, p.transcendental_ops, p.texture_reads_independent,
                  p.texture_reads_dependent, p.input_floats, p.output_floats);
     }
