@@ -7,8 +7,10 @@
 #include <map>
 
 #include "app/commands.h"
+#include "driver/host_memory.h"
 
 int main(int argc, char** argv) {
+  skinsim::driver::retain_freed_memory();
   CLI::App app{
       "skinsim: emulate a tile-based mobile GPU (PowerVR SGX-class) running skin-rendering "
       "pipelines, and model their cost per device"};

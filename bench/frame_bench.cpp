@@ -4,6 +4,7 @@
 #include <benchmark/benchmark.h>
 
 #include "driver/frame_job.h"
+#include "driver/host_memory.h"
 #include "driver/scene_source.h"
 #include "gpu_model/profile_loader.h"
 #include "pipeline/bake/brdf_lut.h"
@@ -61,4 +62,12 @@ BENCHMARK(BM_BrdfLutBake)->Arg(1)->Arg(4)->Arg(16)->Unit(benchmark::kMillisecond
 
 }  // namespace
 
-BENCHMARK_MAIN();
+// As in the skinsim CLI: frames reuse freed memory instead of faulting it in again.
+int main(int argc, char** argv) {
+  skinsim::driver::retain_freed_memory();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -83,8 +83,24 @@ MipLevel downsample(const MipLevel& src) {
 
 glm::vec4 quantize(const glm::vec4& value, TexelFormat format) {
   switch (format) {
-    case TexelFormat::kRGBA8:
-      return glm::round(glm::clamp(value, 0.0f, 1.0f) * 255.0f) / 255.0f;
+    case TexelFormat::kRGBA8: {
+      // Round half away from zero (as glm::round), without a libm call per channel: the
+      // scaled value is in [0,255], where x - floor(x) is exact.
+      static const std::array<float, 256> kByteValue = [] {
+        std::array<float, 256> v{};
+        for (int i = 0; i < 256; ++i) v[i] = static_cast<float>(i) / 255.0f;
+        return v;
+      }();
+      glm::vec4 q;
+      for (int c = 0; c < 4; ++c) {
+        // NaN converts to 0, the D3D10+/Vulkan float-to-UNORM rule (GLES leaves it open).
+        const float v = value[c] == value[c] ? value[c] : 0.0f;
+        const float x = std::clamp(v, 0.0f, 1.0f) * 255.0f;
+        const int whole = static_cast<int>(x);
+        q[c] = kByteValue[whole + (x - static_cast<float>(whole) >= 0.5f ? 1 : 0)];
+      }
+      return q;
+    }
     case TexelFormat::kRGBA16F:
       return {round_to_half(value.x), round_to_half(value.y), round_to_half(value.z),
               round_to_half(value.w)};
@@ -113,6 +129,22 @@ Texture2D::Texture2D(std::string name, int width, int height,
   }
   if (!mipmaps && sampler_.filter == Filter::kTrilinear) sampler_.filter = Filter::kBilinear;
   finish_layout();
+}
+
+Texture2D Texture2D::from_stored(std::string name, int width, int height,
+                                 std::vector<glm::vec4> texels, TexelFormat format,
+                                 SamplerState sampler) {
+  if (width <= 0 || height <= 0 || texels.size() != static_cast<size_t>(width) * height) {
+    throw std::invalid_argument("texture '" + name + "': bad size");
+  }
+  Texture2D t;
+  t.name_ = std::move(name);
+  t.format_ = format;
+  t.sampler_ = sampler;
+  if (t.sampler_.filter == Filter::kTrilinear) t.sampler_.filter = Filter::kBilinear;
+  t.levels_.push_back({width, height, std::move(texels)});
+  t.finish_layout();
+  return t;
 }
 
 Texture2D::Texture2D(std::string name, std::vector<MipLevel> levels, TexelFormat format,

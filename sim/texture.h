@@ -22,20 +22,31 @@ int bytes_per_texel(TexelFormat format);
 const char* format_name(TexelFormat format);
 // Parses "rgba8", "rgba16f", "rgba32f" (any case); throws std::invalid_argument otherwise.
 TexelFormat parse_format(const std::string& name);
-// Rounds a value to what the format stores (RGBA8: clamp to [0,1], nearest 1/255;
+// Rounds a value to what the format stores (RGBA8: clamp to [0,1], nearest 1/255, NaN to 0;
 // RGBA16F: IEEE half, round to nearest even; RGBA32F: unchanged).
 glm::vec4 quantize(const glm::vec4& value, TexelFormat format);
 
 // Morton order: the bits of x and y interleaved (x in the even bits), PowerVR's
 // "twiddled" texture layout. Coordinates up to 16 bits.
-// Spreads the low 16 bits of v to the even bit positions.
+namespace detail {
+// The 8 bits of each byte value spread to the even bits of 16 (a table lookup is cheaper
+// than the shift-and-mask sequence on the texture path, which spreads ~50M times a frame).
+constexpr std::array<std::uint16_t, 256> make_morton_byte_table() {
+  std::array<std::uint16_t, 256> table{};
+  for (unsigned v = 0; v < 256; ++v) {
+    unsigned spread = 0;
+    for (unsigned bit = 0; bit < 8; ++bit) spread |= ((v >> bit) & 1u) << (2 * bit);
+    table[v] = static_cast<std::uint16_t>(spread);
+  }
+  return table;
+}
+inline constexpr std::array<std::uint16_t, 256> kMortonByte = make_morton_byte_table();
+}  // namespace detail
+
+// Spreads the low 16 bits of x to the even bit positions.
 inline std::uint64_t morton_spread(std::uint32_t x) {
-  std::uint64_t v = x & 0xFFFFu;
-  v = (v | (v << 8)) & 0x00FF00FF;
-  v = (v | (v << 4)) & 0x0F0F0F0F;
-  v = (v | (v << 2)) & 0x33333333;
-  v = (v | (v << 1)) & 0x55555555;
-  return v;
+  return detail::kMortonByte[x & 0xFFu] |
+         (std::uint64_t{detail::kMortonByte[(x >> 8) & 0xFFu]} << 16);
 }
 inline std::uint64_t twiddle(std::uint32_t x, std::uint32_t y) {
   return morton_spread(x) | (morton_spread(y) << 1);
@@ -60,6 +71,11 @@ class Texture2D {
   // is box-filtered down to 1x1 when `mipmaps` is set.
   Texture2D(std::string name, int width, int height, const std::vector<glm::vec4>& texels,
             TexelFormat format, SamplerState sampler, bool mipmaps);
+  // A single level whose texels are already stored values of `format` (a finished render
+  // target): no mips, no second quantisation pass.
+  static Texture2D from_stored(std::string name, int width, int height,
+                               std::vector<glm::vec4> texels, TexelFormat format,
+                               SamplerState sampler);
   // Explicit levels (e.g. a LUT whose levels hold different roughness); each level must be
   // half the size of the previous one (rounded down, at least 1).
   Texture2D(std::string name, std::vector<MipLevel> levels, TexelFormat format,
@@ -80,6 +96,7 @@ class Texture2D {
   std::uint64_t level_offset(int level) const { return level_offsets_[level]; }
   std::uint64_t texel_bytes() const { return texel_bytes_; }
   std::uint64_t size_bytes() const { return level_offsets_.back(); }
+
 
  private:
   void finish_layout();

@@ -46,10 +46,18 @@ class ExecTexUnit {
   glm::vec4 sample_cube_lod(int binding, const glm::vec3& direction, float lod);
 
  private:
-  glm::vec4 filtered(const Texture2D& tex, std::uint64_t base, glm::vec2 uv, float lod,
+  // Level of detail as the sampler receives it: an explicit lambda, or the squared footprint
+  // rho^2 from derivatives (lambda = log2(rho), taken only where a filter needs it).
+  struct LodInput {
+    float value;
+    bool is_rho2;
+    static LodInput from_rho2(float rho2) { return {rho2, true}; }
+    static LodInput explicit_lod(float lambda) { return {lambda, false}; }
+  };
+  glm::vec4 filtered(const Texture2D& tex, std::uint64_t base, glm::vec2 uv, const LodInput& lod,
                      bool dependent);
+  glm::vec4 nearest(const Texture2D& tex, std::uint64_t base, int level, glm::vec2 uv);
   glm::vec4 bilinear(const Texture2D& tex, std::uint64_t base, int level, glm::vec2 uv);
-  void touch(std::uint64_t address);  // one texel of a nearest sample
   void access_line(std::uint64_t address);  // one distinct cache line of a sample
   const Texture2D& texture(int binding) const;
   const TextureCube& cube(int binding) const;
@@ -58,6 +66,14 @@ class ExecTexUnit {
   TextureCounters* counters_;
   const TextureBindings* bindings_ = nullptr;
 };
+
+inline void ExecTexUnit::access_line(std::uint64_t address) {
+  ++counters_->cache_line_accesses;
+  if (!cache_->access(address)) {
+    ++counters_->cache_misses;
+    counters_->dram_bytes += cache_->line_bytes();
+  }
+}
 
 // Each binding slot has its own region of the emulated address space, so texture
 // addresses (and hence cache behaviour) do not depend on allocation order.

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "sim/texture.h"
 #include "sim/texture_cache.h"
 #include "sim/texture_unit.h"
@@ -10,6 +12,7 @@ namespace {
 TEST(Texture, QuantizesToFormat) {
   EXPECT_EQ(quantize(glm::vec4(0.5f), TexelFormat::kRGBA8), glm::vec4(128.0f / 255.0f));
   EXPECT_EQ(quantize(glm::vec4(2.0f), TexelFormat::kRGBA8), glm::vec4(1.0f));
+  EXPECT_EQ(quantize(glm::vec4(std::nanf("")), TexelFormat::kRGBA8), glm::vec4(0.0f));
   EXPECT_EQ(quantize(glm::vec4(1.0f / 3.0f), TexelFormat::kRGBA16F).x, 0.333251953125f);
   EXPECT_EQ(quantize(glm::vec4(1e6f), TexelFormat::kRGBA16F).x, 65504.0f);
   EXPECT_EQ(quantize(glm::vec4(0.1f), TexelFormat::kRGBA32F).x, 0.1f);
