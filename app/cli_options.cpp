@@ -73,7 +73,8 @@ void add_pipeline_options(CLI::App& cmd, pipeline::PipelineConfig& c) {
   knob(cmd, c, "--lod-distance", "lod_distance_m",
        "Camera distance in metres beyond which the single-pass LOD shader runs");
   knob(cmd, c, "--specular", "specular",
-       "Specular model of the comparison techniques: ks_lut, ks, ggx or dual_ggx");
+       "Specular model of the skin shaders (every technique): ks_lut (BRDF LUT), ks, ggx or "
+       "dual_ggx");
   knob(cmd, c, "--preintegrated-lut", "preintegrated_lut",
        "Pre-integrated diffusion LUT size WxH (N.L x curvature), powers of two");
   knob(cmd, c, "--curvature", "curvature",

@@ -55,8 +55,10 @@ int run(const RunOptions& o) {
     driver::write_png(t.target, out / (t.name + ".png"), t.display_scale);
     written.push_back(t.name + ".png");
   }
-  pipeline::BrdfLutTexture::bake(config).write_png((out / "brdf_lut.png").string());
-  written.push_back("brdf_lut.png");
+  if (config.specular == pipeline::SpecularModel::kKsLut) {  // only that model reads the LUT
+    pipeline::BrdfLutTexture::bake(config).write_png((out / "brdf_lut.png").string());
+    written.push_back("brdf_lut.png");
+  }
 
   nlohmann::json json = driver::frame_result_json(result, o.scene.label());
   json["device"] = device.name;

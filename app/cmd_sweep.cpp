@@ -113,9 +113,16 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
   const driver::SweepRunSummary summary = driver::run_sweep(spec, configs, run_options);
   std::signal(SIGINT, SIG_DFL);
 
-  fmt::print("skinsim sweep: {} configurations on {}: {} computed, {} resumed{} in {:.1f} s\n",
+  std::size_t combinations = 1;
+  for (const driver::SweepAxis& axis : spec.axes) combinations *= axis.values.size();
+  const std::size_t skipped = combinations - configs.size();
+  fmt::print("skinsim sweep: {} configurations on {}: {} computed, {} resumed{} in {:.1f} s{}\n",
              summary.total, spec.scene.label(), summary.computed.size(), summary.resumed,
-             summary.not_run ? fmt::format(", {} not run", summary.not_run) : "", summary.seconds);
+             summary.not_run ? fmt::format(", {} not run", summary.not_run) : "", summary.seconds,
+             skipped ? fmt::format(" ({} more combinations differ only in knobs their technique "
+                                   "does not use)",
+                                   skipped)
+                     : "");
   const reports::SweepTable table = driver::assemble_sweep_table(spec, configs, o.out);
   driver::write_sweep_data(table, o.out);
   std::vector<std::string> written = {"results.json", "results.csv", "configs/"};
@@ -164,7 +171,8 @@ Command add_sweep_command(CLI::App& app) {
               "Blur iteration counts, e.g. 1,2,4");
   axis_option(*cmd, *o, "--techniques", "technique",
               "Techniques (" + fmt::format("{}", fmt::join(pipeline::technique_names(), ", ")) +
-                  ") or 'all'");
+                  ") or 'all'; an axis a technique does not use (e.g. scales for wrap, LUT "
+                  "sizes with an analytic specular) runs once for it, at the default");
   axis_option(*cmd, *o, "--devices", "device",
               "Device profiles: shipped names (see `skinsim devices`) or .toml files");
   axis_option(*cmd, *o, "--resolutions", "resolution",

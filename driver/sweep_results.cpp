@@ -16,8 +16,8 @@ namespace skinsim::driver {
 
 namespace {
 
-// Stored results belong to a configuration when every swept knob has the swept value (run_sweep
-// has already replaced stored results whose full fingerprint no longer matched).
+// Stored results belong to a configuration when every swept knob it uses has the swept value
+// (run_sweep has already replaced stored results whose full fingerprint no longer matched).
 bool belongs_to(const StoredConfig& stored, const SweepConfig& config) {
   if (reports::knob_value(stored.row, "device") != config.device) return false;
   for (const auto& [knob, value] : config.swept) {
@@ -44,6 +44,9 @@ reports::SweepTable assemble_sweep_table(const SweepSpec& spec,
     std::optional<StoredConfig> s =
         read_stored_config(std::filesystem::path(out_dir) / config_json_path(c.id));
     if (!s || !belongs_to(*s, c)) continue;
+    // configs/<id>.json keeps every knob (the fingerprint); the table shows the knobs the
+    // frame depends on, so a knob the technique ignores has no misleading value.
+    keep_used_knobs(c, s->row.knobs);
     devices.insert(reports::knob_value(s->row, "device"));
     resolutions.insert(reports::knob_value(s->row, "resolution"));
     table.rows.push_back(s->row);

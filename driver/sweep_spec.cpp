@@ -60,6 +60,32 @@ std::string id_part(const std::string& knob, const std::string& value) {
   return id_prefix(knob) + v;
 }
 
+void set_knob(SweepConfig& c, const std::string& knob, const std::string& value) {
+  if (knob == "device") {
+    c.device = value;
+  } else {
+    pipeline::set_config_field(c.config, knob, value);
+  }
+}
+
+// The value a configuration has for `knob` when no axis sets it.
+std::string base_value(const SweepConfig& base, const std::string& knob) {
+  return knob == "device" ? base.device : pipeline::get_config_field(base.config, knob);
+}
+
+std::string label(const std::vector<std::string>& parts) {
+  return parts.empty() ? "default configuration" : fmt::format("{}", fmt::join(parts, ", "));
+}
+
+// Odometer step over the axes' values, the last axis fastest; false after the last one.
+bool advance(std::vector<std::size_t>& index, const std::vector<std::vector<std::string>>& values) {
+  for (std::size_t a = values.size(); a > 0; --a) {
+    if (++index[a - 1] < values[a - 1].size()) return true;
+    index[a - 1] = 0;
+  }
+  return false;
+}
+
 }  // namespace
 
 std::vector<std::string> sweep_knob_names() {
@@ -95,12 +121,7 @@ std::vector<SweepConfig> expand_sweep(const SweepSpec& spec) {
   base.device = "ipad4";
   for (const FixedKnob& f : spec.fixed) {
     require_knob(f.knob, f.origin);
-    const std::string value = canonical_value(f.knob, f.value, f.origin);
-    if (f.knob == "device") {
-      base.device = value;
-    } else {
-      pipeline::set_config_field(base.config, f.knob, value);
-    }
+    set_knob(base, f.knob, canonical_value(f.knob, f.value, f.origin));
   }
 
   // Canonical values per axis; a value given twice would make two identical configurations.
@@ -120,47 +141,50 @@ std::vector<SweepConfig> expand_sweep(const SweepSpec& spec) {
 
   std::vector<SweepConfig> configs;
   std::set<std::string> ids;
+  std::set<std::vector<std::string>> combinations;
   std::vector<std::size_t> index(values.size(), 0);
-  while (true) {
+  do {
     SweepConfig c = base;
-    std::vector<std::string> id_parts, label_parts;
+    std::vector<std::string> full_label;
     for (std::size_t a = 0; a < values.size(); ++a) {
       const std::string& knob = spec.axes[a].knob;
-      const std::string& value = values[a][index[a]];
-      if (knob == "device") {
-        c.device = value;
-      } else {
-        pipeline::set_config_field(c.config, knob, value);
-      }
-      c.swept.emplace_back(knob, value);
-      id_parts.push_back(id_part(knob, value));
-      label_parts.push_back(knob + " " + value);
+      set_knob(c, knob, values[a][index[a]]);
+      full_label.push_back(knob + " " + values[a][index[a]]);
     }
+    try {  // every value is checked, used by this configuration's technique or not
+      c.config.validate();
+    } catch (const pipeline::ConfigError& e) {
+      throw SweepError(
+          fmt::format("configuration '{}' is invalid: {}", label(full_label), e.what()));
+    }
+    // An axis this configuration's technique does not use keeps the base value: the
+    // combinations that differ only there render the same frame, so only the first runs.
+    // The id still names every axis (the same id and fingerprint as before axes were
+    // technique-aware, so earlier sweep directories resume); the label names what applies.
+    std::vector<std::string> combination, id_parts, label_parts;
+    for (std::size_t a = 0; a < values.size(); ++a) {
+      const std::string& knob = spec.axes[a].knob;
+      const bool used = knob == "device" || pipeline::knob_applies(c.config, knob);
+      const std::string value = used ? values[a][index[a]] : base_value(base, knob);
+      set_knob(c, knob, value);
+      combination.push_back(value);
+      id_parts.push_back(id_part(knob, value));
+      if (used) {
+        c.swept.emplace_back(knob, value);
+        label_parts.push_back(knob + " " + value);
+      }
+    }
+    if (!combinations.insert(combination).second) continue;
     const std::string stem =
         id_parts.empty() ? "default" : fmt::format("{}", fmt::join(id_parts, "_"));
     c.id = stem;
     // Different values can sanitise to one id (two profile paths with one stem): number them.
     for (int n = 2; ids.count(c.id) != 0; ++n) c.id = fmt::format("{}-{}", stem, n);
     ids.insert(c.id);
-    c.label = label_parts.empty() ? "default configuration"
-                                  : fmt::format("{}", fmt::join(label_parts, ", "));
-    try {
-      c.config.validate();
-    } catch (const pipeline::ConfigError& e) {
-      throw SweepError(fmt::format("configuration '{}' is invalid: {}", c.label, e.what()));
-    }
+    c.label = label(label_parts);
     configs.push_back(std::move(c));
-
-    // Odometer step: the last axis varies fastest.
-    std::size_t a = values.size();
-    while (a > 0) {
-      --a;
-      if (++index[a] < values[a].size()) break;
-      index[a] = 0;
-      if (a == 0) return configs;
-    }
-    if (values.empty()) return configs;
-  }
+  } while (advance(index, values));
+  return configs;
 }
 
 std::vector<std::pair<std::string, std::string>> all_knobs(const SweepConfig& config, int width,
@@ -174,6 +198,12 @@ std::vector<std::pair<std::string, std::string>> all_knobs(const SweepConfig& co
   }
   knobs.emplace_back("device", config.device);
   return knobs;
+}
+
+void keep_used_knobs(const SweepConfig& config, std::map<std::string, std::string>& knobs) {
+  std::erase_if(knobs, [&](const auto& knob) {
+    return knob.first != "device" && !pipeline::knob_applies(config.config, knob.first);
+  });
 }
 
 nlohmann::json config_fingerprint(const SweepConfig& config, const SceneSource& scene, int width,

@@ -2,6 +2,7 @@
 // fixed, and the scene; expanded into configurations with short, stable, readable ids.
 #pragma once
 
+#include <map>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
@@ -20,7 +21,8 @@ class SweepError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// One swept knob: every value is tried with every value of the other axes.
+// One swept knob: every value is tried with every value of the other axes, for each
+// configuration whose technique uses the knob (pipeline::knob_applies).
 struct SweepAxis {
   std::string knob;                 // a key of pipeline::config_field_names(), or "device"
   std::vector<std::string> values;  // as given; canonicalised by expand_sweep
@@ -55,17 +57,22 @@ std::vector<std::string> sweep_knob_names();
 
 struct SweepConfig {
   std::string id;      // unique in the sweep, file-name safe, e.g. "scale0.5_lut32x128"
-  std::string label;   // e.g. "scale 0.5, lut 32x128"
+  std::string label;   // the swept knobs it uses, e.g. "scale 0.5, lut 32x128"
   std::string device;  // profile name or .toml path
   pipeline::PipelineConfig config;  // fixed and swept knobs applied, validated (resolution
                                     // 0x0 = the device's display, resolved at run time)
-  std::vector<std::pair<std::string, std::string>> swept;  // (knob, canonical value), axis order
+  // (knob, canonical value) of the axes it uses, in axis order.
+  std::vector<std::pair<std::string, std::string>> swept;
 };
 
-// Every combination of the axes' values, in axis order (last axis fastest). Values are
-// validated and canonicalised through pipeline::set_config_field/get_config_field ("1.0" ->
-// "1"), and every configuration through PipelineConfig::validate(). Throws SweepError naming
-// the axis origin and value, or a duplicate value on one axis.
+// Every combination of the axes' values, in axis order (last axis fastest), except that an
+// axis a combination's technique does not use (pipeline::knob_applies: scale for wrap, lut
+// with an analytic specular model) is not expanded for it: it keeps its base value (fixed,
+// else the default), and the combinations that then repeat one run only once. The id still
+// names every axis's value, the label only those used. Values are validated and
+// canonicalised through pipeline::set_config_field/get_config_field ("1.0" -> "1"), and every
+// combination through PipelineConfig::validate(). Throws SweepError naming the axis origin
+// and value, or a duplicate value on one axis.
 std::vector<SweepConfig> expand_sweep(const SweepSpec& spec);
 
 // Everything a finished configuration's results depend on that the sweep controls: every
@@ -74,10 +81,14 @@ std::vector<SweepConfig> expand_sweep(const SweepSpec& spec);
 nlohmann::json config_fingerprint(const SweepConfig& config, const SceneSource& scene, int width,
                                   int height);
 
-// Knob values as reports::ConfigResult::knobs holds them: every pipeline knob plus device,
-// with the resolution resolved.
+// Every pipeline knob plus device, with the resolution resolved (the fingerprint's knobs;
+// a results row keeps those the configuration uses, see keep_used_knobs).
 std::vector<std::pair<std::string, std::string>> all_knobs(const SweepConfig& config, int width,
                                                            int height);
+
+// Removes from `knobs` (as all_knobs gives them) the pipeline knobs this configuration's
+// frame does not depend on (pipeline::knob_applies): what a results row shows.
+void keep_used_knobs(const SweepConfig& config, std::map<std::string, std::string>& knobs);
 
 // FNV-1a 64-bit hash of `text` as 16 hex digits (file names of cached references).
 std::string short_hash(const std::string& text);

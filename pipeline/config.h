@@ -62,8 +62,8 @@ struct PipelineConfig {
   int height = 0;
   float lod_distance_m = 2.0f;  // beyond this camera distance the single-pass shader runs
 
-  // Technique knobs (docs/techniques.md). Specular model of every technique but mobile/lod,
-  // whose shaders always read the BRDF LUT.
+  // Technique knobs (docs/techniques.md). Specular model of every technique's skin shader;
+  // only ks_lut reads the BRDF LUT, so the lut and lut_format knobs matter only with it.
   SpecularModel specular = SpecularModel::kKsLut;
   int preintegrated_lut_width = 64;   // N.L axis
   int preintegrated_lut_height = 64;  // curvature axis

@@ -19,6 +19,20 @@ template <class Program>
 sim::NamedProfile entry(const Program& p) {
   return {p->name(), p->profile()};
 }
+
+// A skin shader with each specular model, gamma 2.0.
+template <template <GammaMode, SpecularModel> class Shader>
+std::vector<sim::NamedProfile> specular_variants() {
+  constexpr GammaMode kSquare = GammaMode::kSquare;
+  return {entry(sim::make_fragment_program<Shader<kSquare, SpecularModel::kKsLut>>({})),
+          entry(sim::make_fragment_program<Shader<kSquare, SpecularModel::kKs>>({})),
+          entry(sim::make_fragment_program<Shader<kSquare, SpecularModel::kGgx>>({})),
+          entry(sim::make_fragment_program<Shader<kSquare, SpecularModel::kDualGgx>>({}))};
+}
+
+void append(std::vector<sim::NamedProfile>& to, const std::vector<sim::NamedProfile>& more) {
+  to.insert(to.end(), more.begin(), more.end());
+}
 }  // namespace
 
 std::vector<sim::NamedProfile> shader_catalog() {
@@ -27,37 +41,37 @@ std::vector<sim::NamedProfile> shader_catalog() {
   constexpr SpecularModel kKsLut = SpecularModel::kKsLut;
   BurleyFS::Uniforms burley_default;  // the profile counts the taps: the default count
   burley_default.count = PipelineConfig{}.burley_samples;
-  return {
+  std::vector<sim::NamedProfile> c = {
       entry(sim::make_vertex_program<SurfaceVS>({})),
       entry(sim::make_vertex_program<PositionNormalVS>({})),
       entry(sim::make_vertex_program<BlurVS>({})),
       entry(sim::make_fragment_program<IrradianceFS>({})),
       entry(sim::make_fragment_program<BlurFS>({})),
-      entry(sim::make_fragment_program<SkinFS<GammaMode::kSquare>>({})),
-      entry(sim::make_fragment_program<SkinFS<GammaMode::kSrgb>>({})),
-      entry(sim::make_fragment_program<SkinLodFS<GammaMode::kSquare>>({})),
-      entry(sim::make_fragment_program<EyeFS>({})),
-      entry(sim::make_fragment_program<BackgroundFS>({})),
-      // Comparison techniques (docs/techniques.md), gamma 2.0; the specular models on wrap.
-      entry(sim::make_vertex_program<QuadVS>({})),
-      entry(sim::make_vertex_program<UvSpaceVS>({})),
-      entry(sim::make_fragment_program<PreintegratedFS<kSquare, kKsLut, CurvatureSource::kVertex>>(
-          {})),
-      entry(sim::make_fragment_program<
-            PreintegratedFS<kSquare, kKsLut, CurvatureSource::kDerivatives>>({})),
-      entry(sim::make_fragment_program<WrapFS<kSquare, kKsLut>>({})),
-      entry(sim::make_fragment_program<WrapFS<kSquare, SpecularModel::kKs>>({})),
-      entry(sim::make_fragment_program<WrapFS<kSquare, SpecularModel::kGgx>>({})),
-      entry(sim::make_fragment_program<WrapFS<kSquare, SpecularModel::kDualGgx>>({})),
-      entry(sim::make_fragment_program<DiffuseDepthFS>({})),
-      entry(sim::make_fragment_program<BurleyFS>(burley_default)),
-      entry(sim::make_fragment_program<SsssBlurFS>({})),
-      entry(sim::make_fragment_program<DiffusedSkinFS<kSquare, kKsLut, DiffusionSource::kScreen>>(
-          {})),
-      entry(sim::make_fragment_program<UvIrradianceFS>({})),
-      entry(sim::make_fragment_program<UvCombineFS>({})),
-      entry(sim::make_fragment_program<DiffusedSkinFS<kSquare, kKsLut, DiffusionSource::kUv>>({})),
   };
+  append(c, specular_variants<SkinFS>());
+  c.push_back(entry(sim::make_fragment_program<SkinFS<GammaMode::kSrgb, kKsLut>>({})));
+  append(c, specular_variants<SkinLodFS>());
+  c.push_back(entry(sim::make_fragment_program<EyeFS>({})));
+  c.push_back(entry(sim::make_fragment_program<BackgroundFS>({})));
+  // Comparison techniques (docs/techniques.md), gamma 2.0.
+  c.push_back(entry(sim::make_vertex_program<QuadVS>({})));
+  c.push_back(entry(sim::make_vertex_program<UvSpaceVS>({})));
+  c.push_back(entry(
+      sim::make_fragment_program<PreintegratedFS<kSquare, kKsLut, CurvatureSource::kVertex>>({})));
+  c.push_back(entry(
+      sim::make_fragment_program<PreintegratedFS<kSquare, kKsLut, CurvatureSource::kDerivatives>>(
+          {})));
+  append(c, specular_variants<WrapFS>());
+  c.push_back(entry(sim::make_fragment_program<DiffuseDepthFS>({})));
+  c.push_back(entry(sim::make_fragment_program<BurleyFS>(burley_default)));
+  c.push_back(entry(sim::make_fragment_program<SsssBlurFS>({})));
+  c.push_back(entry(
+      sim::make_fragment_program<DiffusedSkinFS<kSquare, kKsLut, DiffusionSource::kScreen>>({})));
+  c.push_back(entry(sim::make_fragment_program<UvIrradianceFS>({})));
+  c.push_back(entry(sim::make_fragment_program<UvCombineFS>({})));
+  c.push_back(
+      entry(sim::make_fragment_program<DiffusedSkinFS<kSquare, kKsLut, DiffusionSource::kUv>>({})));
+  return c;
 }
 
 }  // namespace skinsim::pipeline

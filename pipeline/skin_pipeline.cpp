@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "pipeline/blur_pass.h"
 #include "pipeline/diffusion.h"
-#include "pipeline/techniques/skin_pass.h"
 #include "pipeline/shaders/irradiance.h"
 #include "pipeline/shaders/skin.h"
+#include "pipeline/techniques/frame_setup.h"
+#include "pipeline/techniques/skin_pass.h"
 
 namespace skinsim::pipeline {
 
@@ -44,35 +46,18 @@ sim::PassCounters irradiance_pass(const GpuScene& gs, const View& view, const Pi
   return gpu.execute(pass);
 }
 
-template <GammaMode kGamma>
-std::shared_ptr<const sim::FragmentProgram> skin_program(bool lod, const shaders::SkinUniforms& u) {
-  if (lod) return sim::make_fragment_program<shaders::SkinLodFS<kGamma>>(u);
-  return sim::make_fragment_program<shaders::SkinFS<kGamma>>(u);
-}
-
-sim::PassCounters framebuffer_pass(const GpuScene& gs, const View& view,
-                                   const PipelineConfig& cfg, const BrdfLutTexture& lut,
+sim::PassCounters framebuffer_pass(const GpuScene& gs, const View& view, const PipelineConfig& cfg,
+                                   const std::optional<BrdfLutTexture>& lut,
                                    const sim::Texture2D* irradiance, bool lod,
                                    sim::RenderTarget& frame, sim::Gpu& gpu) {
-  const LayerSplit split = skin_layer_split();
   const auto shading = [&](const GpuMaterial& mat, sim::DrawCall& d) {
-    const SceneLighting light = scene_lighting(gs.scene());
-    shaders::SkinUniforms u;
-    u.eye = view.eye;
-    u.light_dir = light.light_dir;
-    u.light_radiance = light.light_radiance;
-    u.ambient = light.ambient;
-    u.albedo_factor = glm::vec3(mat.base_color_factor);
-    u.layer_mix = split.wide_fraction;
-    u.reflectivity = mat.reflectivity;
-    u.specular_intensity = cfg.specular_intensity;
-    u.lobe1_weight = cfg.lobe1.weight;
-    u.lobe2_weight = cfg.lobe2.weight;
-    u.lut_lod = bake::brdf_lut_lod(1.0f);  // the config's own roughness
-    d.fragment_program = cfg.gamma == GammaMode::kSquare ? skin_program<GammaMode::kSquare>(lod, u)
-                                                         : skin_program<GammaMode::kSrgb>(lod, u);
+    const shaders::TechniqueUniforms u = technique_uniforms(gs, view, cfg, mat);
+    d.fragment_program = with_gamma_and_specular(cfg, [&](auto gamma, auto spec) {
+      if (lod) return sim::make_fragment_program<shaders::SkinLodFS<gamma(), spec()>>(u);
+      return sim::make_fragment_program<shaders::SkinFS<gamma(), spec()>>(u);
+    });
     d.textures.textures[shaders::SkinBindings::kIrradiance] = irradiance;
-    d.textures.textures[shaders::SkinBindings::kBrdfLut] = &lut.texture();
+    bind_brdf_lut(lut, d);
   };
   return skin_framebuffer_pass(gs, view, shading, frame, gpu);
 }
@@ -87,7 +72,7 @@ std::pair<int, int> render_size(const PipelineConfig& config, int default_width,
 
 FrameOutput render_mobile_frame(const GpuScene& gs, const PipelineConfig& cfg, sim::Gpu& gpu,
                                 MobileMode mode) {
-  const BrdfLutTexture lut = BrdfLutTexture::bake(cfg);
+  const std::optional<BrdfLutTexture> lut = brdf_lut_for(cfg);
   FrameOutput out;
   out.view = make_view(gs, cfg.width, cfg.height);
   out.frame = sim::RenderTarget("frame", cfg.width, cfg.height, sim::TexelFormat::kRGBA8);

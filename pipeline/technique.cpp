@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
+
 #include "pipeline/config.h"
 
 namespace skinsim::pipeline {
@@ -41,11 +43,13 @@ std::vector<std::string> technique_names() {
 }
 
 const std::vector<std::string>& technique_knobs(Technique t) {
-  // The BRDF LUT knobs matter wherever the ks_lut specular model can read the LUT.
-  static const std::vector<std::string> mobile = {
-      "scale",         "lut", "lut_format", "blur_iterations", "blur_width_mm", "normal_offset_mm",
-      "lod_distance_m"};
-  static const std::vector<std::string> lod = {"lut", "lut_format"};
+  // Every skin shader takes the specular model; the BRDF LUT knobs matter only when it is
+  // ks_lut, the one model that reads the LUT (knob_applies).
+  static const std::vector<std::string> mobile = {"scale",          "lut",
+                                                  "lut_format",     "blur_iterations",
+                                                  "blur_width_mm",  "normal_offset_mm",
+                                                  "lod_distance_m", "specular"};
+  static const std::vector<std::string> lod = {"specular", "lut", "lut_format"};
   static const std::vector<std::string> preintegrated = {"preintegrated_lut", "curvature",
                                                          "specular", "lut", "lut_format"};
   static const std::vector<std::string> wrap = {"wrap", "specular", "lut", "lut_format"};
@@ -71,6 +75,19 @@ const std::vector<std::string>& technique_knobs(Technique t) {
       return texture_space;
   }
   return ssss;
+}
+
+bool knob_applies(const PipelineConfig& config, const std::string& knob) {
+  static const std::vector<std::string> common = {"technique", "resolution", "gamma",
+                                                  "lobe1",     "lobe2",      "specular_intensity"};
+  const auto has = [&](const std::vector<std::string>& knobs) {
+    return std::find(knobs.begin(), knobs.end(), knob) != knobs.end();
+  };
+  if (has(common)) return true;
+  if ((knob == "lut" || knob == "lut_format") && config.specular != SpecularModel::kKsLut) {
+    return false;
+  }
+  return has(technique_knobs(config.technique));
 }
 
 Technique parse_technique(const std::string& name) {

@@ -8,6 +8,8 @@
 
 namespace skinsim::pipeline {
 
+struct PipelineConfig;
+
 enum class Technique {
   kMobile,         // GPU Pro 5 screen-space irradiance pipeline (the primary one)
   kLod,            // its single-pass distant-skin shader, at any distance
@@ -28,5 +30,10 @@ std::vector<std::string> technique_names();
 // technique uses (technique, resolution, gamma, lobe1, lobe2, specular_intensity). A sweep
 // that varies any other knob renders the same frame again for this technique.
 const std::vector<std::string>& technique_knobs(Technique technique);
+
+// Whether a frame rendered with `config` depends on `knob` (a set_config_field key): a knob
+// every technique uses, or one of technique_knobs(config.technique) — lut and lut_format
+// only with the ks_lut specular model, the one that reads the BRDF LUT.
+bool knob_applies(const PipelineConfig& config, const std::string& knob);
 
 }  // namespace skinsim::pipeline

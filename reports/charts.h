@@ -38,9 +38,15 @@ struct TradeoffSpec {
   std::string title;                          // "" = generated from the knobs
 };
 
+// Whether a row is plotted on the trade-off chart of `spec`'s knobs: it has the series knob
+// and the order knob, if any (a sweep leaves out of a row the knobs its technique does not
+// use, and such a row has no place on a line ordered by that knob).
+bool on_tradeoff_chart(const ConfigResult& row, const TradeoffSpec& spec);
+
 // Frame time vs quality, one polyline per series_knob value, the Pareto front of the plotted
-// rows highlighted, the recommended knee marked, and the frame budget as a vertical line
-// labelled e.g. "33.3 ms (30 fps)". Throws ReportError if no row has the metric.
+// rows highlighted, the recommended configuration (pareto_knee over every row of the table)
+// marked if the chart plots it, and the frame budget as a vertical line labelled e.g.
+// "33.3 ms (30 fps)". Throws ReportError if no row on the chart has the metric.
 ChartFiles write_tradeoff_chart(const SweepTable& table, const TradeoffSpec& spec,
                                 const std::string& path_stem, const ChartOptions& options = {});
 

@@ -160,8 +160,10 @@ std::string table_section(const SweepTable& t, const ReportOptions& o,
     const char* cls = knee && *knee == i ? " class=\"chosen\""
                                          : (r.frame_ms > t.budget_ms ? " class=\"over\"" : "");
     h += std::string("<tr") + cls + "><td class=\"text\">" + esc(name_of(r)) + "</td>";
-    for (const std::string& k : varying)
-      h += "<td class=\"text\">" + esc(knob_value(r, k)) + "</td>";
+    for (const std::string& k : varying) {
+      const std::string v = knob_value(r, k);  // empty: the configuration does not use it
+      h += "<td class=\"text\">" + (v.empty() ? std::string("-") : esc(v)) + "</td>";
+    }
     h += "<td>" + ms(r.frame_ms) + "</td><td>" + fmt::format("{:.1f}", r.fps) +
          "</td><td class=\"text\">" + esc(dominant_bottleneck(r)) + "</td><td>" +
          fmt::format("{:.1f}", r.dram_bytes / 1e6) + "</td>";

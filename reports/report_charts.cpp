@@ -14,24 +14,24 @@ ReportFigure relative(const ChartFiles& files, const std::string& caption) {
           files.svg.empty() ? std::string() : fs::path(files.svg).filename().string(), caption};
 }
 
-std::size_t distinct_values(const SweepTable& table, const std::string& knob) {
+// Values of `knob` over the rows the chart plots: those with its knobs and its metric.
+std::size_t distinct_values(const SweepTable& table, const TradeoffSpec& spec,
+                            const std::string& knob) {
   std::set<std::string> values;
   for (const ConfigResult& r : table.rows) {
-    if (r.knobs.count(knob)) values.insert(r.knobs.at(knob));
+    if (on_tradeoff_chart(r, spec) && r.quality.count(spec.metric)) {
+      values.insert(knob_value(r, knob));
+    }
   }
   return values.size();
 }
 
 // A grouping is worth a chart if it compares series, or if its one series runs along a knob;
 // a single series in frame-time order would join unrelated configurations.
-bool worth_drawing(const SweepTable& table, const std::string& series, const std::string& order) {
-  const std::size_t n = distinct_values(table, series);
-  return n >= 2 || (n == 1 && !order.empty() && distinct_values(table, order) >= 2);
-}
-
-bool any_row_has_metric(const SweepTable& table, const std::string& metric) {
-  return std::any_of(table.rows.begin(), table.rows.end(),
-                     [&](const ConfigResult& r) { return r.quality.count(metric) > 0; });
+bool worth_drawing(const SweepTable& table, const TradeoffSpec& spec) {
+  const std::size_t n = distinct_values(table, spec, spec.series_knob);
+  return n >= 2 ||
+         (n == 1 && !spec.order_knob.empty() && distinct_values(table, spec, spec.order_knob) >= 2);
 }
 
 bool has_dram_causes(const ConfigResult& row) {
@@ -46,23 +46,20 @@ std::vector<ReportFigure> draw_report_charts(const SweepTable& table, const std:
                                              const ConfigResult* dram_row) {
   std::vector<ReportFigure> figures;
   const std::string stem = dir + "/";
-  if (any_row_has_metric(table, options.quality_metric)) {
-    for (const auto& [series, order] : options.tradeoff_groupings) {
-      if (!worth_drawing(table, series, order)) continue;
-      TradeoffSpec spec;
-      spec.metric = options.quality_metric;
-      spec.higher_is_better = options.higher_is_better;
-      spec.metric_label = options.metric_label;
-      spec.series_knob = series;
-      spec.order_knob = order;
-      const std::string caption =
-          "Frame time vs " + options.metric_label + ", one line per " + series +
-          (order.empty() ? "" : " across " + order) +
-          ". Squares: Pareto front; diamond: recommended; dashed red: frame budget.";
-      figures.push_back(
-          relative(write_tradeoff_chart(table, spec, stem + "tradeoff_by_" + series, options.chart),
-                   caption));
-    }
+  for (const auto& [series, order] : options.tradeoff_groupings) {
+    TradeoffSpec spec;
+    spec.metric = options.quality_metric;
+    spec.higher_is_better = options.higher_is_better;
+    spec.metric_label = options.metric_label;
+    spec.series_knob = series;
+    spec.order_knob = order;
+    if (!worth_drawing(table, spec)) continue;
+    const std::string caption =
+        "Frame time vs " + options.metric_label + ", one line per " + series +
+        (order.empty() ? "" : " across " + order + " (the configurations that use both)") +
+        ". Squares: Pareto front; diamond: recommended; dashed red: frame budget.";
+    figures.push_back(relative(
+        write_tradeoff_chart(table, spec, stem + "tradeoff_by_" + series, options.chart), caption));
   }
   figures.push_back(relative(
       write_pass_stack_chart(table, stem + "pass_times", options.chart),

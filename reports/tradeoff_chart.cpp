@@ -40,9 +40,11 @@ std::string default_title(const TradeoffSpec& spec) {
   return title;
 }
 
-// Adds a line-with-markers plot of (x, y) named `name`.
+// Adds a line-with-markers plot of (x, y) named `name`; a single point is a marker only
+// (VTK refuses to draw a line through fewer than two points).
 vtkPlotPoints* add_series(vtkChartXY* chart, const std::string& name, const std::vector<double>& x,
                           const std::vector<double>& y, const Rgb& colour, int line_type) {
+  if (x.size() < 2) line_type = vtkPen::NO_PEN;
   vtkNew<vtkTable> table;
   table->AddColumn(make_column("frame_ms", x));
   table->AddColumn(make_column(name, y));
@@ -59,6 +61,11 @@ vtkPlotPoints* add_series(vtkChartXY* chart, const std::string& name, const std:
 
 }  // namespace
 
+bool on_tradeoff_chart(const ConfigResult& row, const TradeoffSpec& spec) {
+  return !knob_value(row, spec.series_knob).empty() &&
+         (spec.order_knob.empty() || !knob_value(row, spec.order_knob).empty());
+}
+
 std::string budget_label(double budget_ms) {
   return fmt::format("{:.1f} ms ({:.0f} fps)", budget_ms, 1000.0 / budget_ms);
 }
@@ -67,11 +74,15 @@ ChartFiles write_tradeoff_chart(const SweepTable& table, const TradeoffSpec& spe
                                 const std::string& path_stem, const ChartOptions& options) {
   std::vector<ConfigResult> rows;
   for (const ConfigResult& r : table.rows) {
-    if (matches(r, spec.filter) && r.quality.count(spec.metric)) rows.push_back(r);
+    if (matches(r, spec.filter) && on_tradeoff_chart(r, spec) && r.quality.count(spec.metric)) {
+      rows.push_back(r);
+    }
   }
   if (rows.empty()) {
-    throw ReportError("trade-off chart " + path_stem + ": no configuration has quality metric '" +
-                      spec.metric + "'" + (spec.filter.empty() ? "" : " (after the knob filter)"));
+    throw ReportError(
+        "trade-off chart " + path_stem + ": no configuration with knob " + spec.series_knob +
+        (spec.order_knob.empty() ? "" : " and " + spec.order_knob) + " has quality metric '" +
+        spec.metric + "'" + (spec.filter.empty() ? "" : " (after the knob filter)"));
   }
   std::set<std::string, decltype(&knob_value_less)> series(&knob_value_less);
   for (const ConfigResult& r : rows) series.insert(knob_value(r, spec.series_knob));
@@ -101,7 +112,7 @@ ChartFiles write_tradeoff_chart(const SweepTable& table, const TradeoffSpec& spe
       x_lo = std::min(x_lo, x.back());
       x_hi = std::max(x_hi, x.back());
     }
-    const std::string name = spec.series_knob + " = " + (value.empty() ? "(unset)" : value);
+    const std::string name = spec.series_knob + " = " + value;
     add_series(chart, name, x, y, palette_colour(colour++), vtkPen::SOLID_LINE);
   }
 
@@ -116,11 +127,14 @@ ChartFiles write_tradeoff_chart(const SweepTable& table, const TradeoffSpec& spe
   front->SetMarkerSize(16.0);
   front->SetWidth(3.0);
 
-  const auto knee = pareto_knee(rows, spec.metric, spec.higher_is_better, table.budget_ms);
-  if (knee) {
-    vtkPlotPoints* mark =
-        add_series(chart, "recommended (knee): " + rows[*knee].label, {rows[*knee].frame_ms},
-                   {rows[*knee].quality.at(spec.metric)}, {200, 0, 0}, vtkPen::NO_PEN);
+  // The table's recommendation (the knee over every row, as the report chooses it), marked
+  // where this chart plots it.
+  const auto knee = pareto_knee(table.rows, spec.metric, spec.higher_is_better, table.budget_ms);
+  if (knee && matches(table.rows[*knee], spec.filter) &&
+      on_tradeoff_chart(table.rows[*knee], spec)) {
+    const ConfigResult& r = table.rows[*knee];
+    vtkPlotPoints* mark = add_series(chart, "recommended (knee): " + r.label, {r.frame_ms},
+                                     {r.quality.at(spec.metric)}, {200, 0, 0}, vtkPen::NO_PEN);
     mark->SetMarkerStyle(vtkPlotPoints::DIAMOND);
     mark->SetMarkerSize(26.0);
   }

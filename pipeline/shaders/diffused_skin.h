@@ -30,10 +30,7 @@ struct DiffusedSkinFS {
     using vec3 = typename L::vec3;
     using vec4 = typename L::vec4;
     using B = TechniqueBindings;
-    const vec4 base = tex.sample(B::kAlbedo, in.texcoord(SurfaceSlots::kUv));
-    const vec4 normal_map = tex.sample(B::kNormalMap, in.texcoord(SurfaceSlots::kUv));
-    const vec4 env = tex.sample_cube(B::kEnvironment, in.direction(SurfaceSlots::kNormal));
-    const TechniqueSurface<L> s = technique_surface<L, kGamma>(in, u, base, normal_map);
+    const SkinSurface<L> s = skin_surface<L, kGamma>(in, tex, u);
     vec3 diffuse_light(0.0f);
     if constexpr (kSource == DiffusionSource::kScreen) {
       diffuse_light = sl::xyz(tex.sample(B::kDiffusion, in.screen_texcoord()));
@@ -44,7 +41,7 @@ struct DiffusedSkinFS {
       const vec3 diffused = sl::xyz(buffer) * sl::rcp(sl::max(sl::w(buffer), 1.0f / 255.0f));
       diffuse_light = sl::mix(sharp, diffused, sl::w(buffer));
     }
-    const Reflection<L> r = skin_specular<kSpec, L>(s, env, tex, u);
+    const Reflection<L> r = skin_specular<kSpec, L>(s, tex, u);
     const vec3 color = s.albedo * diffuse_light * r.diffuse_energy + r.light;
     return vec4(encode_gamma<kGamma>(color), 1.0f);
   }

@@ -46,9 +46,7 @@ struct PreintegratedFS {
     using vec4 = typename L::vec4;
     using f32 = typename L::f32;
     using B = TechniqueBindings;
-    const vec4 base = tex.sample(B::kAlbedo, in.texcoord(SurfaceSlots::kUv));
-    const vec4 normal_map = tex.sample(B::kNormalMap, in.texcoord(SurfaceSlots::kUv));
-    const vec4 env = tex.sample_cube(B::kEnvironment, in.direction(SurfaceSlots::kNormal));
+    const SkinSurface<L> s = skin_surface<L, kGamma>(in, tex, u);
     f32 curvature(0.0f);  // LUT v coordinate: curvature / max curvature
     if constexpr (kCurvature == CurvatureSource::kVertex) {
       // The baked texture stores curvature / max curvature: the LUT v coordinate.
@@ -58,7 +56,6 @@ struct PreintegratedFS {
       const f32 dp = sl::length(fwidth3<L>(in, SurfaceSlots::kWorldPos));
       curvature = dn * sl::rcp(sl::max(dp, 1e-6f)) * u.curvature_scale;
     }
-    const TechniqueSurface<L> s = technique_surface<L, kGamma>(in, u, base, normal_map);
 
     const vec3 l(u.light_dir);
     const f32 blur_n_dot_l = sl::dot(s.vertex_normal, l);
@@ -73,7 +70,7 @@ struct PreintegratedFS {
     const vec4 blue = tex.sample(B::kPreintegratedLut, vec2(lut_u(sl::dot(n_b, l)), curvature));
     const vec3 scattered(sl::x(red), sl::y(green), sl::z(blue));
 
-    const Reflection<L> r = skin_specular<kSpec, L>(s, env, tex, u);
+    const Reflection<L> r = skin_specular<kSpec, L>(s, tex, u);
     const vec3 diffuse_light = vec3(u.light_radiance) * scattered + vec3(u.ambient);
     const vec3 color = s.albedo * diffuse_light * r.diffuse_energy + r.light;
     return vec4(encode_gamma<kGamma>(color), 1.0f);

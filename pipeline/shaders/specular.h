@@ -1,10 +1,11 @@
-// The specular models every comparison technique can use (docs/skin-techniques.md section
-// 2), on top of the per-pixel surface terms those shaders share. All four scale the
-// microfacet lobe the same way as d'Eon & Luebke's KS_Skin_Specular (GPU Gems 3 ch. 14):
+// The specular models every skin shader can use (the `specular` knob; docs/skin-techniques.md
+// section 2), on top of the per-pixel surface terms those shaders share (skin_surface.h).
+// All four scale the microfacet lobe the same way as d'Eon & Luebke's KS_Skin_Specular
+// (GPU Gems 3 ch. 14):
 //   specular = light * N.L * rho_s * pi D * F(V.H) * Vis * reflectivity
 // so rho_s = 0.18 means the same thing in each and only the lobe shape differs:
 //   ks_lut   - the dual Kelemen/Szirmay-Kalos lobes, Fresnel and diffuse energy from the BRDF
-//              LUT: one dependent read (what the mobile pipeline does);
+//              LUT: one dependent read (what the GPU Pro 5 mobile pipeline does);
 //   ks       - the same lobes in ALU: Beckmann D, Vis = 1 / (4 (V.H)^2) (Kelemen);
 //   ggx      - one GGX lobe, alpha = Beckmann m of lobe 1 (the usual equivalence), with
 //              the height-correlated Smith visibility in Hammon's approximation (GDC 2017);
@@ -17,14 +18,12 @@
 #include <array>
 
 #include "pipeline/bake/brdf_lut_encoding.h"
-#include "pipeline/shaders/gamma.h"
-#include "pipeline/shaders/skin.h"
-#include "pipeline/shaders/surface_vs.h"
+#include "pipeline/shaders/skin_surface.h"
 
 namespace skinsim::pipeline::shaders {
 
-// Uniforms of the comparison techniques' skin shaders: the mobile shader's plus the
-// analytic lobes and the technique knobs (each shader reads the ones it needs).
+// Uniforms of the skin shaders: the mobile shader's (skin_uniforms.h) plus the analytic
+// lobes and the technique knobs (each shader reads the ones it needs).
 struct TechniqueUniforms : SkinUniforms {
   float lobe1_roughness = 0.3f;  // Beckmann m (GGX alpha)
   float lobe2_roughness = 0.6f;
@@ -62,37 +61,6 @@ constexpr const char* gamma_suffix(GammaMode g) {
   return g == GammaMode::kSquare ? "" : "_srgb";
 }
 
-// Per-pixel terms without any LUT read.
-template <class L>
-struct TechniqueSurface {
-  typename L::vec3 normal;  // normal-mapped
-  typename L::vec3 vertex_normal;
-  typename L::vec3 view;
-  typename L::vec3 albedo;  // linear
-  typename L::f32 reflectivity;
-  typename L::f32 n_dot_l;  // signed, normal-mapped
-};
-
-template <class L, GammaMode kGamma>
-TechniqueSurface<L> technique_surface(const typename L::FragIn& in, const TechniqueUniforms& u,
-                                      const typename L::vec4& base,
-                                      const typename L::vec4& normal_map) {
-  using vec3 = typename L::vec3;
-  TechniqueSurface<L> s;
-  s.vertex_normal = sl::normalize(in.v3(SurfaceSlots::kNormal));
-  const auto tangent4 = in.v4(SurfaceSlots::kTangent);
-  const vec3 tangent = sl::xyz(tangent4);
-  const vec3 bitangent = sl::cross(s.vertex_normal, tangent) * sl::w(tangent4);
-  const vec3 nt = sl::xyz(normal_map) * 2.0f - 1.0f;
-  s.normal =
-      sl::normalize(tangent * sl::x(nt) + bitangent * sl::y(nt) + s.vertex_normal * sl::z(nt));
-  s.view = sl::normalize(vec3(u.eye) - in.v3(SurfaceSlots::kWorldPos));
-  s.n_dot_l = sl::dot(s.normal, vec3(u.light_dir));
-  s.albedo = decode_gamma<kGamma>(sl::xyz(base)) * u.albedo_factor;
-  s.reflectivity = sl::w(base) * u.reflectivity;
-  return s;
-}
-
 template <class L>
 struct Reflection {
   typename L::vec3 light;          // key-light specular + environment rim light
@@ -122,8 +90,8 @@ F schlick(float f0, const F& cos_theta) {
 }  // namespace detail
 
 template <SpecularModel kSpec, class L>
-Reflection<L> skin_specular(const TechniqueSurface<L>& s, const typename L::vec4& env,
-                            typename L::TexUnit& tex, const TechniqueUniforms& u) {
+Reflection<L> skin_specular(const SkinSurface<L>& s, typename L::TexUnit& tex,
+                            const TechniqueUniforms& u) {
   using vec2 = typename L::vec2;
   using vec3 = typename L::vec3;
   using f32 = typename L::f32;
@@ -139,7 +107,7 @@ Reflection<L> skin_specular(const TechniqueSurface<L>& s, const typename L::vec4
                       bake::decode_specular_lobe(sl::y(lut)) * u.lobe2_weight;
     const f32 fresnel = bake::decode_fresnel(sl::z(lut));
     r.light = radiance * (lobes * n_dot_l * u.specular_intensity * s.reflectivity) +
-              sl::xyz(env) * (fresnel * s.reflectivity * u.environment_intensity);
+              sl::xyz(s.environment) * (fresnel * s.reflectivity * u.environment_intensity);
     r.diffuse_energy = bake::decode_diffuse_energy(sl::w(lut));
     return r;
   } else {
@@ -168,7 +136,7 @@ Reflection<L> skin_specular(const TechniqueSurface<L>& s, const typename L::vec4
     const f32 f_h = detail::schlick(u.f0, v_dot_h);
     const f32 f_v = detail::schlick(u.f0, n_dot_v);
     r.light = radiance * (lobe * f_h * n_dot_l * u.specular_intensity * s.reflectivity) +
-              sl::xyz(env) * (f_v * s.reflectivity * u.environment_intensity);
+              sl::xyz(s.environment) * (f_v * s.reflectivity * u.environment_intensity);
     r.diffuse_energy = 1.0f - f_v;
     return r;
   }

@@ -1,8 +1,8 @@
 // Texture bindings of the comparison techniques' final skin shaders. Albedo, normal map,
-// environment and BRDF LUT sit where the mobile shader has them (skin.h).
+// environment and BRDF LUT sit where the mobile shader has them (skin_uniforms.h).
 #pragma once
 
-#include "pipeline/shaders/skin.h"
+#include "pipeline/shaders/skin_uniforms.h"
 
 namespace skinsim::pipeline::shaders {
 

@@ -4,7 +4,6 @@
 #pragma once
 
 #include "pipeline/shaders/specular.h"
-#include "pipeline/shaders/technique_bindings.h"
 
 namespace skinsim::pipeline::shaders {
 
@@ -19,13 +18,9 @@ struct WrapFS {
                                    const Uniforms& u) {
     using vec3 = typename L::vec3;
     using vec4 = typename L::vec4;
-    using B = TechniqueBindings;
-    const vec4 base = tex.sample(B::kAlbedo, in.texcoord(SurfaceSlots::kUv));
-    const vec4 normal_map = tex.sample(B::kNormalMap, in.texcoord(SurfaceSlots::kUv));
-    const vec4 env = tex.sample_cube(B::kEnvironment, in.direction(SurfaceSlots::kNormal));
-    const TechniqueSurface<L> s = technique_surface<L, kGamma>(in, u, base, normal_map);
+    const SkinSurface<L> s = skin_surface<L, kGamma>(in, tex, u);
     const auto wrapped = sl::saturate((s.n_dot_l + u.wrap) * (1.0f / (1.0f + u.wrap)));
-    const Reflection<L> r = skin_specular<kSpec, L>(s, env, tex, u);
+    const Reflection<L> r = skin_specular<kSpec, L>(s, tex, u);
     const vec3 diffuse_light = vec3(u.light_radiance) * wrapped + vec3(u.ambient);
     const vec3 color = s.albedo * diffuse_light * r.diffuse_energy + r.light;
     return vec4(encode_gamma<kGamma>(color), 1.0f);

@@ -110,6 +110,30 @@ TEST(SweepRun, WritesOneRowPerConfigurationWithCostAndQuality) {
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3);  // header + 2 rows
 }
 
+TEST(SweepRun, TechniquesRunOncePerKnobTheyUseAndRowsOmitTheRest) {
+  const fs::path dir = out_dir("techniques");
+  SweepSpec spec = tiny_spec();
+  set_axis(spec, "technique", {"mobile", "wrap"}, "test");
+  SweepRunSummary summary;
+  const reports::SweepTable table = run_and_write(spec, options(dir, 2), &summary);
+  EXPECT_EQ(summary.total, 3);  // wrap ignores the scale axis
+  ASSERT_EQ(table.rows.size(), 3u);
+  for (const reports::ConfigResult& r : table.rows) {
+    const bool wrap = reports::knob_value(r, "technique") == "wrap";
+    EXPECT_EQ(reports::knob_value(r, "scale").empty(), wrap) << r.id;
+    EXPECT_EQ(reports::knob_value(r, "wrap").empty(), !wrap) << r.id;
+    EXPECT_EQ(reports::knob_value(r, "lut"), "32x128") << r.id;
+  }
+  // The CSV leaves the knob a technique does not use empty.
+  const std::string csv = read_file(dir / "results.csv");
+  EXPECT_NE(csv.find("\nscale0.5_wrap,"), std::string::npos) << csv;
+
+  SweepRunSummary again;
+  run_and_write(spec, options(dir, 2), &again);
+  EXPECT_EQ(again.resumed, 3);
+  EXPECT_EQ(read_file(dir / "results.csv"), csv);
+}
+
 TEST(SweepRun, ResumeComputesOnlyWhatIsMissing) {
   const fs::path dir = out_dir("resume");
   const SweepSpec spec = tiny_spec();

@@ -1,6 +1,7 @@
 // Sweep expansion: combinations, order, canonical values, ids, validation errors.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <set>
 
 #include "driver/sweep_spec.h"
@@ -61,6 +62,100 @@ TEST(SweepSpec, NoAxesIsOneDefaultConfiguration) {
   const std::vector<SweepConfig> configs = expand_sweep(SweepSpec{});
   ASSERT_EQ(configs.size(), 1u);
   EXPECT_EQ(configs[0].id, "default");
+}
+
+std::vector<std::string> ids_of(const std::vector<SweepConfig>& configs) {
+  std::vector<std::string> ids;
+  for (const SweepConfig& c : configs) ids.push_back(c.id);
+  return ids;
+}
+
+TEST(SweepSpec, AnAxisATechniqueDoesNotUseRunsOnceForIt) {
+  SweepSpec spec;
+  set_axis(spec, "scale", {"1", "0.5", "0.25", "0.125"}, "--scales");
+  set_axis(spec, "technique", {"mobile", "wrap"}, "--techniques");
+  const std::vector<SweepConfig> configs = expand_sweep(spec);
+  // 4 mobile + 1 wrap; wrap first appears with the first scale and keeps the default scale.
+  EXPECT_EQ(ids_of(configs),
+            (std::vector<std::string>{"scale1_mobile", "scale0.5_wrap", "scale0.5_mobile",
+                                      "scale0.25_mobile", "scale0.125_mobile"}));
+  const SweepConfig& wrap = configs[1];
+  EXPECT_EQ(wrap.label, "technique wrap");
+  EXPECT_EQ(wrap.swept, (std::vector<std::pair<std::string, std::string>>{{"technique", "wrap"}}));
+  EXPECT_FLOAT_EQ(wrap.config.buffer_scale, pipeline::PipelineConfig{}.buffer_scale);
+  EXPECT_EQ(configs[0].label, "scale 1, technique mobile");
+  // The wrap frame is the one the full cross product ran as scale0.5_wrap: same id, same
+  // fingerprint, so a sweep directory written before resumes it.
+  EXPECT_EQ(config_fingerprint(wrap, SceneSource{}, 64, 48)["knobs"]["scale"], "0.5");
+}
+
+TEST(SweepSpec, AnUnusedAxisKeepsTheFixedValue) {
+  SweepSpec spec;
+  spec.fixed.push_back({"scale", "0.25", "--set scale=0.25"});
+  set_axis(spec, "scale", {"1", "0.5"}, "--scales");
+  set_axis(spec, "technique", {"wrap", "burley"}, "--techniques");
+  EXPECT_EQ(ids_of(expand_sweep(spec)),
+            (std::vector<std::string>{"scale0.25_wrap", "scale0.25_burley"}));
+}
+
+TEST(SweepSpec, LutAxesExpandOnlyWhereTheSpecularModelReadsTheLut) {
+  SweepSpec spec;
+  set_axis(spec, "specular", {"ks_lut", "ggx"}, "test");
+  set_axis(spec, "lut", {"8x32", "32x128", "64x256"}, "--luts");
+  set_axis(spec, "lut_format", {"rgba8", "rgba16f"}, "--lut-formats");
+  const std::vector<SweepConfig> configs = expand_sweep(spec);
+  ASSERT_EQ(configs.size(), 3u * 2u + 1u);
+  EXPECT_EQ(configs.back().id, "specularggx_lut32x128_rgba8");  // the defaults
+  EXPECT_EQ(configs.back().label, "specular ggx");
+}
+
+TEST(SweepSpec, AllTechniquesOverTheDefaultAxes) {
+  SweepSpec spec = default_sweep_spec();
+  set_axis(spec, "technique", pipeline::technique_names(), "--techniques");
+  const std::vector<SweepConfig> configs = expand_sweep(spec);
+  // mobile: 4 scales x 4 LUTs; every other technique reads the LUT but has no buffer: 4.
+  ASSERT_EQ(configs.size(), 16u + 6u * 4u);
+  std::map<std::string, int> per_technique;
+  std::set<std::string> ids;
+  for (const SweepConfig& c : configs) {
+    ++per_technique[pipeline::technique_name(c.config.technique)];
+    ids.insert(c.id);
+  }
+  EXPECT_EQ(ids.size(), configs.size());
+  EXPECT_EQ(per_technique["mobile"], 16);
+  EXPECT_EQ(per_technique["texture-space"], 4);
+  EXPECT_TRUE(ids.count("scale0.5_lut16x64_texture-space"));
+}
+
+TEST(SweepSpec, UnusedAxisValuesAreStillValidated) {
+  SweepSpec spec;
+  set_axis(spec, "technique", {"wrap"}, "--techniques");
+  set_axis(spec, "scale", {"0.5", "2"}, "--scales");
+  try {
+    expand_sweep(spec);
+    FAIL() << "scale 2 accepted";
+  } catch (const SweepError& e) {
+    EXPECT_NE(std::string(e.what()).find("technique wrap, scale 2"), std::string::npos) << e.what();
+  }
+}
+
+TEST(SweepSpec, RowsKeepTheKnobsTheFrameUses) {
+  SweepSpec spec;
+  set_axis(spec, "technique", {"mobile", "wrap"}, "--techniques");
+  set_axis(spec, "specular", {"ks_lut", "ggx"}, "test");
+  for (const SweepConfig& c : expand_sweep(spec)) {
+    const auto all = all_knobs(c, 64, 48);
+    std::map<std::string, std::string> knobs(all.begin(), all.end());
+    keep_used_knobs(c, knobs);
+    const bool mobile = c.config.technique == pipeline::Technique::kMobile;
+    const bool lut = c.config.specular == pipeline::SpecularModel::kKsLut;
+    EXPECT_EQ(knobs.count("scale"), mobile ? 1u : 0u) << c.id;
+    EXPECT_EQ(knobs.count("wrap"), mobile ? 0u : 1u) << c.id;
+    EXPECT_EQ(knobs.count("lut"), lut ? 1u : 0u) << c.id;
+    for (const char* always : {"technique", "resolution", "specular", "device"}) {
+      EXPECT_EQ(knobs.count(always), 1u) << c.id << " " << always;
+    }
+  }
 }
 
 void expect_error(const SweepSpec& spec, const std::string& fragment) {

@@ -56,8 +56,45 @@ TEST(TechniqueConfig, TechniqueKnobsAreKnownKeys) {
   }
   const auto& mobile = technique_knobs(Technique::kMobile);
   EXPECT_NE(std::find(mobile.begin(), mobile.end(), "scale"), mobile.end());
+  for (const Technique t : all_techniques()) {
+    const auto& knobs = technique_knobs(t);
+    EXPECT_NE(std::find(knobs.begin(), knobs.end(), "specular"), knobs.end()) << technique_name(t);
+  }
   const auto& burley = technique_knobs(Technique::kBurley);
   EXPECT_EQ(std::find(burley.begin(), burley.end(), "scale"), burley.end());
+}
+
+TEST(TechniqueConfig, KnobAppliesFollowsTheTechniqueAndTheSpecularModel) {
+  PipelineConfig mobile, wrap;
+  set_config_field(wrap, "technique", "wrap");
+  for (const char* common : {"technique", "resolution", "gamma", "lobe1", "specular_intensity"}) {
+    EXPECT_TRUE(knob_applies(mobile, common)) << common;
+    EXPECT_TRUE(knob_applies(wrap, common)) << common;
+  }
+  EXPECT_TRUE(knob_applies(mobile, "scale"));
+  EXPECT_FALSE(knob_applies(wrap, "scale"));
+  EXPECT_TRUE(knob_applies(wrap, "wrap"));
+  EXPECT_FALSE(knob_applies(mobile, "wrap"));
+  for (PipelineConfig* c : {&mobile, &wrap}) {
+    EXPECT_TRUE(knob_applies(*c, "specular"));
+    EXPECT_TRUE(knob_applies(*c, "lut"));
+    EXPECT_TRUE(knob_applies(*c, "lut_format"));
+    set_config_field(*c, "specular", "ggx");  // no BRDF LUT read
+    EXPECT_FALSE(knob_applies(*c, "lut"));
+    EXPECT_FALSE(knob_applies(*c, "lut_format"));
+  }
+}
+
+TEST(TechniqueConfig, EveryKnobAppliesToSomeTechnique) {
+  for (const std::string& knob : config_field_names()) {
+    bool used = false;
+    for (const Technique t : all_techniques()) {
+      PipelineConfig c;
+      c.technique = t;
+      used = used || knob_applies(c, knob);
+    }
+    EXPECT_TRUE(used) << knob;
+  }
 }
 
 void expect_error(const std::string& key, const std::string& value, const std::string& needle) {

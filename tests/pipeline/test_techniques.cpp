@@ -7,68 +7,20 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/frame.h"
-#include "pipeline/gpu_scene.h"
-#include "scene/procedural_head.h"
-#include "sim/gpu.h"
+#include "tests/pipeline/small_frames.h"
 
 namespace skinsim::pipeline {
 namespace {
 
-const GpuScene& small_scene() {
-  static const scene::Scene s = [] {
-    scene::DefaultSceneOptions o;
-    o.head_triangles = 4000;
-    o.texture_size = 256;
-    o.eye_texture_size = 64;
-    o.environment_size = 16;
-    return scene::make_default_scene(o);
-  }();
-  static const GpuScene gs(s);
-  return gs;
-}
-
-PipelineConfig small_config(const std::string& technique) {
-  PipelineConfig c;
-  set_config_field(c, "technique", technique);
-  set_config_field(c, "resolution", "256x192");
-  set_config_field(c, "texture_space_size", "128");
-  set_config_field(c, "burley_samples", "8");
-  return c;
-}
-
-FrameOutput render(const PipelineConfig& c) {
-  sim::GpuConfig g;
-  g.threads = 2;
-  sim::Gpu gpu(g);
-  return render_frame(small_scene(), c, gpu);
-}
+using testing::centre_mean;
+using testing::render;
+using testing::skin_draw;
+using testing::small_config;
 
 std::vector<std::string> pass_names(const FrameOutput& out) {
   std::vector<std::string> names;
   for (const auto& p : out.passes) names.push_back(p.name);
   return names;
-}
-
-const sim::DrawCounters& skin_draw(const FrameOutput& out) {
-  const sim::PassCounters& skin = out.passes.back();
-  for (const sim::DrawCounters& d : skin.draws) {
-    if (d.fragment_program != "background_fs" && d.fragment_program != "eye_fs") return d;
-  }
-  throw std::runtime_error("no skin draw");
-}
-
-// Mean luminance-ish of the frame's centre region (the face) and its colour balance.
-glm::vec3 centre_mean(const sim::RenderTarget& frame) {
-  glm::vec3 sum(0.0f);
-  int n = 0;
-  for (int y = frame.height * 3 / 8; y < frame.height * 5 / 8; ++y) {
-    for (int x = frame.width * 3 / 8; x < frame.width * 5 / 8; ++x) {
-      sum += glm::vec3(frame.at(x, y));
-      ++n;
-    }
-  }
-  return sum / static_cast<float>(n);
 }
 
 struct Expected {
@@ -140,18 +92,6 @@ TEST(TechniqueReads, SsssAxisHasSixteenDependentTaps) {
     const sim::OpProfile& p = draw_named(out, pass).fragment_profile;
     EXPECT_EQ(p.texture_reads_independent, 1u) << pass;
     EXPECT_EQ(p.texture_reads_dependent, 16u) << pass;
-  }
-}
-
-TEST(TechniqueReads, AnalyticSpecularDropsTheBrdfLutRead) {
-  for (const char* spec : {"ks", "ggx", "dual_ggx"}) {
-    PipelineConfig c = small_config("wrap");
-    set_config_field(c, "specular", spec);
-    const FrameOutput out = render(c);
-    const sim::DrawCounters& skin = skin_draw(out);
-    EXPECT_EQ(skin.fragment_program, std::string("wrap_fs_") + spec);
-    EXPECT_EQ(skin.fragment_profile.texture_reads_dependent, 0u) << spec;
-    EXPECT_GT(skin.fragment_profile.alu_ops(), 0u);
   }
 }
 

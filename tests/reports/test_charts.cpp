@@ -81,6 +81,43 @@ TEST_F(ChartsTest, TradeoffChartComparesTechniques) {
                     options_);
 }
 
+// A technique that ignores the scale has no scale in its rows (the sweep leaves it out).
+SweepTable with_scale_free_rows() {
+  SweepTable sweep = synthetic_sweep();
+  for (std::size_t i = 0; i < 4; ++i) {
+    ConfigResult r = sweep.rows[i];
+    r.id += "_wrap";
+    r.knobs["technique"] = "wrap";
+    r.knobs.erase("scale");
+    r.frame_ms = 5.0;  // the cheapest rows, so the recommended one is off the scale charts
+    sweep.rows.push_back(r);
+  }
+  return sweep;
+}
+
+TEST(TradeoffRows, ARowIsOnAChartOnlyWithItsSeriesAndOrderKnobs) {
+  const SweepTable sweep = with_scale_free_rows();
+  TradeoffSpec by_lut;  // series lut, ordered by scale
+  TradeoffSpec by_technique;
+  by_technique.series_knob = "technique";
+  by_technique.order_knob = "";
+  EXPECT_TRUE(on_tradeoff_chart(sweep.rows.front(), by_lut));
+  EXPECT_FALSE(on_tradeoff_chart(sweep.rows.back(), by_lut));
+  EXPECT_TRUE(on_tradeoff_chart(sweep.rows.back(), by_technique));
+}
+
+TEST_F(ChartsTest, TradeoffChartLeavesOutRowsWithoutItsKnobs) {
+  const SweepTable sweep = with_scale_free_rows();
+  options_.write_svg = false;
+  TradeoffSpec by_lut;
+  expect_real_chart(write_tradeoff_chart(sweep, by_lut, fresh_output_dir() + "/lut", options_),
+                    options_);
+  TradeoffSpec only_wrap = by_lut;
+  only_wrap.filter = {{"technique", "wrap"}};  // every such row lacks the scale
+  EXPECT_THROW(write_tradeoff_chart(sweep, only_wrap, fresh_output_dir() + "/x", options_),
+               ReportError);
+}
+
 TEST_F(ChartsTest, TradeoffChartHonoursRequestedSize) {
   const std::string dir = fresh_output_dir();
   options_.width = 900;

@@ -126,6 +126,17 @@ TEST(HtmlReport, ComparesTechniquesWithTheirProgramsWhenThereAreSeveral) {
   EXPECT_EQ(html.find("background_fs (skin)"), std::string::npos);
 }
 
+TEST(HtmlReport, AKnobARowDoesNotUseShowsAsADash) {
+  SweepTable sweep = synthetic_sweep();
+  sweep.rows[0].knobs.erase("scale");
+  sweep.rows[0].label = "scale-free";
+  const std::string html = read_text(write_report(sweep, fresh_output_dir(), no_charts()));
+  const auto row = html.find("<td class=\"text\">scale-free</td>");
+  ASSERT_NE(row, std::string::npos);
+  const std::string cells = html.substr(row, html.find("</tr>", row) - row);
+  EXPECT_NE(cells.find("<td class=\"text\">-</td>"), std::string::npos) << cells;
+}
+
 TEST(HtmlReport, SaysSoWhenNoRowHasTheMetric) {
   ReportOptions options = no_charts();
   options.quality_metric = "no_such_metric";

@@ -1,0 +1,47 @@
+// What every skin shader starts with: three independent reads, in this order (albedo +
+// reflectivity and the normal map at the mesh UV, the cosine-filtered environment along
+// the vertex normal), and the per-pixel terms derived from them. Shaders that read more
+// textures read them after these, so every technique's skin pass fetches in the same order.
+#pragma once
+
+#include "pipeline/shaders/gamma.h"
+#include "pipeline/shaders/skin_uniforms.h"
+#include "pipeline/shaders/surface_vs.h"
+
+namespace skinsim::pipeline::shaders {
+
+template <class L>
+struct SkinSurface {
+  typename L::vec4 environment;  // rgb: diffuse environment light along the vertex normal
+  typename L::vec3 normal;       // normal-mapped
+  typename L::vec3 vertex_normal;
+  typename L::vec3 view;
+  typename L::vec3 albedo;  // linear
+  typename L::f32 reflectivity;
+  typename L::f32 n_dot_l;  // signed, normal-mapped
+};
+
+template <class L, GammaMode kGamma>
+SkinSurface<L> skin_surface(const typename L::FragIn& in, typename L::TexUnit& tex,
+                            const SkinUniforms& u) {
+  using vec3 = typename L::vec3;
+  using vec4 = typename L::vec4;
+  const vec4 base = tex.sample(SkinBindings::kAlbedo, in.texcoord(SurfaceSlots::kUv));
+  const vec4 normal_map = tex.sample(SkinBindings::kNormalMap, in.texcoord(SurfaceSlots::kUv));
+  SkinSurface<L> s;
+  s.environment = tex.sample_cube(SkinBindings::kEnvironment, in.direction(SurfaceSlots::kNormal));
+  s.vertex_normal = sl::normalize(in.v3(SurfaceSlots::kNormal));
+  const auto tangent4 = in.v4(SurfaceSlots::kTangent);
+  const vec3 tangent = sl::xyz(tangent4);
+  const vec3 bitangent = sl::cross(s.vertex_normal, tangent) * sl::w(tangent4);
+  const vec3 nt = sl::xyz(normal_map) * 2.0f - 1.0f;
+  s.normal =
+      sl::normalize(tangent * sl::x(nt) + bitangent * sl::y(nt) + s.vertex_normal * sl::z(nt));
+  s.view = sl::normalize(vec3(u.eye) - in.v3(SurfaceSlots::kWorldPos));
+  s.n_dot_l = sl::dot(s.normal, vec3(u.light_dir));
+  s.albedo = decode_gamma<kGamma>(sl::xyz(base)) * u.albedo_factor;
+  s.reflectivity = sl::w(base) * u.reflectivity;
+  return s;
+}
+
+}  // namespace skinsim::pipeline::shaders
