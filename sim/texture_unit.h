@@ -60,6 +60,7 @@ class ExecTexUnit {
   glm::vec4 bilinear(const Texture2D& tex, std::uint64_t base, int level, glm::vec2 uv);
   void access_line(std::uint64_t address);  // one distinct cache line of a sample
   const Texture2D& texture(int binding) const;
+  [[noreturn]] static void unbound(int binding, const char* kind);
   const TextureCube& cube(int binding) const;
 
   TextureCache* cache_;
@@ -67,16 +68,10 @@ class ExecTexUnit {
   const TextureBindings* bindings_ = nullptr;
 };
 
-inline void ExecTexUnit::access_line(std::uint64_t address) {
-  ++counters_->cache_line_accesses;
-  if (!cache_->access(address)) {
-    ++counters_->cache_misses;
-    counters_->dram_bytes += cache_->line_bytes();
-  }
-}
-
 // Each binding slot has its own region of the emulated address space, so texture
 // addresses (and hence cache behaviour) do not depend on allocation order.
 constexpr std::uint64_t kBindingAddressStride = std::uint64_t{1} << 28;
 
 }  // namespace skinsim::sim
+
+#include "sim/texture_unit_inline.h"  // IWYU pragma: export

@@ -1,0 +1,111 @@
+// The texture unit's per-sample path, inline because every shader's inner loop calls it:
+// visible here, it is compiled into each shader program with the shader's own constants.
+// Included at the end of texture_unit.h only.
+#pragma once
+
+#include <algorithm>
+
+#include "sim/texture_filtering.h"
+
+namespace skinsim::sim {
+
+inline const Texture2D& ExecTexUnit::texture(int binding) const {
+  const Texture2D* t = bindings_ ? bindings_->textures[binding] : nullptr;
+  if (!t) unbound(binding, "2D texture");
+  return *t;
+}
+
+inline void ExecTexUnit::access_line(std::uint64_t address) {
+  ++counters_->cache_line_accesses;
+  if (!cache_->access(address)) {
+    ++counters_->cache_misses;
+    counters_->dram_bytes += cache_->line_bytes();
+  }
+}
+
+inline glm::vec4 ExecTexUnit::nearest(const Texture2D& tex, std::uint64_t base, int level, glm::vec2 uv) {
+  const MipLevel& l = tex.level(level);
+  const int x = filtering::wrap_coord(filtering::floor_split(uv.x * static_cast<float>(l.width)).whole, l.width, tex.sampler().wrap);
+  const int y = filtering::wrap_coord(filtering::floor_split(uv.y * static_cast<float>(l.height)).whole, l.height, tex.sampler().wrap);
+  ++counters_->texels_touched;
+  access_line(base + tex.texel_offset(level, x, y));
+  return l.at(x, y);
+}
+
+inline glm::vec4 ExecTexUnit::bilinear(const Texture2D& tex, std::uint64_t base, int level,
+                                glm::vec2 uv) {
+  const MipLevel& l = tex.level(level);
+  const Wrap wrap = tex.sampler().wrap;
+  const filtering::FloorSplit fx = filtering::floor_split(uv.x * static_cast<float>(l.width) - 0.5f);
+  const filtering::FloorSplit fy = filtering::floor_split(uv.y * static_cast<float>(l.height) - 0.5f);
+  const float ax = fx.fraction, ay = fy.fraction;
+  const int x0 = filtering::wrap_coord(fx.whole, l.width, wrap);
+  const int x1 = filtering::wrap_coord(fx.whole + 1, l.width, wrap);
+  const int y0 = filtering::wrap_coord(fy.whole, l.height, wrap);
+  const int y1 = filtering::wrap_coord(fy.whole + 1, l.height, wrap);
+
+  // The 2x2 footprint's texel addresses in the twiddled layout, and the distinct cache lines
+  // among them, looked up in footprint order (usually one: a 64-byte line holds a 4x4
+  // RGBA8 block).
+  const std::uint64_t level_base = base + tex.level_offset(level);
+  const std::uint64_t bpp = tex.texel_bytes();
+  const std::uint64_t sx0 = morton_spread(static_cast<std::uint32_t>(x0));
+  const std::uint64_t sy0 = morton_spread(static_cast<std::uint32_t>(y0)) << 1;
+  const std::uint64_t sx1 = filtering::spread_next(sx0, x0, x1);
+  const std::uint64_t sy1 = filtering::spread_next(sy0 >> 1, y0, y1) << 1;
+  const std::uint64_t a00 = level_base + (sx0 | sy0) * bpp, a10 = level_base + (sx1 | sy0) * bpp;
+  const std::uint64_t a01 = level_base + (sx0 | sy1) * bpp, a11 = level_base + (sx1 | sy1) * bpp;
+  const std::uint64_t l00 = cache_->line_of(a00), l10 = cache_->line_of(a10);
+  const std::uint64_t l01 = cache_->line_of(a01), l11 = cache_->line_of(a11);
+  counters_->texels_touched += 4;
+  access_line(a00);
+  if (l10 != l00) access_line(a10);
+  if (l01 != l00 && l01 != l10) access_line(a01);
+  if (l11 != l00 && l11 != l10 && l11 != l01) access_line(a11);
+
+  const glm::vec4* row0 = &l.texels[static_cast<size_t>(y0) * l.width];
+  const glm::vec4* row1 = &l.texels[static_cast<size_t>(y1) * l.width];
+  return glm::mix(glm::mix(row0[x0], row0[x1], ax), glm::mix(row1[x0], row1[x1], ax), ay);
+}
+
+inline glm::vec4 ExecTexUnit::filtered(const Texture2D& tex, std::uint64_t base, glm::vec2 uv,
+                                const LodInput& lod, bool dependent) {
+  const Filter filter = tex.sampler().filter;
+  ++counters_->samples_by_filter[static_cast<int>(filter)];
+  if (dependent) ++counters_->samples_dependent;
+  if (tex.format() != TexelFormat::kRGBA8) ++counters_->samples_wide_format;
+
+  const int max_level = tex.level_count() - 1;
+  if (filter != Filter::kTrilinear) {
+    // round(lambda) clamped to the chain; single-level textures skip the LOD entirely.
+    int level = 0;
+    if (max_level > 0) {
+      level = lod.is_rho2 ? filtering::nearest_level(lod.value, max_level)
+                          : static_cast<int>(std::clamp(lod.value, 0.0f, static_cast<float>(max_level)) + 0.5f);
+    }
+    return filter == Filter::kNearest ? nearest(tex, base, level, uv) : bilinear(tex, base, level, uv);
+  }
+  const float lambda = lod.is_rho2 ? filtering::lod_from_rho2(lod.value) : lod.value;
+  const float clamped = std::clamp(lambda, 0.0f, static_cast<float>(max_level));
+  const int l0 = static_cast<int>(clamped);
+  const int l1 = std::min(l0 + 1, max_level);
+  const float t = clamped - static_cast<float>(l0);
+  // The TMU fetches both levels even when the blend weight is 0 (the cost model charges a
+  // trilinear sample as two bilinear ones).
+  const glm::vec4 a = bilinear(tex, base, l0, uv);
+  const glm::vec4 b = bilinear(tex, base, l1, uv);
+  return glm::mix(a, b, t);
+}
+
+inline glm::vec4 ExecTexUnit::sample(int binding, const Varying<2>& uv) {
+  const Texture2D& tex = texture(binding);
+  const float w = static_cast<float>(tex.width()), h = static_cast<float>(tex.height());
+  const float rho2 = filtering::footprint_rho2(uv.ddx.x * w, uv.ddx.y * h, uv.ddy.x * w, uv.ddy.y * h);
+  return filtered(tex, binding * kBindingAddressStride, uv.value, LodInput::from_rho2(rho2), false);
+}
+
+inline glm::vec4 ExecTexUnit::sample_lod(int binding, const glm::vec2& uv, float lod) {
+  return filtered(texture(binding), binding * kBindingAddressStride, uv, LodInput::explicit_lod(lod), true);
+}
+
+}  // namespace skinsim::sim
