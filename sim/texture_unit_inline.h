@@ -99,8 +99,11 @@ inline glm::vec4 ExecTexUnit::filtered(const Texture2D& tex, std::uint64_t base,
 
 inline glm::vec4 ExecTexUnit::sample(int binding, const Varying<2>& uv) {
   const Texture2D& tex = texture(binding);
-  const float w = static_cast<float>(tex.width()), h = static_cast<float>(tex.height());
-  const float rho2 = filtering::footprint_rho2(uv.ddx.x * w, uv.ddx.y * h, uv.ddy.x * w, uv.ddy.y * h);
+  float rho2 = 0.0f;  // a single-level texture needs no footprint
+  if (tex.level_count() > 1) {
+    const float w = static_cast<float>(tex.width()), h = static_cast<float>(tex.height());
+    rho2 = filtering::footprint_rho2(uv.ddx.x * w, uv.ddx.y * h, uv.ddy.x * w, uv.ddy.y * h);
+  }
   return filtered(tex, binding * kBindingAddressStride, uv.value, LodInput::from_rho2(rho2), false);
 }
 
