@@ -67,12 +67,18 @@ std::optional<std::size_t> pareto_knee(const std::vector<ConfigResult>& rows,
   }
   std::size_t best = candidates.front();
   double best_distance = std::numeric_limits<double>::infinity();
-  for (std::size_t i : candidates) {  // ascending frame time, so strict < keeps the cheaper tie
+  // A tie (e.g. a two-point front: (0,1) and (1,0)) goes to the better quality: both fit the
+  // budget, and the time the cheaper one saves is time the budget did not ask to save.
+  constexpr double kTie = 1e-9;
+  for (std::size_t i : candidates) {
     const double time_cost = normalise(rows[i].frame_ms, ms_lo, ms_hi);
     const double quality_loss =
         1.0 - normalise(goodness(rows[i], metric, higher_is_better), g_lo, g_hi);
     const double distance = std::hypot(time_cost, g_hi > g_lo ? quality_loss : 0.0);
-    if (distance < best_distance) {
+    const bool tie_but_better = std::abs(distance - best_distance) <= kTie &&
+                                goodness(rows[i], metric, higher_is_better) >
+                                    goodness(rows[best], metric, higher_is_better);
+    if (distance < best_distance - kTie || tie_but_better) {
       best_distance = distance;
       best = i;
     }
@@ -85,7 +91,8 @@ std::string knee_rule_text() {
          "configurations that fit the budget and that no other configuration beats on both "
          "frame time and quality, the one nearest the ideal point (the cheapest frame time and "
          "the best quality among them), with both axes scaled to 0..1 over those "
-         "configurations so that neither unit dominates. Past this point, extra milliseconds "
+         "configurations so that neither unit dominates; of equally near ones, the better "
+         "quality. Past this point, extra milliseconds "
          "buy proportionally less quality; before it, a little more time buys a lot.";
 }
 

@@ -58,12 +58,12 @@ TEST(ParetoKnee, PicksTheBendOfTheFront) {
 
 TEST(ParetoKnee, IgnoresRowsOverBudget) {
   // With a 15 ms budget only a and b remain: a = (0, 1), b = (1, 0) after normalising; equal
-  // distances, so the cheaper one (a) wins the tie.
+  // distances, so the better quality (b) wins the tie: both fit the budget.
   const std::vector<ConfigResult> rows = {row("a", 10, 0.50), row("b", 12, 0.20),
                                           row("c", 20, 0.15)};
   const auto knee = pareto_knee(rows, "flip", false, 15.0);
   ASSERT_TRUE(knee);
-  EXPECT_EQ(rows[*knee].id, "a");
+  EXPECT_EQ(rows[*knee].id, "b");
   // A single row within budget is the answer; none within budget gives no answer.
   EXPECT_EQ(rows[*pareto_knee(rows, "flip", false, 11.0)].id, "a");
   EXPECT_FALSE(pareto_knee(rows, "flip", false, 5.0));
