@@ -17,6 +17,7 @@
 #include "gpu_model/timing_table.h"
 #include "driver/frame_quality.h"
 #include "pipeline/brdf_lut_texture.h"
+#include "pipeline/technique.h"
 #include "quality/json_value.h"
 #include "reports/atomic_file.h"
 
@@ -86,11 +87,16 @@ int run(const RunOptions& o) {
   }
   reports::write_file_atomically((out / "result.json").string(), json.dump(2) + "\n");
 
-  fmt::print("skinsim run: {} with {} on {} ({}), {}x{}, buffer scale {}, LUT {}x{} {}{}\n",
-             o.scene.label(), pipeline::technique_name(config.technique), device.name,
-             device.gpu, config.width, config.height,
-             config.buffer_scale, config.lut_width, config.lut_height,
-             sim::format_name(config.lut_format), result.output.lod ? ", LOD shader" : "");
+  // The technique's own knobs, as set: the ones its frame depends on.
+  std::vector<std::string> knobs;
+  for (const std::string& knob : pipeline::technique_knobs(config.technique)) {
+    if (!pipeline::knob_applies(config, knob)) continue;
+    knobs.push_back(knob + " " + pipeline::get_config_field(config, knob));
+  }
+  fmt::print("skinsim run: {} with {} on {} ({}), {}x{}{}{}{}\n", o.scene.label(),
+             pipeline::technique_name(config.technique), device.name, device.gpu, config.width,
+             config.height, knobs.empty() ? "" : ", ", fmt::join(knobs, ", "),
+             result.output.lod ? ", LOD shader" : "");
   fmt::print("{}", gpu_model::format_frame_table(result.timing));
   written.push_back("result.json");
   fmt::print("wrote {}/{{{}}}\n", out.string(), fmt::join(written, ", "));
