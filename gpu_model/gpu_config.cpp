@@ -20,6 +20,8 @@ sim::GpuConfig gpu_config(const DeviceProfile& profile, int threads) {
   c.texture_cache.size_bytes = static_cast<std::uint32_t>(s.texture_cache_bytes);
   c.texture_cache.line_bytes = static_cast<std::uint32_t>(s.texture_cache_line_bytes);
   c.texture_cache.associativity = static_cast<std::uint32_t>(s.texture_cache_ways);
+  c.texture_cache.set_index =
+      s.texture_cache_set_hash ? sim::SetIndex::kXorFold : sim::SetIndex::kModulo;
   c.depth_stencil_bytes_per_pixel = s.tile_depth_stencil_bytes_per_pixel;
   c.threads = threads;
   return c;

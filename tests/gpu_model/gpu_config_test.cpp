@@ -9,14 +9,18 @@ namespace skinsim::gpu_model {
 namespace {
 
 TEST(GpuConfig, CarriesTheProfileEmulatorFigures) {
-  const DeviceProfile p = load_device_profile("ipad4", testing::kDataDir);
-  const sim::GpuConfig c = gpu_config(p, 3);
+  DeviceProfile p = load_device_profile("ipad4", testing::kDataDir);
+  sim::GpuConfig c = gpu_config(p, 3);
   EXPECT_EQ(c.tile_size, 32);
   EXPECT_EQ(c.cores, 4);
   EXPECT_EQ(c.texture_cache.size_bytes, 8192u);
   EXPECT_EQ(c.texture_cache.line_bytes, 64u);
   EXPECT_EQ(c.texture_cache.associativity, 4u);
+  EXPECT_EQ(c.texture_cache.set_index, sim::SetIndex::kModulo);
   EXPECT_EQ(c.threads, 3);
+
+  p.texture_cache_set_hash.value = 1;
+  EXPECT_EQ(gpu_config(p, 1).texture_cache.set_index, sim::SetIndex::kXorFold);
 }
 
 TEST(GpuConfig, RejectsNonSquareTilesNamingTheFields) {
