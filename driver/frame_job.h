@@ -17,9 +17,6 @@ struct FrameResult {
   gpu_model::FrameTiming timing;
 };
 
-// The emulator configuration a device profile implies, with `threads` host threads.
-sim::GpuConfig gpu_config(const gpu_model::DeviceProfile& device, int threads);
-
 // Resolves the config's resolution (default: the device display), renders and times the
 // frame.
 FrameResult run_frame(const pipeline::GpuScene& scene, pipeline::PipelineConfig config,

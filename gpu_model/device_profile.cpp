@@ -40,6 +40,7 @@ const std::vector<FigureSpec>& figure_specs() {
       {"texture.cache_bytes", &P::texture_cache_bytes, K::kBytes, "B", true},
       {"texture.cache_line_bytes", &P::texture_cache_line_bytes, K::kBytes, "B", true},
       {"texture.cache_ways", &P::texture_cache_ways, K::kCount, "ways", true},
+      {"texture.cache_set_hash", &P::texture_cache_set_hash, K::kSwitch, "", true},
       {"tile.width", &P::tile_width, K::kCount, "px", true},
       {"tile.height", &P::tile_height, K::kCount, "px", true},
       {"tile.color_bytes_per_pixel", &P::tile_color_bytes_per_pixel, K::kBytes, "B", false},
@@ -76,6 +77,7 @@ SimParameters sim_parameters(const DeviceProfile& profile) {
   s.texture_cache_bytes = static_cast<int>(profile.texture_cache_bytes.value);
   s.texture_cache_line_bytes = static_cast<int>(profile.texture_cache_line_bytes.value);
   s.texture_cache_ways = static_cast<int>(profile.texture_cache_ways.value);
+  s.texture_cache_set_hash = profile.texture_cache_set_hash.value != 0.0;
   s.tile_color_bytes_per_pixel = static_cast<int>(profile.tile_color_bytes_per_pixel.value);
   s.tile_depth_stencil_bytes_per_pixel =
       static_cast<int>(profile.tile_depth_stencil_bytes_per_pixel.value);

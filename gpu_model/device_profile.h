@@ -54,6 +54,7 @@ struct DeviceProfile {
   Figure texture_cache_bytes;          // per core
   Figure texture_cache_line_bytes;
   Figure texture_cache_ways;
+  Figure texture_cache_set_hash;  // 0: line % sets, 1: XOR-folded index (sim::SetIndex)
 
   // [tile]
   Figure tile_width;
@@ -92,6 +93,7 @@ enum class FigureKind {
   kRate,      // > 0
   kCycles,    // >= 0
   kFraction,  // in (0, 1]
+  kSwitch,    // 0 or 1: a choice between two modelled behaviours
 };
 
 struct FigureSpec {
@@ -114,6 +116,7 @@ struct SimParameters {
   int texture_cache_bytes = 0;  // per core
   int texture_cache_line_bytes = 0;
   int texture_cache_ways = 0;
+  bool texture_cache_set_hash = false;  // XOR-fold the set index
   int tile_color_bytes_per_pixel = 0;
   int tile_depth_stencil_bytes_per_pixel = 0;
 };

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -116,6 +117,9 @@ void check_kind(const Reporter& r, const toml::node* node, const std::string& pa
     case FigureKind::kFraction:
       if (v <= 0.0 || v > 1.0) r.fail(path, node, fmt::format("must be in (0, 1], got {}", v));
       break;
+    case FigureKind::kSwitch:
+      if (v != 0.0 && v != 1.0) r.fail(path, node, fmt::format("must be 0 or 1, got {}", v));
+      break;
   }
 }
 
@@ -217,6 +221,15 @@ DeviceProfile parse_root(const Reporter& r, const toml::table& root) {
     r.fail("texture.cache_bytes", root.at_path("texture.cache_bytes").node(),
            fmt::format("{} is not a multiple of cache_line_bytes x cache_ways = {}",
                        p.texture_cache_bytes.value, set_bytes));
+  }
+  // XOR folding works on the index bit field, so it needs a power-of-two set count
+  // (sim::SetIndex::kXorFold).
+  const auto sets = static_cast<std::uint64_t>(p.texture_cache_bytes.value / set_bytes);
+  if (p.texture_cache_set_hash.max != 0.0 && (sets & (sets - 1)) != 0) {
+    r.fail("texture.cache_set_hash", root.at_path("texture.cache_set_hash").node(),
+           fmt::format("XOR-folded set index (1) needs a power-of-two set count, but cache_bytes / "
+                       "(cache_line_bytes x cache_ways) = {} sets",
+                       sets));
   }
   return p;
 }

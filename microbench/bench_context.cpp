@@ -1,34 +1,13 @@
 #include "microbench/bench_context.h"
 
-#include <fmt/format.h>
-
+#include "gpu_model/gpu_config.h"
 #include "gpu_model/pass_cost.h"
-#include "microbench/microbench_error.h"
 
 namespace skinsim::microbench {
 
-sim::GpuConfig gpu_config(const gpu_model::DeviceProfile& profile, int threads) {
-  const gpu_model::SimParameters s = gpu_model::sim_parameters(profile);
-  if (s.tile_width != s.tile_height) {
-    throw MicrobenchError(fmt::format(
-        "{}: fields 'tile.width' ({}) and 'tile.height' ({}) differ; the emulator renders "
-        "square tiles",
-        profile.source_path, s.tile_width, s.tile_height));
-  }
-  sim::GpuConfig c;
-  c.tile_size = s.tile_width;
-  c.cores = s.cores;
-  c.texture_cache.size_bytes = static_cast<std::uint32_t>(s.texture_cache_bytes);
-  c.texture_cache.line_bytes = static_cast<std::uint32_t>(s.texture_cache_line_bytes);
-  c.texture_cache.associativity = static_cast<std::uint32_t>(s.texture_cache_ways);
-  c.depth_stencil_bytes_per_pixel = s.tile_depth_stencil_bytes_per_pixel;
-  c.threads = threads;
-  return c;
-}
-
 BenchContext::BenchContext(const gpu_model::DeviceProfile& profile,
                            const MicrobenchOptions& options)
-    : profile_(profile), options_(options), gpu_(gpu_config(profile, options.threads)) {}
+    : profile_(profile), options_(options), gpu_(gpu_model::gpu_config(profile, options.threads)) {}
 
 MeasuredPass BenchContext::run(const sim::RenderPassDesc& pass) {
   MeasuredPass m;

@@ -16,10 +16,6 @@ struct MeasuredPass {
   gpu_model::PassTiming timing;
 };
 
-// The emulator configuration a profile describes (tile size, cores, texture cache).
-// Throws MicrobenchError if the profile's tiles are not square (the emulator's are).
-sim::GpuConfig gpu_config(const gpu_model::DeviceProfile& profile, int threads);
-
 class BenchContext {
  public:
   BenchContext(const gpu_model::DeviceProfile& profile, const MicrobenchOptions& options);

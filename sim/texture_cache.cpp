@@ -16,6 +16,8 @@ TextureCache::TextureCache(const TextureCacheConfig& config)
       line_shift_(0),
       sets_(0),
       set_mask_(0),
+      index_bits_(0),
+      fold_steps_(0),
       ways_(config.associativity) {
   if (!is_pow2(config.line_bytes) || config.associativity == 0 ||
       config.size_bytes < config.line_bytes * config.associativity ||
@@ -28,6 +30,17 @@ TextureCache::TextureCache(const TextureCacheConfig& config)
   while ((1u << line_shift_) < line_bytes_) ++line_shift_;
   sets_ = config.size_bytes / (config.line_bytes * config.associativity);
   set_mask_ = is_pow2(sets_) ? sets_ - 1 : 0;
+  if (config.set_index == SetIndex::kXorFold && sets_ > 1) {
+    // Folding index-wide bit chunks is only defined for a power-of-two set count (as in
+    // hardware, where the index is a bit field).
+    if (set_mask_ == 0) {
+      throw std::invalid_argument("texture cache: XOR-folded set index needs a power-of-two set "
+                                  "count, got " + std::to_string(sets_) + " sets");
+    }
+    while ((1u << index_bits_) < sets_) ++index_bits_;
+    // Enough doubling steps that 2^steps chunks cover all 64 bits of a line number.
+    while ((std::uint64_t{index_bits_} << fold_steps_) < 64) ++fold_steps_;
+  }
   tags_.assign(static_cast<size_t>(sets_) * ways_, kEmpty);
 }
 

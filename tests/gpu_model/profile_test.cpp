@@ -72,6 +72,7 @@ TEST(Profile, Ipad4KeyFigures) {
   EXPECT_EQ(s.texture_cache_bytes, 8192);
   EXPECT_EQ(s.texture_cache_line_bytes, 64);
   EXPECT_EQ(s.texture_cache_ways, 4);
+  EXPECT_FALSE(s.texture_cache_set_hash);  // plain modulo unless a profile says otherwise
 }
 
 TEST(Profile, PathAndNameResolveToTheSameFile) {
@@ -186,6 +187,39 @@ TEST(Profile, CacheSizeMustHoldWholeSets) {
                                "[texture.cache_bytes]\nvalue = 8000"));
   EXPECT_NE(m.find("texture.cache_bytes"), std::string::npos) << m;
   EXPECT_NE(m.find("multiple"), std::string::npos) << m;
+}
+
+TEST(Profile, CacheSetHashMustBeGivenAndZeroOrOne) {
+  const std::string hash_block = "[texture.cache_set_hash]\nvalue = 0\n";
+  const std::string text = shipped_text("ipad4");
+  const std::string block = text.substr(text.find(hash_block),
+                                        text.find("[tile.width]") - text.find(hash_block));
+  const std::string missing = parse_error(replace_once(text, block, ""));
+  EXPECT_NE(missing.find("edited.toml: field 'texture.cache_set_hash': missing"),
+            std::string::npos)
+      << missing;
+
+  for (const char* bad : {"0.5", "2"}) {
+    const std::string m = parse_error(
+        replace_once(text, hash_block, "[texture.cache_set_hash]\nvalue = " + std::string(bad) + "\n"));
+    EXPECT_NE(m.find("edited.toml:"), std::string::npos) << m;
+    EXPECT_NE(m.find("'texture.cache_set_hash.value': must be 0 or 1"), std::string::npos) << m;
+  }
+
+  const DeviceProfile hashed = parse_device_profile(
+      replace_once(text, hash_block, "[texture.cache_set_hash]\nvalue = 1\n"), "edited.toml");
+  EXPECT_TRUE(sim_parameters(hashed).texture_cache_set_hash);
+}
+
+TEST(Profile, CacheSetHashNeedsPowerOfTwoSets) {
+  // 12288 B / (64 B x 4 ways) = 48 sets: fine for modulo, but the range sweeps hashing too.
+  const std::string text = replace_once(shipped_text("ipad4"), "[texture.cache_bytes]\nvalue = 8192",
+                                        "[texture.cache_bytes]\nvalue = 12288");
+  const std::string m = parse_error(text);
+  EXPECT_NE(m.find("'texture.cache_set_hash'"), std::string::npos) << m;
+  EXPECT_NE(m.find("48 sets"), std::string::npos) << m;
+  EXPECT_EQ(parse_error(replace_once(text, "value = 0\nrange = [0, 1]", "value = 0\nrange = [0, 0]")),
+            "");
 }
 
 TEST(Profile, BadConfidenceAndSyntaxAreReported) {

@@ -1,6 +1,7 @@
 // Options, selection, errors and the table / JSON views.
 #include <gtest/gtest.h>
 
+#include "gpu_model/errors.h"
 #include "microbench/microbench_error.h"
 #include "tests/microbench/test_support.h"
 
@@ -56,7 +57,7 @@ TEST(Api, NonSquareTilesAreRejectedNamingTheFields) {
   try {
     run_microbenchmarks(p, testing::test_options());
     ADD_FAILURE() << "no error";
-  } catch (const MicrobenchError& e) {
+  } catch (const gpu_model::ProfileError& e) {  // a profile fault, not an option's
     const std::string what = e.what();
     EXPECT_NE(what.find("tile.height"), std::string::npos) << what;
     EXPECT_NE(what.find("ipad4.toml"), std::string::npos) << what;

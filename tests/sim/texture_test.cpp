@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "sim/texture.h"
 #include "sim/texture_cache.h"
@@ -56,6 +57,62 @@ TEST(TextureCache, HitsAfterFillAndEvictsLeastRecentlyUsed) {
 TEST(TextureCache, RejectsImpossibleGeometry) {
   EXPECT_THROW(TextureCache({1000, 64, 4}), std::invalid_argument);
   EXPECT_THROW(TextureCache({1024, 48, 4}), std::invalid_argument);
+}
+
+TEST(TextureCache, ModuloIndexWrapsNonPowerOfTwoSetCount) {
+  TextureCache cache({3 * 64, 64, 1, SetIndex::kModulo});  // 3 sets, direct mapped
+  EXPECT_FALSE(cache.access(0));
+  EXPECT_FALSE(cache.access(64));
+  EXPECT_TRUE(cache.access(0));
+  EXPECT_FALSE(cache.access(3 * 64));  // line 3 -> set 0: evicts line 0
+  EXPECT_FALSE(cache.access(0));
+}
+
+TEST(TextureCache, XorFoldNeedsPowerOfTwoSetCount) {
+  EXPECT_THROW(TextureCache({3 * 64, 64, 1, SetIndex::kXorFold}), std::invalid_argument);
+  EXPECT_NO_THROW(TextureCache({64, 64, 1, SetIndex::kXorFold}));  // one set: nothing to hash
+}
+
+// The same offset in two binding regions: one set under modulo, two under XOR folding.
+TEST(TextureCache, XorFoldSeparatesSameOffsetInDifferentBindings) {
+  const TextureCacheConfig direct{32 * 64, 64, 1};  // 32 sets, direct mapped
+  TextureCacheConfig hashed = direct;
+  hashed.set_index = SetIndex::kXorFold;
+  for (const auto& [config, third_hits] : {std::pair{direct, false}, std::pair{hashed, true}}) {
+    TextureCache cache(config);
+    EXPECT_FALSE(cache.access(0x40));
+    EXPECT_FALSE(cache.access(kBindingAddressStride + 0x40));
+    EXPECT_EQ(cache.access(0x40), third_hits);
+  }
+}
+
+// Within one aligned block of `sets` lines the fold is a permutation: a sequential stream
+// still fills every set once, as with modulo.
+TEST(TextureCache, XorFoldKeepsSequentialLinesInDistinctSets) {
+  TextureCache cache({32 * 64, 64, 1, SetIndex::kXorFold});
+  const std::uint64_t base = 5 * kBindingAddressStride;
+  for (std::uint64_t line = 0; line < 32; ++line) EXPECT_FALSE(cache.access(base + line * 64));
+  for (std::uint64_t line = 0; line < 32; ++line) EXPECT_TRUE(cache.access(base + line * 64));
+}
+
+// uv_combine's pattern: six same-size textures read at the same offsets. Their 96 lines
+// fit the 128-line cache, but under modulo six lines share each 4-way set and LRU thrashes;
+// folding spreads them so the second sweep hits.
+TEST(TextureCache, XorFoldRemovesConflictMissesOfSameOffsetStreams) {
+  const auto misses = [](SetIndex index) {
+    TextureCache cache({8192, 64, 4, index});  // 32 sets x 4 ways, the ipad4 profile
+    int n = 0;
+    for (int sweep = 0; sweep < 2; ++sweep) {
+      for (std::uint64_t line = 0; line < 16; ++line) {
+        for (std::uint64_t binding = 0; binding < 6; ++binding) {
+          n += !cache.access(binding * kBindingAddressStride + line * 64);
+        }
+      }
+    }
+    return n;
+  };
+  EXPECT_EQ(misses(SetIndex::kModulo), 2 * 96);  // every access misses
+  EXPECT_EQ(misses(SetIndex::kXorFold), 96);     // compulsory misses only
 }
 
 TEST(TextureUnit, BilinearOfConstantIsConstantAndCountsFootprint) {
