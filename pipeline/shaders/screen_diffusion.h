@@ -15,6 +15,7 @@
 #include <array>
 
 #include "pipeline/config.h"
+#include "pipeline/shaders/normal_mapping.h"
 #include "pipeline/shaders/surface_vs.h"
 
 namespace skinsim::pipeline::shaders {
@@ -49,13 +50,8 @@ struct DiffuseDepthFS {
     using vec3 = typename L::vec3;
     using vec4 = typename L::vec4;
     const vec4 normal_map = tex.sample(kNormalMap, in.texcoord(SurfaceSlots::kUv));
-    const vec3 vertex_normal = sl::normalize(in.v3(SurfaceSlots::kNormal));
-    const auto tangent4 = in.v4(SurfaceSlots::kTangent);
-    const vec3 tangent = sl::xyz(tangent4);
-    const vec3 bitangent = sl::cross(vertex_normal, tangent) * sl::w(tangent4);
-    const vec3 nt = sl::xyz(normal_map) * 2.0f - 1.0f;
-    const vec3 n =
-        sl::normalize(tangent * sl::x(nt) + bitangent * sl::y(nt) + vertex_normal * sl::z(nt));
+    const vec3 n = normal_mapped<L>(sl::normalize(in.v3(SurfaceSlots::kNormal)),
+                                    in.v4(SurfaceSlots::kTangent), normal_map);
     const vec3 irradiance =
         vec3(u.light_radiance) * sl::saturate(sl::dot(n, vec3(u.light_dir))) + vec3(u.ambient);
     const auto depth_mm = sl::length(vec3(u.eye) - in.v3(SurfaceSlots::kWorldPos)) * u.mm_per_unit;
@@ -69,6 +65,15 @@ struct ScreenKernelUniforms {
   glm::vec2 focal_uv{1.0f};
   float inv_follow_mm = 0.25f;  // 1 / depth difference (mm) at which a tap is fully replaced
 };
+
+// A kernel tap's light, following the surface: replaced by the centre's light as the tap's
+// depth (alpha, mm) departs from the centre's, fully at 1 / inv_follow_mm (Jimenez et al.).
+template <class L, class Scalar>
+typename L::vec3 follow_surface(const typename L::vec4& tap, const typename L::vec4& centre,
+                                const Scalar& depth, const ScreenKernelUniforms& u) {
+  const auto off_surface = sl::saturate(sl::abs(sl::w(tap) - depth) * u.inv_follow_mm);
+  return sl::mix(sl::xyz(tap), sl::xyz(centre), off_surface);
+}
 
 // Burley normalized diffusion: `count` taps at precomputed offsets (mm, a Fibonacci spiral
 // with radii from the inverse CDF of the widest channel), RGB weights R_c(r) / pdf(r)
@@ -93,8 +98,7 @@ struct BurleyFS {
     vec3 sum(0.0f);
     for (int i = 0; i < u.count; ++i) {
       const vec4 t = tex.sample(0, screen.value + vec2(u.offsets_mm[i]) * uv_per_mm);
-      const auto off_surface = sl::saturate(sl::abs(sl::w(t) - depth) * u.inv_follow_mm);
-      sum = sum + sl::mix(sl::xyz(t), sl::xyz(centre), off_surface) * vec3(u.weights[i]);
+      sum = sum + follow_surface<L>(t, centre, depth, u) * vec3(u.weights[i]);
     }
     return vec4(sum, depth);
   }
@@ -124,8 +128,7 @@ struct SsssBlurFS {
     vec3 sum = sl::xyz(centre) * vec3(u.weights[0]);
     for (int i = 1; i < kSsssTaps; ++i) {
       const vec4 t = tex.sample(0, screen.value + step * u.offsets_mm[i]);
-      const auto off_surface = sl::saturate(sl::abs(sl::w(t) - depth) * u.inv_follow_mm);
-      sum = sum + sl::mix(sl::xyz(t), sl::xyz(centre), off_surface) * vec3(u.weights[i]);
+      sum = sum + follow_surface<L>(t, centre, depth, u) * vec3(u.weights[i]);
     }
     return vec4(sum, depth);
   }

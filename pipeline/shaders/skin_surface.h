@@ -5,6 +5,7 @@
 #pragma once
 
 #include "pipeline/shaders/gamma.h"
+#include "pipeline/shaders/normal_mapping.h"
 #include "pipeline/shaders/skin_uniforms.h"
 #include "pipeline/shaders/surface_vs.h"
 
@@ -31,12 +32,7 @@ SkinSurface<L> skin_surface(const typename L::FragIn& in, typename L::TexUnit& t
   SkinSurface<L> s;
   s.environment = tex.sample_cube(SkinBindings::kEnvironment, in.direction(SurfaceSlots::kNormal));
   s.vertex_normal = sl::normalize(in.v3(SurfaceSlots::kNormal));
-  const auto tangent4 = in.v4(SurfaceSlots::kTangent);
-  const vec3 tangent = sl::xyz(tangent4);
-  const vec3 bitangent = sl::cross(s.vertex_normal, tangent) * sl::w(tangent4);
-  const vec3 nt = sl::xyz(normal_map) * 2.0f - 1.0f;
-  s.normal =
-      sl::normalize(tangent * sl::x(nt) + bitangent * sl::y(nt) + s.vertex_normal * sl::z(nt));
+  s.normal = normal_mapped<L>(s.vertex_normal, in.v4(SurfaceSlots::kTangent), normal_map);
   s.view = sl::normalize(vec3(u.eye) - in.v3(SurfaceSlots::kWorldPos));
   s.n_dot_l = sl::dot(s.normal, vec3(u.light_dir));
   s.albedo = decode_gamma<kGamma>(sl::xyz(base)) * u.albedo_factor;

@@ -48,13 +48,8 @@ struct UvIrradianceFS {
     using vec3 = typename L::vec3;
     using vec4 = typename L::vec4;
     const vec4 normal_map = tex.sample(kNormalMap, in.texcoord(UvSpaceVS::kUv));
-    const vec3 vertex_normal = sl::normalize(in.v3(UvSpaceVS::kNormal));
-    const auto tangent4 = in.v4(UvSpaceVS::kTangent);
-    const vec3 tangent = sl::xyz(tangent4);
-    const vec3 bitangent = sl::cross(vertex_normal, tangent) * sl::w(tangent4);
-    const vec3 nt = sl::xyz(normal_map) * 2.0f - 1.0f;
-    const vec3 n =
-        sl::normalize(tangent * sl::x(nt) + bitangent * sl::y(nt) + vertex_normal * sl::z(nt));
+    const vec3 n = normal_mapped<L>(sl::normalize(in.v3(UvSpaceVS::kNormal)),
+                                    in.v4(UvSpaceVS::kTangent), normal_map);
     const vec3 irradiance =
         vec3(u.light_radiance) * sl::saturate(sl::dot(n, vec3(u.light_dir))) + vec3(u.ambient);
     return vec4(irradiance, 1.0f);

@@ -3,8 +3,8 @@
 // irradiance and view distance (shaders/screen_diffusion.h).
 #include <algorithm>
 
-#include "pipeline/shaders/diffused_skin.h"
 #include "pipeline/shaders/screen_diffusion.h"
+#include "pipeline/techniques/diffused_skin_pass.h"
 #include "pipeline/techniques/frame_setup.h"
 #include "pipeline/techniques/kernels.h"
 #include "pipeline/techniques/screen_quad.h"
@@ -73,25 +73,6 @@ sim::PassCounters kernel_pass(const std::string& name,
   return quad_pass(name, std::move(d), target, view.skin_rect, gpu);
 }
 
-// The `skin` render reading the diffused screen buffer.
-sim::PassCounters diffused_skin_pass(const GpuScene& gs, const PipelineConfig& cfg,
-                                     const FrameOutput& out, const sim::RenderTarget& diffused,
-                                     sim::RenderTarget& frame, sim::Gpu& gpu) {
-  const auto brdf_lut = brdf_lut_for(cfg);
-  const sim::Texture2D buffer =
-      sim::as_texture(diffused, {sim::Filter::kBilinear, sim::Wrap::kClamp});
-  const auto shading = [&](const GpuMaterial& mat, sim::DrawCall& d) {
-    const shaders::TechniqueUniforms u = technique_uniforms(gs, out.view, cfg, mat);
-    d.fragment_program = with_gamma_and_specular(cfg, [&](auto gamma, auto spec) {
-      return sim::make_fragment_program<
-          shaders::DiffusedSkinFS<gamma(), spec(), shaders::DiffusionSource::kScreen>>(u);
-    });
-    d.textures.textures[shaders::TechniqueBindings::kDiffusion] = &buffer;
-    bind_brdf_lut(brdf_lut, d);
-  };
-  return skin_framebuffer_pass(gs, out.view, shading, frame, gpu);
-}
-
 // Irradiance values reach ~2x the key light: halve them to view the buffers.
 constexpr float kBufferDisplayScale = 0.5f;
 
@@ -113,7 +94,8 @@ FrameOutput render_burley_frame(const GpuScene& gs, const PipelineConfig& cfg, s
     out.passes.push_back(kernel_pass("sss", sim::make_fragment_program<shaders::BurleyFS>(u),
                                      diffuse, diffused, out.view, gpu));
   }
-  out.passes.push_back(diffused_skin_pass(gs, cfg, out, diffused, out.frame, gpu));
+  out.passes.push_back(diffused_skin_pass(gs, out.view, cfg, shaders::DiffusionSource::kScreen,
+                                          diffused, out.frame, gpu));
   out.intermediates.push_back({"diffuse", std::move(diffuse), kBufferDisplayScale});
   out.intermediates.push_back({"diffused", std::move(diffused), kBufferDisplayScale});
   return out;
@@ -138,7 +120,8 @@ FrameOutput render_ssss_frame(const GpuScene& gs, const PipelineConfig& cfg, sim
     out.passes.push_back(kernel_pass("sss_v", sim::make_fragment_program<shaders::SsssBlurFS>(u),
                                      horizontal, diffused, out.view, gpu));
   }
-  out.passes.push_back(diffused_skin_pass(gs, cfg, out, diffused, out.frame, gpu));
+  out.passes.push_back(diffused_skin_pass(gs, out.view, cfg, shaders::DiffusionSource::kScreen,
+                                          diffused, out.frame, gpu));
   out.intermediates.push_back({"diffuse", std::move(diffuse), kBufferDisplayScale});
   out.intermediates.push_back({"diffused", std::move(diffused), kBufferDisplayScale});
   return out;

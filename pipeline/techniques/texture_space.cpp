@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include "pipeline/blur_pass.h"
-#include "pipeline/shaders/diffused_skin.h"
+#include "pipeline/techniques/diffused_skin_pass.h"
 #include "pipeline/techniques/frame_setup.h"
 #include "pipeline/techniques/kernels.h"
 #include "pipeline/techniques/screen_quad.h"
@@ -91,19 +91,8 @@ FrameOutput render_texture_space_frame(const GpuScene& gs, const PipelineConfig&
     out.passes.push_back(quad_pass("uv_combine", std::move(d), combined, all, gpu));
   }
 
-  const auto brdf_lut = brdf_lut_for(cfg);
-  const sim::Texture2D diffused =
-      sim::as_texture(combined, {sim::Filter::kBilinear, sim::Wrap::kClamp});
-  const auto shading = [&](const GpuMaterial& mat, sim::DrawCall& d) {
-    const shaders::TechniqueUniforms u = technique_uniforms(gs, out.view, cfg, mat);
-    d.fragment_program = with_gamma_and_specular(cfg, [&](auto gamma, auto spec) {
-      return sim::make_fragment_program<
-          shaders::DiffusedSkinFS<gamma(), spec(), shaders::DiffusionSource::kUv>>(u);
-    });
-    d.textures.textures[shaders::TechniqueBindings::kDiffusion] = &diffused;
-    bind_brdf_lut(brdf_lut, d);
-  };
-  out.passes.push_back(skin_framebuffer_pass(gs, out.view, shading, out.frame, gpu));
+  out.passes.push_back(diffused_skin_pass(gs, out.view, cfg, shaders::DiffusionSource::kUv,
+                                          combined, out.frame, gpu));
   out.intermediates.push_back({"uv_irradiance", std::move(terms[0]), 0.5f});
   out.intermediates.push_back({"uv_diffused", std::move(combined), 0.5f});
   return out;
