@@ -5,9 +5,12 @@
 namespace skinsim::gpu_model {
 namespace {
 
+// An endpoint equal to the figure's own value is the base frame: no estimate, and above
+// all no emulator re-run (e.g. the clock's range ends at its value).
 std::optional<double> frame_ms_with(const std::vector<sim::PassCounters>& passes,
-                                    const DeviceProfile& base, const FigureSpec& spec, double value,
-                                    const Recount& recount) {
+                                    const DeviceProfile& base, double base_ms,
+                                    const FigureSpec& spec, double value, const Recount& recount) {
+  if (value == (base.*spec.member).value) return base_ms;
   DeviceProfile varied = base;
   (varied.*spec.member).value = value;
   if (!spec.affects_counters) return estimate_frame(passes, varied).frame_ms;
@@ -33,8 +36,8 @@ std::vector<SensitivityRow> sensitivity(const std::vector<sim::PassCounters>& pa
     row.value_max = f.max;
     row.needs_recount = spec.affects_counters;
     row.frame_ms_base = base_ms;
-    row.frame_ms_min = frame_ms_with(passes, profile, spec, f.min, recount);
-    row.frame_ms_max = frame_ms_with(passes, profile, spec, f.max, recount);
+    row.frame_ms_min = frame_ms_with(passes, profile, base_ms, spec, f.min, recount);
+    row.frame_ms_max = frame_ms_with(passes, profile, base_ms, spec, f.max, recount);
     rows.push_back(std::move(row));
   }
   return rows;
