@@ -57,7 +57,7 @@ int run(const RunOptions& o) {
     written.push_back(t.name + ".png");
   }
   if (config.specular == pipeline::SpecularModel::kKsLut) {  // only that model reads the LUT
-    pipeline::BrdfLutTexture::bake(config).write_png((out / "brdf_lut.png").string());
+    pipeline::BrdfLutTexture::shared(config)->write_png((out / "brdf_lut.png").string());
     written.push_back("brdf_lut.png");
   }
 

@@ -2,6 +2,7 @@
 // the config's texel format, with roughness varying along its mip chain.
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include "pipeline/bake/brdf_lut.h"
@@ -16,6 +17,10 @@ bake::BrdfLutParams brdf_lut_params(const PipelineConfig& config);
 class BrdfLutTexture {
  public:
   static BrdfLutTexture bake(const PipelineConfig& config);
+  // The LUT of `config`, baked once per process for each distinct (parameters, format): an
+  // application bakes it offline or at load, not per frame, so frames and sweep points that
+  // share a LUT share one bake. Thread-safe; the result is immutable.
+  static std::shared_ptr<const BrdfLutTexture> shared(const PipelineConfig& config);
   const sim::Texture2D& texture() const { return texture_; }
   // Writes level 0 as stored (quantised to the format) as a PNG a user can open.
   void write_png(const std::string& path) const;

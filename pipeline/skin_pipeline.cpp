@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
+#include <memory>
 
 #include "pipeline/blur_pass.h"
 #include "pipeline/diffusion.h"
@@ -47,7 +47,7 @@ sim::PassCounters irradiance_pass(const GpuScene& gs, const View& view, const Pi
 }
 
 sim::PassCounters framebuffer_pass(const GpuScene& gs, const View& view, const PipelineConfig& cfg,
-                                   const std::optional<BrdfLutTexture>& lut,
+                                   const std::shared_ptr<const BrdfLutTexture>& lut,
                                    const sim::Texture2D* irradiance, bool lod,
                                    sim::RenderTarget& frame, sim::Gpu& gpu) {
   const auto shading = [&](const GpuMaterial& mat, sim::DrawCall& d) {
@@ -72,7 +72,7 @@ std::pair<int, int> render_size(const PipelineConfig& config, int default_width,
 
 FrameOutput render_mobile_frame(const GpuScene& gs, const PipelineConfig& cfg, sim::Gpu& gpu,
                                 MobileMode mode) {
-  const std::optional<BrdfLutTexture> lut = brdf_lut_for(cfg);
+  const std::shared_ptr<const BrdfLutTexture> lut = brdf_lut_for(cfg);
   FrameOutput out;
   out.view = make_view(gs, cfg.width, cfg.height);
   out.frame = sim::RenderTarget("frame", cfg.width, cfg.height, sim::TexelFormat::kRGBA8);

@@ -35,6 +35,8 @@ struct BrdfLutParams {
 
   // Throws BakeError naming the field when a value is out of range.
   void validate() const;
+
+  bool operator==(const BrdfLutParams&) const = default;
 };
 
 struct LutLevel {

@@ -2,7 +2,7 @@
 // BRDF LUT when the specular model reads it.
 #pragma once
 
-#include <optional>
+#include <memory>
 
 #include "pipeline/brdf_lut_texture.h"
 #include "pipeline/frame.h"
@@ -17,13 +17,13 @@ inline FrameOutput start_frame(const GpuScene& scene, const PipelineConfig& conf
   return out;
 }
 
-// The BRDF LUT, baked only for the ks_lut specular model (the others evaluate in ALU).
-inline std::optional<BrdfLutTexture> brdf_lut_for(const PipelineConfig& config) {
-  if (config.specular != SpecularModel::kKsLut) return std::nullopt;
-  return BrdfLutTexture::bake(config);
+// The BRDF LUT, only for the ks_lut specular model (the others evaluate in ALU).
+inline std::shared_ptr<const BrdfLutTexture> brdf_lut_for(const PipelineConfig& config) {
+  if (config.specular != SpecularModel::kKsLut) return nullptr;
+  return BrdfLutTexture::shared(config);
 }
 
-inline void bind_brdf_lut(const std::optional<BrdfLutTexture>& lut, sim::DrawCall& draw) {
+inline void bind_brdf_lut(const std::shared_ptr<const BrdfLutTexture>& lut, sim::DrawCall& draw) {
   if (lut) draw.textures.textures[shaders::TechniqueBindings::kBrdfLut] = &lut->texture();
 }
 
