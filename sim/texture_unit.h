@@ -57,7 +57,8 @@ class ExecTexUnit {
   glm::vec4 filtered(const Texture2D& tex, std::uint64_t base, glm::vec2 uv, const LodInput& lod,
                      bool dependent);
   glm::vec4 nearest(const Texture2D& tex, std::uint64_t base, int level, glm::vec2 uv);
-  glm::vec4 bilinear(const Texture2D& tex, std::uint64_t base, int level, glm::vec2 uv);
+  // `blend` false: count and cache the footprint only (its value is not needed).
+  glm::vec4 bilinear(const Texture2D& tex, std::uint64_t base, int level, glm::vec2 uv, bool blend);
   void access_line(std::uint64_t address);  // one distinct cache line of a sample
   const Texture2D& texture(int binding) const;
   [[noreturn]] static void unbound(int binding, const char* kind);

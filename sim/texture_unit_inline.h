@@ -23,21 +23,28 @@ inline void ExecTexUnit::access_line(std::uint64_t address) {
   }
 }
 
-inline glm::vec4 ExecTexUnit::nearest(const Texture2D& tex, std::uint64_t base, int level, glm::vec2 uv) {
+inline glm::vec4 ExecTexUnit::nearest(const Texture2D& tex, std::uint64_t base, int level,
+                                      glm::vec2 uv) {
   const MipLevel& l = tex.level(level);
-  const int x = filtering::wrap_coord(filtering::floor_split(uv.x * static_cast<float>(l.width)).whole, l.width, tex.sampler().wrap);
-  const int y = filtering::wrap_coord(filtering::floor_split(uv.y * static_cast<float>(l.height)).whole, l.height, tex.sampler().wrap);
+  const int x =
+      filtering::wrap_coord(filtering::floor_split(uv.x * static_cast<float>(l.width)).whole,
+                            l.width, tex.sampler().wrap);
+  const int y =
+      filtering::wrap_coord(filtering::floor_split(uv.y * static_cast<float>(l.height)).whole,
+                            l.height, tex.sampler().wrap);
   ++counters_->texels_touched;
   access_line(base + tex.texel_offset(level, x, y));
   return l.at(x, y);
 }
 
 inline glm::vec4 ExecTexUnit::bilinear(const Texture2D& tex, std::uint64_t base, int level,
-                                glm::vec2 uv) {
+                                       glm::vec2 uv, bool blend) {
   const MipLevel& l = tex.level(level);
   const Wrap wrap = tex.sampler().wrap;
-  const filtering::FloorSplit fx = filtering::floor_split(uv.x * static_cast<float>(l.width) - 0.5f);
-  const filtering::FloorSplit fy = filtering::floor_split(uv.y * static_cast<float>(l.height) - 0.5f);
+  const filtering::FloorSplit fx =
+      filtering::floor_split(uv.x * static_cast<float>(l.width) - 0.5f);
+  const filtering::FloorSplit fy =
+      filtering::floor_split(uv.y * static_cast<float>(l.height) - 0.5f);
   const float ax = fx.fraction, ay = fy.fraction;
   const int x0 = filtering::wrap_coord(fx.whole, l.width, wrap);
   const int x1 = filtering::wrap_coord(fx.whole + 1, l.width, wrap);
@@ -62,6 +69,7 @@ inline glm::vec4 ExecTexUnit::bilinear(const Texture2D& tex, std::uint64_t base,
   if (l10 != l00) access_line(a10);
   if (l01 != l00 && l01 != l10) access_line(a01);
   if (l11 != l00 && l11 != l10 && l11 != l01) access_line(a11);
+  if (!blend) return glm::vec4(0.0f);
 
   const glm::vec4* row0 = &l.texels[static_cast<size_t>(y0) * l.width];
   const glm::vec4* row1 = &l.texels[static_cast<size_t>(y1) * l.width];
@@ -69,7 +77,7 @@ inline glm::vec4 ExecTexUnit::bilinear(const Texture2D& tex, std::uint64_t base,
 }
 
 inline glm::vec4 ExecTexUnit::filtered(const Texture2D& tex, std::uint64_t base, glm::vec2 uv,
-                                const LodInput& lod, bool dependent) {
+                                       const LodInput& lod, bool dependent) {
   const Filter filter = tex.sampler().filter;
   ++counters_->samples_by_filter[static_cast<int>(filter)];
   if (dependent) ++counters_->samples_dependent;
@@ -80,10 +88,13 @@ inline glm::vec4 ExecTexUnit::filtered(const Texture2D& tex, std::uint64_t base,
     // round(lambda) clamped to the chain; single-level textures skip the LOD entirely.
     int level = 0;
     if (max_level > 0) {
-      level = lod.is_rho2 ? filtering::nearest_level(lod.value, max_level)
-                          : static_cast<int>(std::clamp(lod.value, 0.0f, static_cast<float>(max_level)) + 0.5f);
+      level =
+          lod.is_rho2
+              ? filtering::nearest_level(lod.value, max_level)
+              : static_cast<int>(std::clamp(lod.value, 0.0f, static_cast<float>(max_level)) + 0.5f);
     }
-    return filter == Filter::kNearest ? nearest(tex, base, level, uv) : bilinear(tex, base, level, uv);
+    return filter == Filter::kNearest ? nearest(tex, base, level, uv)
+                                      : bilinear(tex, base, level, uv, true);
   }
   const float lambda = lod.is_rho2 ? filtering::lod_from_rho2(lod.value) : lod.value;
   const float clamped = std::clamp(lambda, 0.0f, static_cast<float>(max_level));
@@ -91,10 +102,13 @@ inline glm::vec4 ExecTexUnit::filtered(const Texture2D& tex, std::uint64_t base,
   const int l1 = std::min(l0 + 1, max_level);
   const float t = clamped - static_cast<float>(l0);
   // The TMU fetches both levels even when the blend weight is 0 (the cost model charges a
-  // trilinear sample as two bilinear ones).
-  const glm::vec4 a = bilinear(tex, base, l0, uv);
-  const glm::vec4 b = bilinear(tex, base, l1, uv);
-  return glm::mix(a, b, t);
+  // trilinear sample as two bilinear ones), so both footprints go through the cache. The
+  // host skips blending the second when its weight is 0 and the result is exactly the
+  // first: RGBA8 texels are finite and >= +0, so a * 1 + b * 0 == a bit for bit.
+  const glm::vec4 a = bilinear(tex, base, l0, uv, true);
+  const bool second_unused = t == 0.0f && tex.format() == TexelFormat::kRGBA8;
+  const glm::vec4 b = bilinear(tex, base, l1, uv, !second_unused);
+  return second_unused ? a : glm::mix(a, b, t);
 }
 
 inline glm::vec4 ExecTexUnit::sample(int binding, const Varying<2>& uv) {
@@ -108,7 +122,8 @@ inline glm::vec4 ExecTexUnit::sample(int binding, const Varying<2>& uv) {
 }
 
 inline glm::vec4 ExecTexUnit::sample_lod(int binding, const glm::vec2& uv, float lod) {
-  return filtered(texture(binding), binding * kBindingAddressStride, uv, LodInput::explicit_lod(lod), true);
+  return filtered(texture(binding), binding * kBindingAddressStride, uv,
+                  LodInput::explicit_lod(lod), true);
 }
 
 }  // namespace skinsim::sim

@@ -1,9 +1,10 @@
+#include "sim/texture.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <utility>
 
-#include "sim/texture.h"
 #include "sim/texture_cache.h"
 #include "sim/texture_unit.h"
 
@@ -20,8 +21,8 @@ TEST(Texture, QuantizesToFormat) {
 }
 
 TEST(Texture, BuildsFullMipChain) {
-  const Texture2D t("t", 16, 4, std::vector<glm::vec4>(64, glm::vec4(0.25f)),
-                    TexelFormat::kRGBA8, {}, true);
+  const Texture2D t("t", 16, 4, std::vector<glm::vec4>(64, glm::vec4(0.25f)), TexelFormat::kRGBA8,
+                    {}, true);
   ASSERT_EQ(t.level_count(), 5);
   EXPECT_EQ(t.level(4).width, 1);
   EXPECT_EQ(t.level(4).height, 1);
@@ -29,7 +30,8 @@ TEST(Texture, BuildsFullMipChain) {
 }
 
 TEST(Texture, RejectsLevelsOfWrongSize) {
-  std::vector<MipLevel> levels = {{4, 4, std::vector<glm::vec4>(16)}, {3, 2, std::vector<glm::vec4>(6)}};
+  std::vector<MipLevel> levels = {{4, 4, std::vector<glm::vec4>(16)},
+                                  {3, 2, std::vector<glm::vec4>(6)}};
   EXPECT_THROW(Texture2D("lut", levels, TexelFormat::kRGBA8, {}), std::invalid_argument);
 }
 
@@ -150,6 +152,33 @@ TEST(TextureUnit, TrilinearReadsTwoLevels) {
   EXPECT_EQ(counters.samples_by_filter[2], 1u);
   EXPECT_EQ(counters.samples_dependent, 0u);
   EXPECT_EQ(counters.texels_touched, 8u);
+}
+
+// Magnified (lambda <= 0): the blend weight of level 1 is 0. Both levels are still read and
+// cached, as on the TMU, and the value is level 0's bilinear one, bit for bit.
+TEST(TextureUnit, MagnifiedTrilinearReadsBothLevelsAndReturnsLevelZero) {
+  std::vector<glm::vec4> ramp(64 * 64);
+  for (int i = 0; i < 64 * 64; ++i)
+    ramp[i] = glm::vec4((i % 64) / 63.0f, (i / 64) / 63.0f, 0.25f, 1.0f);
+  for (TexelFormat format : {TexelFormat::kRGBA8, TexelFormat::kRGBA16F}) {
+    const Texture2D tri("tri", 64, 64, ramp, format, {Filter::kTrilinear, Wrap::kClamp}, true);
+    const Texture2D bi("bi", 64, 64, ramp, format, {Filter::kBilinear, Wrap::kClamp}, true);
+    TextureCache cache({8192, 64, 4});
+    TextureCounters counters;
+    ExecTexUnit unit(&cache, &counters);
+    TextureBindings b;
+    b.textures[0] = &tri;
+    b.textures[1] = &bi;
+    unit.bind(&b);
+    Varying<2> uv;
+    uv.value = {0.30f, 0.393f};  // footprints inside one line at both levels
+    uv.ddx = {0.25f / 64, 0};    // 4 pixels per texel
+    uv.ddy = {0, 0.25f / 64};
+    const glm::vec4 trilinear = unit.sample(0, uv);
+    EXPECT_EQ(counters.texels_touched, 8u);
+    EXPECT_EQ(counters.cache_misses, 2u);  // one line in each level
+    EXPECT_EQ(trilinear, unit.sample(1, uv));
+  }
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // The BRDF LUT texture: one bake per distinct LUT, shared by the frames that use it.
-#include <gtest/gtest.h>
-
 #include "pipeline/brdf_lut_texture.h"
+
+#include <gtest/gtest.h>
 
 namespace skinsim::pipeline {
 namespace {
