@@ -52,9 +52,27 @@ float round_to_half(float v) {
     return std::nearbyint(v * 16777216.0f) / 16777216.0f;
   }
   int exponent = 0;
-  std::frexp(a, &exponent);                          // a = m * 2^exponent, m in [0.5,1)
+  std::frexp(a, &exponent);                            // a = m * 2^exponent, m in [0.5,1)
   const float step = std::ldexp(1.0f, exponent - 11);  // 10 stored mantissa bits
   return std::copysign(std::nearbyint(a / step) * step, v);
+}
+
+// k / 255 for every byte value k: the float an RGBA8 channel holds.
+constexpr std::array<float, 256> make_byte_values() {
+  std::array<float, 256> v{};
+  for (int i = 0; i < 256; ++i) v[i] = static_cast<float>(i) / 255.0f;
+  return v;
+}
+constexpr std::array<float, 256> kByteValue = make_byte_values();
+
+float quantize_unorm8(float v) {
+  // NaN converts to 0, the D3D10+/Vulkan float-to-UNORM rule (GLES leaves it open): the
+  // argument order of std::max makes NaN (and -0) give +0.
+  const float x = std::min(std::max(0.0f, v), 1.0f) * 255.0f;
+  // Round half away from zero (as glm::round), without a libm call: the scaled value is in
+  // [0,255], where x - floor(x) is exact.
+  const int whole = static_cast<int>(x);
+  return kByteValue[whole + (x - static_cast<float>(whole) >= 0.5f ? 1 : 0)];
 }
 
 std::uint64_t next_pow2(std::uint64_t v) {
@@ -81,38 +99,37 @@ MipLevel downsample(const MipLevel& src) {
 
 }  // namespace
 
-glm::vec4 quantize(const glm::vec4& value, TexelFormat format) {
+void quantize_span(const glm::vec4* values, glm::vec4* stored, std::size_t count,
+                   TexelFormat format) {
   switch (format) {
-    case TexelFormat::kRGBA8: {
-      // Round half away from zero (as glm::round), without a libm call per channel: the
-      // scaled value is in [0,255], where x - floor(x) is exact.
-      static const std::array<float, 256> kByteValue = [] {
-        std::array<float, 256> v{};
-        for (int i = 0; i < 256; ++i) v[i] = static_cast<float>(i) / 255.0f;
-        return v;
-      }();
-      glm::vec4 q;
-      for (int c = 0; c < 4; ++c) {
-        // NaN converts to 0, the D3D10+/Vulkan float-to-UNORM rule (GLES leaves it open).
-        const float v = value[c] == value[c] ? value[c] : 0.0f;
-        const float x = std::clamp(v, 0.0f, 1.0f) * 255.0f;
-        const int whole = static_cast<int>(x);
-        q[c] = kByteValue[whole + (x - static_cast<float>(whole) >= 0.5f ? 1 : 0)];
+    case TexelFormat::kRGBA8:
+      for (std::size_t i = 0; i < count; ++i) {
+        const glm::vec4 v = values[i];
+        stored[i] = {quantize_unorm8(v.x), quantize_unorm8(v.y), quantize_unorm8(v.z),
+                     quantize_unorm8(v.w)};
       }
-      return q;
-    }
+      return;
     case TexelFormat::kRGBA16F:
-      return {round_to_half(value.x), round_to_half(value.y), round_to_half(value.z),
-              round_to_half(value.w)};
+      for (std::size_t i = 0; i < count; ++i) {
+        const glm::vec4 v = values[i];
+        stored[i] = {round_to_half(v.x), round_to_half(v.y), round_to_half(v.z),
+                     round_to_half(v.w)};
+      }
+      return;
     case TexelFormat::kRGBA32F:
-      return value;
+      std::copy(values, values + count, stored);
+      return;
   }
-  return value;
 }
 
-Texture2D::Texture2D(std::string name, int width, int height,
-                     const std::vector<glm::vec4>& texels, TexelFormat format,
-                     SamplerState sampler, bool mipmaps)
+glm::vec4 quantize(const glm::vec4& value, TexelFormat format) {
+  glm::vec4 stored;
+  quantize_span(&value, &stored, 1, format);
+  return stored;
+}
+
+Texture2D::Texture2D(std::string name, int width, int height, const std::vector<glm::vec4>& texels,
+                     TexelFormat format, SamplerState sampler, bool mipmaps)
     : name_(std::move(name)), format_(format), sampler_(sampler) {
   if (width <= 0 || height <= 0 || texels.size() != static_cast<size_t>(width) * height) {
     throw std::invalid_argument("texture '" + name_ + "': bad size");
@@ -125,7 +142,7 @@ Texture2D::Texture2D(std::string name, int width, int height,
     levels_.push_back(downsample(levels_.back()));
   }
   for (MipLevel& level : levels_) {
-    for (glm::vec4& t : level.texels) t = quantize(t, format_);
+    quantize_span(level.texels.data(), level.texels.data(), level.texels.size(), format_);
   }
   if (!mipmaps && sampler_.filter == Filter::kTrilinear) sampler_.filter = Filter::kBilinear;
   finish_layout();
@@ -153,7 +170,8 @@ Texture2D::Texture2D(std::string name, std::vector<MipLevel> levels, TexelFormat
   if (levels_.empty()) throw std::invalid_argument("texture '" + name_ + "': no levels");
   for (size_t i = 0; i < levels_.size(); ++i) {
     const MipLevel& l = levels_[i];
-    if (l.width <= 0 || l.height <= 0 || l.texels.size() != static_cast<size_t>(l.width) * l.height) {
+    if (l.width <= 0 || l.height <= 0 ||
+        l.texels.size() != static_cast<size_t>(l.width) * l.height) {
       throw std::invalid_argument("texture '" + name_ + "': bad level " + std::to_string(i));
     }
     if (i > 0 && (l.width != std::max(1, levels_[i - 1].width / 2) ||
@@ -163,7 +181,7 @@ Texture2D::Texture2D(std::string name, std::vector<MipLevel> levels, TexelFormat
     }
   }
   for (MipLevel& level : levels_) {
-    for (glm::vec4& t : level.texels) t = quantize(t, format_);
+    quantize_span(level.texels.data(), level.texels.data(), level.texels.size(), format_);
   }
   if (levels_.size() == 1 && sampler_.filter == Filter::kTrilinear) {
     sampler_.filter = Filter::kBilinear;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <string>
@@ -25,6 +26,9 @@ TexelFormat parse_format(const std::string& name);
 // Rounds a value to what the format stores (RGBA8: clamp to [0,1], nearest 1/255, NaN to 0;
 // RGBA16F: IEEE half, round to nearest even; RGBA32F: unchanged).
 glm::vec4 quantize(const glm::vec4& value, TexelFormat format);
+// quantize() over `count` values (`stored` may be `values`): one format dispatch per span.
+void quantize_span(const glm::vec4* values, glm::vec4* stored, std::size_t count,
+                   TexelFormat format);
 
 // Morton order: the bits of x and y interleaved (x in the even bits), PowerVR's
 // "twiddled" texture layout. Coordinates up to 16 bits.
@@ -96,7 +100,6 @@ class Texture2D {
   std::uint64_t level_offset(int level) const { return level_offsets_[level]; }
   std::uint64_t texel_bytes() const { return texel_bytes_; }
   std::uint64_t size_bytes() const { return level_offsets_.back(); }
-
 
  private:
   void finish_layout();

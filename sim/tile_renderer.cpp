@@ -72,8 +72,8 @@ glm::vec4 TileRenderer::shade(std::uint32_t triangle, int px, int py) {
   const DrawCall& draw = pass_.draws[t.draw];
   tex_.bind(&draw.textures);
   const float cx = static_cast<float>(px) + 0.5f, cy = static_cast<float>(py) + 0.5f;
-  const ExecFragIn in(setup_.varying_planes.data() + t.varying_offset, t.inv_w,
-                      cx - t.origin_x, cy - t.origin_y, {cx, cy}, inv_size_);
+  const ExecFragIn in(setup_.varying_planes.data() + t.varying_offset, t.inv_w, cx - t.origin_x,
+                      cy - t.origin_y, {cx, cy}, inv_size_);
   return draw.fragment_program->shade(in, tex_);
 }
 
@@ -147,10 +147,9 @@ void TileRenderer::render(int tx, int ty, const std::vector<std::uint32_t>& tria
   // Tile end: resolve colour to the target; depth/stencil are discarded unless stored.
   if (pass_.store_color) {
     for (int py = rect_.y0; py < rect_.y1; ++py) {
-      for (int px = rect_.x0; px < rect_.x1; ++px) {
-        const size_t i = static_cast<size_t>(py - rect_.y0) * ts + (px - rect_.x0);
-        pass_.color->at(px, py) = quantize(color_[i], pass_.color->format);
-      }
+      quantize_span(&color_[static_cast<size_t>(py - rect_.y0) * ts],
+                    &pass_.color->at(rect_.x0, py), static_cast<size_t>(rect_.x1 - rect_.x0),
+                    pass_.color->format);
     }
     counters.color_store_bytes = pixels * bpp;
   }

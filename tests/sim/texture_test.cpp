@@ -15,9 +15,23 @@ TEST(Texture, QuantizesToFormat) {
   EXPECT_EQ(quantize(glm::vec4(0.5f), TexelFormat::kRGBA8), glm::vec4(128.0f / 255.0f));
   EXPECT_EQ(quantize(glm::vec4(2.0f), TexelFormat::kRGBA8), glm::vec4(1.0f));
   EXPECT_EQ(quantize(glm::vec4(std::nanf("")), TexelFormat::kRGBA8), glm::vec4(0.0f));
+  EXPECT_EQ(quantize(glm::vec4(-0.3f), TexelFormat::kRGBA8), glm::vec4(0.0f));
+  EXPECT_FALSE(std::signbit(quantize(glm::vec4(-0.0f), TexelFormat::kRGBA8).x));
   EXPECT_EQ(quantize(glm::vec4(1.0f / 3.0f), TexelFormat::kRGBA16F).x, 0.333251953125f);
   EXPECT_EQ(quantize(glm::vec4(1e6f), TexelFormat::kRGBA16F).x, 65504.0f);
   EXPECT_EQ(quantize(glm::vec4(0.1f), TexelFormat::kRGBA32F).x, 0.1f);
+}
+
+TEST(Texture, QuantizesSpansInPlaceLikeSingleValues) {
+  std::vector<glm::vec4> values;
+  for (int i = 0; i < 600; ++i) values.emplace_back(i / 511.0f - 0.1f, i * 0.37f, -i * 1e-3f, 0.5f);
+  for (TexelFormat format : {TexelFormat::kRGBA8, TexelFormat::kRGBA16F, TexelFormat::kRGBA32F}) {
+    std::vector<glm::vec4> stored = values;
+    quantize_span(stored.data(), stored.data(), stored.size(), format);
+    for (size_t i = 0; i < values.size(); ++i) {
+      ASSERT_EQ(stored[i], quantize(values[i], format)) << format_name(format) << " value " << i;
+    }
+  }
 }
 
 TEST(Texture, BuildsFullMipChain) {
