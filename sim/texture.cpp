@@ -101,21 +101,17 @@ MipLevel downsample(const MipLevel& src) {
 
 void quantize_span(const glm::vec4* values, glm::vec4* stored, std::size_t count,
                    TexelFormat format) {
+  const auto each_channel = [&](auto round) {
+    for (std::size_t i = 0; i < count; ++i) {
+      const glm::vec4 v = values[i];
+      stored[i] = {round(v.x), round(v.y), round(v.z), round(v.w)};
+    }
+  };
   switch (format) {
     case TexelFormat::kRGBA8:
-      for (std::size_t i = 0; i < count; ++i) {
-        const glm::vec4 v = values[i];
-        stored[i] = {quantize_unorm8(v.x), quantize_unorm8(v.y), quantize_unorm8(v.z),
-                     quantize_unorm8(v.w)};
-      }
-      return;
+      return each_channel(quantize_unorm8);
     case TexelFormat::kRGBA16F:
-      for (std::size_t i = 0; i < count; ++i) {
-        const glm::vec4 v = values[i];
-        stored[i] = {round_to_half(v.x), round_to_half(v.y), round_to_half(v.z),
-                     round_to_half(v.w)};
-      }
-      return;
+      return each_channel(round_to_half);
     case TexelFormat::kRGBA32F:
       std::copy(values, values + count, stored);
       return;
