@@ -96,7 +96,11 @@ inline glm::vec4 ExecTexUnit::filtered(const Texture2D& tex, std::uint64_t base,
     return filter == Filter::kNearest ? nearest(tex, base, level, uv)
                                       : bilinear(tex, base, level, uv, true);
   }
-  const float lambda = lod.is_rho2 ? filtering::lod_from_rho2(lod.value) : lod.value;
+  // Magnification (rho^2 <= 1, lambda <= 0) clamps to level 0 whatever lambda is, so the
+  // common close-up case needs no logarithm.
+  const float lambda = !lod.is_rho2        ? lod.value
+                       : lod.value <= 1.0f ? 0.0f
+                                           : filtering::lod_from_rho2(lod.value);
   const float clamped = std::clamp(lambda, 0.0f, static_cast<float>(max_level));
   const int l0 = static_cast<int>(clamped);
   const int l1 = std::min(l0 + 1, max_level);
