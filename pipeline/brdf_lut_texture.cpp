@@ -39,7 +39,8 @@ std::shared_ptr<const BrdfLutTexture> BrdfLutTexture::shared(const PipelineConfi
     std::shared_ptr<const BrdfLutTexture> lut;
   };
   // A sweep visits a handful of LUT sizes; keeping the most recent few bounds memory (a
-  // 128x512 LUT with its mips is ~1.4 MB as stored floats).
+  // 128x512 LUT with its mips is ~1.4 MB of floats, held twice: the baked levels and the
+  // texture).
   constexpr std::size_t kKept = 8;
   static std::mutex mutex;
   static std::vector<Entry> entries;  // most recently used last
