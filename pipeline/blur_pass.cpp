@@ -8,13 +8,11 @@
 
 namespace skinsim::pipeline {
 
-
 // One separable blur axis over the skin's bounding rectangle of the buffer.
 sim::PassCounters blur_pass(const std::string& name, const sim::RenderTarget& source,
-                            sim::RenderTarget& target, const sim::PixelRect& rect,
-                            glm::vec2 axis, float sigma_texels, sim::Gpu& gpu) {
-  const sim::Texture2D src =
-      sim::as_texture(source, {sim::Filter::kBilinear, sim::Wrap::kClamp});
+                            sim::RenderTarget& target, const sim::PixelRect& rect, glm::vec2 axis,
+                            float sigma_texels, sim::Gpu& gpu) {
+  const sim::Texture2D src = sim::texture_view(source, {sim::Filter::kBilinear, sim::Wrap::kClamp});
   shaders::BlurVS::Uniforms vu;
   shaders::BlurFS::Uniforms fu;
   // Taps span +-2.5 sigma; spacing grows with sigma, so wide kernels are sampled sparsely

@@ -96,9 +96,8 @@ FrameOutput render_mobile_frame(const GpuScene& gs, const PipelineConfig& cfg, s
   const float sigma_full = sigma_mm * out.view.pixels_per_mm(gs.scene().units_per_mm);
   out.blur_sigma_pixels = sigma_full * static_cast<float>(bw) / static_cast<float>(cfg.width) /
                           std::sqrt(static_cast<float>(cfg.blur_iterations));
-  const sim::PixelRect rect =
-      scale_rect(out.view.skin_rect, static_cast<float>(bw) / cfg.width,
-                 static_cast<float>(bh) / cfg.height, bw, bh);
+  const sim::PixelRect rect = scale_rect(out.view.skin_rect, static_cast<float>(bw) / cfg.width,
+                                         static_cast<float>(bh) / cfg.height, bw, bh);
   sim::RenderTarget ping("blur_h", bw, bh, sim::TexelFormat::kRGBA8);
   sim::RenderTarget blurred("blurred", bw, bh, sim::TexelFormat::kRGBA8);
   const sim::RenderTarget* source = &irradiance;
@@ -111,7 +110,7 @@ FrameOutput render_mobile_frame(const GpuScene& gs, const PipelineConfig& cfg, s
     source = &blurred;
   }
   const sim::Texture2D blurred_texture =
-      sim::as_texture(blurred, {sim::Filter::kBilinear, sim::Wrap::kClamp});
+      sim::texture_view(blurred, {sim::Filter::kBilinear, sim::Wrap::kClamp});
   out.passes.push_back(
       framebuffer_pass(gs, out.view, cfg, lut, &blurred_texture, false, out.frame, gpu));
   // Stored irradiance is divided by kIrradianceRange: scale back to show the light.

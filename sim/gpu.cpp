@@ -11,7 +11,9 @@
 
 namespace skinsim::sim {
 
-int core_of_tile(int tile_index, int cores) { return tile_index % cores; }
+int core_of_tile(int tile_index, int cores) {
+  return tile_index % cores;
+}
 
 Gpu::Gpu(GpuConfig config) : config_(config) {
   if (config_.tile_size < 4 || config_.tile_size > 256) {
@@ -46,6 +48,14 @@ PassCounters Gpu::execute(const RenderPassDesc& pass) {
       throw std::invalid_argument("vertex program '" + d.vertex_program->name() +
                                   "' writes more than " + std::to_string(kMaxVaryings) +
                                   " varying floats");
+    }
+    // Tiles resolve while others still sample, so reading the target being rendered would
+    // make the image depend on tile order (undefined on the GPU too).
+    for (const Texture2D* t : d.textures.textures) {
+      if (t && t->level(0).texels == pass.color->pixels.data()) {
+        throw std::invalid_argument("render pass '" + pass.name + "' samples its own target '" +
+                                    pass.color->name + "'");
+      }
     }
   }
   if (!arena_) return execute_impl(pass);

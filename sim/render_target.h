@@ -18,13 +18,18 @@ struct RenderTarget {
 
   RenderTarget() = default;
   RenderTarget(std::string n, int w, int h, TexelFormat f)
-      : name(std::move(n)), width(w), height(h), format(f),
+      : name(std::move(n)),
+        width(w),
+        height(h),
+        format(f),
         pixels(static_cast<size_t>(w) * h, glm::vec4(0.0f)) {}
   glm::vec4& at(int x, int y) { return pixels[static_cast<size_t>(y) * width + x]; }
   const glm::vec4& at(int x, int y) const { return pixels[static_cast<size_t>(y) * width + x]; }
 };
 
-// A texture view of a finished render target (the next pass samples it). Single level.
-Texture2D as_texture(const RenderTarget& target, SamplerState sampler);
+// A single-level texture over a finished render target's pixels, for a later pass to sample
+// in place (no copy, as on the GPU). The target must outlive the view and keep its size;
+// a pass may not render to a target it samples (Gpu::execute rejects that).
+Texture2D texture_view(const RenderTarget& target, SamplerState sampler);
 
 }  // namespace skinsim::sim

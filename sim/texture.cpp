@@ -130,24 +130,21 @@ Texture2D::Texture2D(std::string name, int width, int height, const std::vector<
   if (width <= 0 || height <= 0 || texels.size() != static_cast<size_t>(width) * height) {
     throw std::invalid_argument("texture '" + name_ + "': bad size");
   }
-  MipLevel base{width, height, texels};
-  levels_.push_back(std::move(base));
+  std::vector<MipLevel> levels;
+  levels.push_back({width, height, texels});
   // Mips are filtered from the unquantised level above, then each level is quantised, as
   // an offline mip generator writing the format would do.
-  while (mipmaps && (levels_.back().width > 1 || levels_.back().height > 1)) {
-    levels_.push_back(downsample(levels_.back()));
-  }
-  for (MipLevel& level : levels_) {
-    quantize_span(level.texels.data(), level.texels.data(), level.texels.size(), format_);
+  while (mipmaps && (levels.back().width > 1 || levels.back().height > 1)) {
+    levels.push_back(downsample(levels.back()));
   }
   if (!mipmaps && sampler_.filter == Filter::kTrilinear) sampler_.filter = Filter::kBilinear;
-  finish_layout();
+  adopt(std::move(levels));
 }
 
-Texture2D Texture2D::from_stored(std::string name, int width, int height,
-                                 std::vector<glm::vec4> texels, TexelFormat format,
-                                 SamplerState sampler) {
-  if (width <= 0 || height <= 0 || texels.size() != static_cast<size_t>(width) * height) {
+Texture2D Texture2D::view_of_stored(std::string name, int width, int height,
+                                    const glm::vec4* stored, TexelFormat format,
+                                    SamplerState sampler) {
+  if (width <= 0 || height <= 0 || stored == nullptr) {
     throw std::invalid_argument("texture '" + name + "': bad size");
   }
   Texture2D t;
@@ -155,40 +152,48 @@ Texture2D Texture2D::from_stored(std::string name, int width, int height,
   t.format_ = format;
   t.sampler_ = sampler;
   if (t.sampler_.filter == Filter::kTrilinear) t.sampler_.filter = Filter::kBilinear;
-  t.levels_.push_back({width, height, std::move(texels)});
+  t.levels_.push_back({width, height, stored});
   t.finish_layout();
   return t;
 }
 
 Texture2D::Texture2D(std::string name, std::vector<MipLevel> levels, TexelFormat format,
                      SamplerState sampler)
-    : name_(std::move(name)), format_(format), sampler_(sampler), levels_(std::move(levels)) {
-  if (levels_.empty()) throw std::invalid_argument("texture '" + name_ + "': no levels");
-  for (size_t i = 0; i < levels_.size(); ++i) {
-    const MipLevel& l = levels_[i];
+    : name_(std::move(name)), format_(format), sampler_(sampler) {
+  if (levels.empty()) throw std::invalid_argument("texture '" + name_ + "': no levels");
+  for (size_t i = 0; i < levels.size(); ++i) {
+    const MipLevel& l = levels[i];
     if (l.width <= 0 || l.height <= 0 ||
         l.texels.size() != static_cast<size_t>(l.width) * l.height) {
       throw std::invalid_argument("texture '" + name_ + "': bad level " + std::to_string(i));
     }
-    if (i > 0 && (l.width != std::max(1, levels_[i - 1].width / 2) ||
-                  l.height != std::max(1, levels_[i - 1].height / 2))) {
+    if (i > 0 && (l.width != std::max(1, levels[i - 1].width / 2) ||
+                  l.height != std::max(1, levels[i - 1].height / 2))) {
       throw std::invalid_argument("texture '" + name_ + "': level " + std::to_string(i) +
                                   " is not half the size of the level above");
     }
   }
-  for (MipLevel& level : levels_) {
-    quantize_span(level.texels.data(), level.texels.data(), level.texels.size(), format_);
-  }
-  if (levels_.size() == 1 && sampler_.filter == Filter::kTrilinear) {
+  if (levels.size() == 1 && sampler_.filter == Filter::kTrilinear) {
     sampler_.filter = Filter::kBilinear;
   }
+  adopt(std::move(levels));
+}
+
+void Texture2D::adopt(std::vector<MipLevel> levels) {
+  for (MipLevel& level : levels) {
+    quantize_span(level.texels.data(), level.texels.data(), level.texels.size(), format_);
+  }
+  auto storage = std::make_shared<const std::vector<MipLevel>>(std::move(levels));
+  levels_.clear();
+  for (const MipLevel& l : *storage) levels_.push_back({l.width, l.height, l.texels.data()});
+  storage_ = std::move(storage);
   finish_layout();
 }
 
 void Texture2D::finish_layout() {
   texel_bytes_ = bytes_per_texel(format_);
   level_offsets_.assign(1, 0);
-  for (const MipLevel& l : levels_) {
+  for (const LevelView& l : levels_) {
     // Each level occupies the power-of-two square its twiddled addresses span.
     const std::uint64_t side = next_pow2(static_cast<std::uint64_t>(std::max(l.width, l.height)));
     level_offsets_.push_back(level_offsets_.back() + side * side * bytes_per_texel(format_));

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -56,10 +57,20 @@ inline std::uint64_t twiddle(std::uint32_t x, std::uint32_t y) {
   return morton_spread(x) | (morton_spread(y) << 1);
 }
 
+// One mip level's texels as built, row-major: what Texture2D's constructors take.
 struct MipLevel {
   int width = 0;
   int height = 0;
-  std::vector<glm::vec4> texels;  // row-major
+  std::vector<glm::vec4> texels;
+  const glm::vec4& at(int x, int y) const { return texels[static_cast<size_t>(y) * width + x]; }
+};
+
+// One level as the sampler reads it: row-major texels that the texture owns or, for a view
+// of a render target, the target owns.
+struct LevelView {
+  int width = 0;
+  int height = 0;
+  const glm::vec4* texels = nullptr;
   const glm::vec4& at(int x, int y) const { return texels[static_cast<size_t>(y) * width + x]; }
 };
 
@@ -75,11 +86,11 @@ class Texture2D {
   // is box-filtered down to 1x1 when `mipmaps` is set.
   Texture2D(std::string name, int width, int height, const std::vector<glm::vec4>& texels,
             TexelFormat format, SamplerState sampler, bool mipmaps);
-  // A single level whose texels are already stored values of `format` (a finished render
-  // target): no mips, no second quantisation pass.
-  static Texture2D from_stored(std::string name, int width, int height,
-                               std::vector<glm::vec4> texels, TexelFormat format,
-                               SamplerState sampler);
+  // A single level over texels that are already stored values of `format` (a finished
+  // render target), sampled in place as the GPU does: no copy, no mips, no second
+  // quantisation. `stored` must outlive the texture and not change while it is sampled.
+  static Texture2D view_of_stored(std::string name, int width, int height, const glm::vec4* stored,
+                                  TexelFormat format, SamplerState sampler);
   // Explicit levels (e.g. a LUT whose levels hold different roughness); each level must be
   // half the size of the previous one (rounded down, at least 1).
   Texture2D(std::string name, std::vector<MipLevel> levels, TexelFormat format,
@@ -91,7 +102,7 @@ class Texture2D {
   int width() const { return levels_.front().width; }
   int height() const { return levels_.front().height; }
   int level_count() const { return static_cast<int>(levels_.size()); }
-  const MipLevel& level(int i) const { return levels_[i]; }
+  const LevelView& level(int i) const { return levels_[i]; }
   // Byte offset of a texel from the texture's base address (twiddled within each level).
   std::uint64_t texel_offset(int level, int x, int y) const {
     return level_offsets_[level] +
@@ -102,12 +113,16 @@ class Texture2D {
   std::uint64_t size_bytes() const { return level_offsets_.back(); }
 
  private:
+  // Takes ownership of quantised levels and lays them out.
+  void adopt(std::vector<MipLevel> levels);
   void finish_layout();
 
   std::string name_;
   TexelFormat format_ = TexelFormat::kRGBA8;
   SamplerState sampler_;
-  std::vector<MipLevel> levels_;
+  // The texels, immutable once built, so copies of a texture share them; null for a view.
+  std::shared_ptr<const std::vector<MipLevel>> storage_;
+  std::vector<LevelView> levels_;
   std::vector<std::uint64_t> level_offsets_;  // level_count + 1 entries
   std::uint64_t texel_bytes_ = 4;
 };

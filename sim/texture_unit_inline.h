@@ -25,7 +25,7 @@ inline void ExecTexUnit::access_line(std::uint64_t address) {
 
 inline glm::vec4 ExecTexUnit::nearest(const Texture2D& tex, std::uint64_t base, int level,
                                       glm::vec2 uv) {
-  const MipLevel& l = tex.level(level);
+  const LevelView& l = tex.level(level);
   const int x =
       filtering::wrap_coord(filtering::floor_split(uv.x * static_cast<float>(l.width)).whole,
                             l.width, tex.sampler().wrap);
@@ -39,7 +39,7 @@ inline glm::vec4 ExecTexUnit::nearest(const Texture2D& tex, std::uint64_t base, 
 
 inline glm::vec4 ExecTexUnit::bilinear(const Texture2D& tex, std::uint64_t base, int level,
                                        glm::vec2 uv, bool blend) {
-  const MipLevel& l = tex.level(level);
+  const LevelView& l = tex.level(level);
   const Wrap wrap = tex.sampler().wrap;
   const filtering::FloorSplit fx =
       filtering::floor_split(uv.x * static_cast<float>(l.width) - 0.5f);
@@ -71,8 +71,8 @@ inline glm::vec4 ExecTexUnit::bilinear(const Texture2D& tex, std::uint64_t base,
   if (l11 != l00 && l11 != l10 && l11 != l01) access_line(a11);
   if (!blend) return glm::vec4(0.0f);
 
-  const glm::vec4* row0 = &l.texels[static_cast<size_t>(y0) * l.width];
-  const glm::vec4* row1 = &l.texels[static_cast<size_t>(y1) * l.width];
+  const glm::vec4* row0 = l.texels + static_cast<size_t>(y0) * l.width;
+  const glm::vec4* row1 = l.texels + static_cast<size_t>(y1) * l.width;
   return glm::mix(glm::mix(row0[x0], row0[x1], ax), glm::mix(row1[x0], row1[x1], ax), ay);
 }
 

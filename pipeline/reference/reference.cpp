@@ -155,7 +155,7 @@ class DirectionalTable {
 
 glm::vec3 sample_cube(const sim::TextureCube& cube, const glm::vec3& direction) {
   const sim::CubeCoord c = sim::cube_coord(direction);
-  const sim::MipLevel& l = cube.face(c.face).level(0);
+  const sim::LevelView& l = cube.face(c.face).level(0);
   const float fx = std::clamp(c.uv.x * l.width - 0.5f, 0.0f, l.width - 1.0f);
   const float fy = std::clamp(c.uv.y * l.height - 0.5f, 0.0f, l.height - 1.0f);
   const int x0 = static_cast<int>(fx), y0 = static_cast<int>(fy);

@@ -18,13 +18,12 @@ std::shared_ptr<const sim::FragmentProgram> diffused_skin_program(
 }  // namespace
 
 sim::PassCounters diffused_skin_pass(const GpuScene& scene, const View& view,
-                                     const PipelineConfig& config,
-                                     shaders::DiffusionSource source,
+                                     const PipelineConfig& config, shaders::DiffusionSource source,
                                      const sim::RenderTarget& diffused, sim::RenderTarget& frame,
                                      sim::Gpu& gpu) {
   const auto brdf_lut = brdf_lut_for(config);
   const sim::Texture2D buffer =
-      sim::as_texture(diffused, {sim::Filter::kBilinear, sim::Wrap::kClamp});
+      sim::texture_view(diffused, {sim::Filter::kBilinear, sim::Wrap::kClamp});
   const auto shading = [&](const GpuMaterial& mat, sim::DrawCall& d) {
     const shaders::TechniqueUniforms u = technique_uniforms(scene, view, config, mat);
     d.fragment_program = source == shaders::DiffusionSource::kScreen

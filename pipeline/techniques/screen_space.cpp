@@ -65,7 +65,7 @@ sim::PassCounters kernel_pass(const std::string& name,
                               std::shared_ptr<const sim::FragmentProgram> program,
                               const sim::RenderTarget& source, sim::RenderTarget& target,
                               const View& view, sim::Gpu& gpu) {
-  const sim::Texture2D src = sim::as_texture(source, {sim::Filter::kBilinear, sim::Wrap::kClamp});
+  const sim::Texture2D src = sim::texture_view(source, {sim::Filter::kBilinear, sim::Wrap::kClamp});
   sim::DrawCall d;
   d.vertex_program = sim::make_vertex_program<shaders::QuadVS>({});
   d.fragment_program = std::move(program);

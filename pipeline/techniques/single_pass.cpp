@@ -39,7 +39,7 @@ FrameOutput render_preintegrated_frame(const GpuScene& gs, const PipelineConfig&
   const auto brdf_lut = brdf_lut_for(cfg);
   sim::RenderTarget lut_target = preintegrated_lut_target(cfg);
   const sim::Texture2D lut =
-      sim::as_texture(lut_target, {sim::Filter::kBilinear, sim::Wrap::kClamp});
+      sim::texture_view(lut_target, {sim::Filter::kBilinear, sim::Wrap::kClamp});
   const float max_curvature = bake::PreintegratedLutParams{}.max_curvature_per_mm;
   std::optional<sim::Texture2D> curvature;
   if (cfg.curvature == CurvatureSource::kVertex) {

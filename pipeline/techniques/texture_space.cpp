@@ -83,7 +83,7 @@ FrameOutput render_texture_space_frame(const GpuScene& gs, const PipelineConfig&
     inputs.reserve(terms.size());
     sim::DrawCall d;
     for (std::size_t i = 0; i < terms.size(); ++i) {
-      inputs.push_back(sim::as_texture(terms[i], {sim::Filter::kBilinear, sim::Wrap::kClamp}));
+      inputs.push_back(sim::texture_view(terms[i], {sim::Filter::kBilinear, sim::Wrap::kClamp}));
       d.textures.textures[i] = &inputs.back();
     }
     d.vertex_program = sim::make_vertex_program<shaders::QuadVS>({});

@@ -191,6 +191,26 @@ TEST(Raster, RenderAreaLimitsTilesAndResolves) {
   EXPECT_EQ(rt.at(33, 33), glm::vec4(1.0f));
 }
 
+TEST(Raster, PassSamplingItsOwnTargetIsRejected) {
+  RenderTarget rt("feedback", 64, 64, TexelFormat::kRGBA8);
+  const Texture2D view = texture_view(rt, {Filter::kBilinear, Wrap::kClamp});
+  const Mesh quad = grid_mesh(1, 0.5f, 0.0f, 1);
+  RenderPassDesc pass;
+  pass.name = "loop";
+  pass.color = &rt;
+  DrawCall d = flat_draw(quad, glm::vec4(1.0f));
+  d.fragment_program = make_fragment_program<TexturedFS>({});
+  d.textures.textures[0] = &view;
+  pass.draws.push_back(d);
+  try {
+    Gpu(config(1)).execute(pass);
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("samples its own target 'feedback'"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(Raster, ImagesAndCountersIdenticalForAnyThreadCount) {
   std::vector<glm::vec4> texels(64 * 64);
   for (int i = 0; i < 64 * 64; ++i) {

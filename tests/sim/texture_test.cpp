@@ -5,6 +5,7 @@
 #include <cmath>
 #include <utility>
 
+#include "sim/render_target.h"
 #include "sim/texture_cache.h"
 #include "sim/texture_unit.h"
 
@@ -41,6 +42,24 @@ TEST(Texture, BuildsFullMipChain) {
   EXPECT_EQ(t.level(4).width, 1);
   EXPECT_EQ(t.level(4).height, 1);
   EXPECT_EQ(t.level(2).at(0, 0), quantize(glm::vec4(0.25f), TexelFormat::kRGBA8));
+}
+
+TEST(Texture, RenderTargetViewSamplesThePixelsInPlace) {
+  RenderTarget rt("rt", 8, 4, TexelFormat::kRGBA16F);
+  const Texture2D view = texture_view(rt, {Filter::kTrilinear, Wrap::kClamp});
+  EXPECT_EQ(view.level(0).texels, rt.pixels.data());  // no copy
+  EXPECT_EQ(view.level_count(), 1);
+  EXPECT_EQ(view.sampler().filter, Filter::kBilinear);  // one level: nothing to blend
+  EXPECT_EQ(view.format(), TexelFormat::kRGBA16F);
+  rt.at(3, 2) = glm::vec4(0.5f);
+  EXPECT_EQ(view.level(0).at(3, 2), glm::vec4(0.5f));
+}
+
+TEST(Texture, CopiesShareTheirTexels) {
+  const Texture2D t("t", 4, 4, std::vector<glm::vec4>(16, glm::vec4(0.25f)), TexelFormat::kRGBA8,
+                    {}, true);
+  const Texture2D copy = t;
+  for (int l = 0; l < t.level_count(); ++l) EXPECT_EQ(copy.level(l).texels, t.level(l).texels);
 }
 
 TEST(Texture, RejectsLevelsOfWrongSize) {
