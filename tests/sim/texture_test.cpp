@@ -23,6 +23,20 @@ TEST(Texture, QuantizesToFormat) {
   EXPECT_EQ(quantize(glm::vec4(0.1f), TexelFormat::kRGBA32F).x, 0.1f);
 }
 
+TEST(Texture, Rgba8HoldsEveryByteValueAndRoundsHalvesUp) {
+  for (int k = 0; k < 256; ++k) {
+    const float byte_value = static_cast<float>(k) / 255.0f;
+    ASSERT_EQ(quantize(glm::vec4(byte_value), TexelFormat::kRGBA8), glm::vec4(byte_value)) << k;
+    if (k == 255) break;
+    const float halfway = (static_cast<float>(k) + 0.5f) / 255.0f;  // rounds half away from 0
+    const float next = static_cast<float>(k + 1) / 255.0f;
+    const float below = (static_cast<float>(k) + 0.49f) / 255.0f;
+    ASSERT_EQ(quantize(glm::vec4(halfway, below, 0.0f, 1.0f), TexelFormat::kRGBA8),
+              glm::vec4(next, byte_value, 0.0f, 1.0f))
+        << k;
+  }
+}
+
 TEST(Texture, QuantizesSpansInPlaceLikeSingleValues) {
   std::vector<glm::vec4> values;
   for (int i = 0; i < 600; ++i) values.emplace_back(i / 511.0f - 0.1f, i * 0.37f, -i * 1e-3f, 0.5f);
