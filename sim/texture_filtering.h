@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <glm/glm.hpp>
 
 #include "sim/texture.h"
 
@@ -21,18 +22,25 @@ inline int wrap_coord(int i, int size, Wrap wrap) {
   return std::clamp(i, 0, size - 1);
 }
 
-// floor(v) as an int and the fraction v - floor(v), without a libm call on the sample
-// path. Coordinates are clamped to +-2^30 texels first (NaN to 0), far beyond any texture.
+// floor(v) as ints and the fractions v - floor(v) of both texel coordinates at once, in one
+// SIMD register (GCC/Clang vector extensions) and without a libm call: the sample path's
+// longest dependency chain. Coordinates are clamped to +-2^30 texels first (NaN to
+// -2^30), far beyond any texture.
 struct FloorSplit {
-  int whole;
-  float fraction;
+  int x, y;
+  float fraction_x, fraction_y;
 };
-inline FloorSplit floor_split(float v) {
+inline FloorSplit floor_split(glm::vec2 v) {
+  using Float4 = float __attribute__((vector_size(16)));
+  using Int4 = std::int32_t __attribute__((vector_size(16)));
   constexpr float kLimit = 1073741824.0f;
-  v = v > -kLimit ? (v < kLimit ? v : kLimit) : -kLimit;  // NaN fails both: -kLimit
-  int i = static_cast<int>(v);  // truncates toward zero
-  i -= v < static_cast<float>(i) ? 1 : 0;
-  return {i, v - static_cast<float>(i)};
+  const Float4 limit = {kLimit, kLimit, kLimit, kLimit};
+  Float4 p = {v.x, v.y, 0.0f, 0.0f};
+  p = p > -limit ? (p < limit ? p : limit) : -limit;    // NaN fails both: -kLimit
+  Int4 whole = __builtin_convertvector(p, Int4);        // truncates toward zero
+  whole += p < __builtin_convertvector(whole, Float4);  // true is -1: one down when v < 0
+  const Float4 fraction = p - __builtin_convertvector(whole, Float4);
+  return {whole[0], whole[1], fraction[0], fraction[1]};
 }
 
 // Morton code of x + 1 from the Morton code of x (x in the even bits): filling the odd
@@ -44,7 +52,7 @@ inline std::uint64_t morton_increment(std::uint64_t spread) {
 
 inline std::uint64_t spread_next(std::uint64_t spread_prev, int prev, int next) {
   return next == prev + 1 ? morton_increment(spread_prev)
-                         : morton_spread(static_cast<std::uint32_t>(next));
+                          : morton_spread(static_cast<std::uint32_t>(next));
 }
 
 // Squared footprint length rho^2 in texels (OpenGL ES 2.0 spec 3.7.7: rho = max of the
@@ -53,7 +61,9 @@ inline float footprint_rho2(float du_dx, float dv_dx, float du_dy, float dv_dy) 
   return std::max(du_dx * du_dx + dv_dx * dv_dx, du_dy * du_dy + dv_dy * dv_dy);
 }
 
-inline float lod_from_rho2(float rho2) { return rho2 > 0.0f ? 0.5f * std::log2(rho2) : -1000.0f; }
+inline float lod_from_rho2(float rho2) {
+  return rho2 > 0.0f ? 0.5f * std::log2(rho2) : -1000.0f;
+}
 
 // The level a nearest-mip sample uses, round(lambda) clamped to the chain, found from the
 // exponent of rho^2 alone: with rho^2 = m 2^e (m in [1,2)), round(e/2 + log2(m)/2) =

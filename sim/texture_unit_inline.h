@@ -26,12 +26,10 @@ inline void ExecTexUnit::access_line(std::uint64_t address) {
 inline glm::vec4 ExecTexUnit::nearest(const Texture2D& tex, std::uint64_t base, int level,
                                       glm::vec2 uv) {
   const LevelView& l = tex.level(level);
-  const int x =
-      filtering::wrap_coord(filtering::floor_split(uv.x * static_cast<float>(l.width)).whole,
-                            l.width, tex.sampler().wrap);
-  const int y =
-      filtering::wrap_coord(filtering::floor_split(uv.y * static_cast<float>(l.height)).whole,
-                            l.height, tex.sampler().wrap);
+  const filtering::FloorSplit f = filtering::floor_split(
+      uv * glm::vec2(static_cast<float>(l.width), static_cast<float>(l.height)));
+  const int x = filtering::wrap_coord(f.x, l.width, tex.sampler().wrap);
+  const int y = filtering::wrap_coord(f.y, l.height, tex.sampler().wrap);
   ++counters_->texels_touched;
   access_line(base + tex.texel_offset(level, x, y));
   return l.at(x, y);
@@ -41,15 +39,13 @@ inline glm::vec4 ExecTexUnit::bilinear(const Texture2D& tex, std::uint64_t base,
                                        glm::vec2 uv, bool blend) {
   const LevelView& l = tex.level(level);
   const Wrap wrap = tex.sampler().wrap;
-  const filtering::FloorSplit fx =
-      filtering::floor_split(uv.x * static_cast<float>(l.width) - 0.5f);
-  const filtering::FloorSplit fy =
-      filtering::floor_split(uv.y * static_cast<float>(l.height) - 0.5f);
-  const float ax = fx.fraction, ay = fy.fraction;
-  const int x0 = filtering::wrap_coord(fx.whole, l.width, wrap);
-  const int x1 = filtering::wrap_coord(fx.whole + 1, l.width, wrap);
-  const int y0 = filtering::wrap_coord(fy.whole, l.height, wrap);
-  const int y1 = filtering::wrap_coord(fy.whole + 1, l.height, wrap);
+  const filtering::FloorSplit f = filtering::floor_split(
+      uv * glm::vec2(static_cast<float>(l.width), static_cast<float>(l.height)) - 0.5f);
+  const float ax = f.fraction_x, ay = f.fraction_y;
+  const int x0 = filtering::wrap_coord(f.x, l.width, wrap);
+  const int x1 = filtering::wrap_coord(f.x + 1, l.width, wrap);
+  const int y0 = filtering::wrap_coord(f.y, l.height, wrap);
+  const int y1 = filtering::wrap_coord(f.y + 1, l.height, wrap);
 
   // The 2x2 footprint's texel addresses in the twiddled layout, and the distinct cache lines
   // among them, looked up in footprint order (usually one: a 64-byte line holds a 4x4

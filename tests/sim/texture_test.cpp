@@ -7,6 +7,7 @@
 
 #include "sim/render_target.h"
 #include "sim/texture_cache.h"
+#include "sim/texture_filtering.h"
 #include "sim/texture_unit.h"
 
 namespace skinsim::sim {
@@ -90,6 +91,25 @@ TEST(Texture, CubeCoordinatesFollowOpenGLFaces) {
   EXPECT_EQ(cube_coord({0, 0, 1}).face, 4);
   EXPECT_EQ(cube_coord({0, 0, -1}).face, 5);
   EXPECT_EQ(cube_coord({0, 0, 1}).uv, glm::vec2(0.5f));
+}
+
+TEST(TextureFiltering, FloorSplitsBothCoordinates) {
+  const auto split = [](float x, float y) { return filtering::floor_split({x, y}); };
+  filtering::FloorSplit f = split(2.25f, -0.25f);
+  EXPECT_EQ(f.x, 2);
+  EXPECT_EQ(f.y, -1);
+  EXPECT_EQ(f.fraction_x, 0.25f);
+  EXPECT_EQ(f.fraction_y, 0.75f);
+  f = split(-3.0f, 0.0f);  // integers split exactly, negative ones too
+  EXPECT_EQ(f.x, -3);
+  EXPECT_EQ(f.y, 0);
+  EXPECT_EQ(f.fraction_x, 0.0f);
+  EXPECT_EQ(f.fraction_y, 0.0f);
+  f = split(std::nanf(""), 1e20f);  // clamped to +-2^30 texels, NaN to the low end
+  EXPECT_EQ(f.x, -(1 << 30));
+  EXPECT_EQ(f.y, 1 << 30);
+  EXPECT_EQ(f.fraction_x, 0.0f);
+  EXPECT_EQ(f.fraction_y, 0.0f);
 }
 
 TEST(TextureCache, HitsAfterFillAndEvictsLeastRecentlyUsed) {
