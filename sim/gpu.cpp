@@ -25,10 +25,10 @@ Gpu::Gpu(GpuConfig config) : config_(config) {
                                 std::to_string(config_.cores));
   }
   if (config_.threads < 0) throw std::invalid_argument("thread count must be >= 0");
-  if (config_.threads != 1) {
-    arena_ = config_.threads == 0 ? std::make_unique<tbb::task_arena>()
-                                  : std::make_unique<tbb::task_arena>(config_.threads);
-  }
+  // Every parallel loop of a render runs in this arena, so --threads 1 keeps all of it on
+  // the calling thread.
+  arena_ = config_.threads == 0 ? std::make_unique<tbb::task_arena>()
+                                : std::make_unique<tbb::task_arena>(config_.threads);
 }
 
 Gpu::~Gpu() = default;
@@ -58,7 +58,6 @@ PassCounters Gpu::execute(const RenderPassDesc& pass) {
       }
     }
   }
-  if (!arena_) return execute_impl(pass);
   PassCounters result;
   arena_->execute([&] { result = execute_impl(pass); });
   return result;
@@ -115,11 +114,7 @@ PassCounters Gpu::execute_impl(const RenderPassDesc& pass) {
       renderer.render(tc.tile_x, tc.tile_y, bins.lists[i], tc);
     }
   };
-  if (arena_) {
-    tbb::parallel_for(0, c.cores, run_core);
-  } else {
-    for (int core = 0; core < c.cores; ++core) run_core(core);
-  }
+  tbb::parallel_for(0, c.cores, run_core);
 
   for (const TileCounters& t : c.tiles) {
     if (!grid.in_area(t.tile_x, t.tile_y)) continue;
