@@ -10,13 +10,18 @@ namespace skinsim::sim {
 
 namespace {
 
+// Triangles per set-up task: large enough to amortise a task, small enough to balance.
+constexpr std::size_t kTrianglesPerChunk = 4096;
+
 struct ClipVertex {
   glm::vec4 position;
   float varyings[kMaxVaryings];
 };
 
 // Clip-space near plane (OpenGL: z >= -w). Also keeps w strictly positive.
-float near_distance(const glm::vec4& p) { return p.z + p.w; }
+float near_distance(const glm::vec4& p) {
+  return p.z + p.w;
+}
 
 ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, float t, int varying_count) {
   ClipVertex r;
@@ -68,27 +73,43 @@ Plane make_plane(const std::array<ScreenVertex, 3>& v, double f0, double f1, dou
   return p;
 }
 
+// Why triangles of one chunk were dropped or split.
+struct SetupCounts {
+  std::uint64_t culled_backface = 0;
+  std::uint64_t culled_frustum = 0;
+  std::uint64_t culled_degenerate = 0;
+  std::uint64_t clipped = 0;
+};
+
+// The set-up of a run of consecutive triangles of one draw; varying offsets are local to it.
+struct SetupChunk {
+  SetupTriangles setup;
+  SetupCounts counts;
+};
+
 class TriangleBuilder {
  public:
-  TriangleBuilder(const RenderPassDesc& pass, const PixelRect& area, SetupTriangles& out,
-                  PassCounters& counters)
-      : width_(pass.color->width), height_(pass.color->height), area_(area), out_(out),
-        counters_(counters) {}
+  TriangleBuilder(const RenderPassDesc& pass, const PixelRect& area, SetupChunk& out)
+      : width_(pass.color->width),
+        height_(pass.color->height),
+        area_(area),
+        out_(out.setup),
+        counts_(out.counts) {}
 
   // Emits the set-up of one clipped (w > 0) triangle, or counts why it was dropped.
   void emit(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c, int varying_count,
             CullMode cull, std::uint32_t draw) {
     std::array<ScreenVertex, 3> v = {to_screen(a), to_screen(b), to_screen(c)};
-    std::int64_t area2 = (v[1].fx - v[0].fx) * (v[2].fy - v[0].fy) -
-                         (v[2].fx - v[0].fx) * (v[1].fy - v[0].fy);
+    std::int64_t area2 =
+        (v[1].fx - v[0].fx) * (v[2].fy - v[0].fy) - (v[2].fx - v[0].fx) * (v[1].fy - v[0].fy);
     if (area2 == 0) {
-      ++counters_.triangles_culled_degenerate;
+      ++counts_.culled_degenerate;
       return;
     }
     // Screen y points down, so a counter-clockwise (front-facing, GL) triangle has area2 < 0.
     const bool front = area2 < 0;
     if ((cull == CullMode::kBack && !front) || (cull == CullMode::kFront && front)) {
-      ++counters_.triangles_culled_backface;
+      ++counts_.culled_backface;
       return;
     }
     if (area2 < 0) {
@@ -116,13 +137,15 @@ class TriangleBuilder {
     auto first_pixel = [&](std::int64_t lo) {
       return static_cast<int>((lo - half + kSubpixelOne - 1) >> kSubpixelBits);
     };
-    auto last_pixel = [&](std::int64_t hi) { return static_cast<int>((hi - half) >> kSubpixelBits); };
+    auto last_pixel = [&](std::int64_t hi) {
+      return static_cast<int>((hi - half) >> kSubpixelBits);
+    };
     t.min_x = std::max(first_pixel(min_fx), area_.x0);
     t.min_y = std::max(first_pixel(min_fy), area_.y0);
     t.max_x = std::min(last_pixel(max_fx), area_.x1 - 1);
     t.max_y = std::min(last_pixel(max_fy), area_.y1 - 1);
     if (t.min_x > t.max_x || t.min_y > t.max_y) {
-      ++counters_.triangles_culled_degenerate;  // covers no pixel centre in the render area
+      ++counts_.culled_degenerate;  // covers no pixel centre in the render area
       return;
     }
     const double area_px = static_cast<double>(area2) / (kSubpixelOne * kSubpixelOne);
@@ -162,8 +185,74 @@ class TriangleBuilder {
   int width_, height_;
   PixelRect area_;
   SetupTriangles& out_;
-  PassCounters& counters_;
+  SetupCounts& counts_;
 };
+
+// Sets up triangles [first, last) of a draw whose vertices are shaded.
+void set_up_triangles(const RenderPassDesc& pass, const PixelRect& area, std::uint32_t d,
+                      const std::vector<ExecVertexOut>& shaded, std::size_t first, std::size_t last,
+                      SetupChunk& out) {
+  const DrawCall& draw = pass.draws[d];
+  const Geometry& g = draw.geometry;
+  const int varying_count = draw.vertex_program->varying_floats();
+  TriangleBuilder builder(pass, area, out);
+  for (std::size_t tri = first; tri < last; ++tri) {
+    const std::size_t i = 3 * tri;
+    std::array<ClipVertex, 3> v;
+    for (int k = 0; k < 3; ++k) {
+      const ExecVertexOut& s = shaded[g.indices[i + k]];
+      v[k].position = s.position;
+      std::copy(s.varyings, s.varyings + varying_count, v[k].varyings);
+    }
+    if (outside_same_plane(v[0].position, v[1].position, v[2].position)) {
+      ++out.counts.culled_frustum;
+      continue;
+    }
+    const bool needs_clip = near_distance(v[0].position) < 0.0f ||
+                            near_distance(v[1].position) < 0.0f ||
+                            near_distance(v[2].position) < 0.0f;
+    if (!needs_clip) {
+      builder.emit(v[0], v[1], v[2], varying_count, draw.cull, d);
+      continue;
+    }
+    ++out.counts.clipped;
+    std::array<ClipVertex, 4> poly;
+    const int n = clip_near(v, poly, varying_count);
+    for (int k = 1; k + 1 < n; ++k) {
+      builder.emit(poly[0], poly[k], poly[k + 1], varying_count, draw.cull, d);
+    }
+  }
+}
+
+// Appends the chunks in order, rebasing their varying offsets, and adds up their counts.
+// Each chunk copies into its own slice, so the copies run in parallel.
+void join_chunks(const std::vector<SetupChunk>& chunks, SetupTriangles& out,
+                 PassCounters& counters) {
+  std::vector<std::size_t> triangle_at(chunks.size() + 1, out.triangles.size());
+  std::vector<std::size_t> plane_at(chunks.size() + 1, out.varying_planes.size());
+  for (std::size_t k = 0; k < chunks.size(); ++k) {
+    const SetupChunk& c = chunks[k];
+    triangle_at[k + 1] = triangle_at[k] + c.setup.triangles.size();
+    plane_at[k + 1] = plane_at[k] + c.setup.varying_planes.size();
+    counters.triangles_culled_backface += c.counts.culled_backface;
+    counters.triangles_culled_frustum += c.counts.culled_frustum;
+    counters.triangles_culled_degenerate += c.counts.culled_degenerate;
+    counters.triangles_clipped += c.counts.clipped;
+  }
+  out.triangles.resize(triangle_at.back());
+  out.varying_planes.resize(plane_at.back());
+  tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t k) {
+    const SetupTriangles& c = chunks[k].setup;
+    const auto rebase = static_cast<std::uint32_t>(plane_at[k]);
+    std::transform(c.triangles.begin(), c.triangles.end(), out.triangles.begin() + triangle_at[k],
+                   [rebase](TriangleSetup t) {
+                     t.varying_offset += rebase;
+                     return t;
+                   });
+    std::copy(c.varying_planes.begin(), c.varying_planes.end(),
+              out.varying_planes.begin() + plane_at[k]);
+  });
+}
 
 }  // namespace
 
@@ -183,14 +272,12 @@ PixelRect tile_aligned_area(const RenderPassDesc& pass, int tile_size) {
 SetupTriangles run_geometry(const RenderPassDesc& pass, const PixelRect& area,
                             PassCounters& counters) {
   SetupTriangles out;
-  TriangleBuilder builder(pass, area, out, counters);
   std::vector<ExecVertexOut> shaded;
   for (std::uint32_t d = 0; d < pass.draws.size(); ++d) {
     const DrawCall& draw = pass.draws[d];
     const Geometry& g = draw.geometry;
     DrawCounters& dc = counters.draws[d];
     const int varying_count = draw.vertex_program->varying_floats();
-
     // Vertex shading: independent per vertex, so the parallel loop is deterministic.
     shaded.assign(g.vertex_count, ExecVertexOut{});
     const VertexProgram& vp = *draw.vertex_program;
@@ -208,31 +295,15 @@ SetupTriangles run_geometry(const RenderPassDesc& pass, const PixelRect& area,
     counters.varying_floats_per_vertex =
         std::max<std::uint64_t>(counters.varying_floats_per_vertex, varying_count);
 
-    for (std::size_t i = 0; i + 2 < g.index_count; i += 3) {
-      std::array<ClipVertex, 3> tri;
-      for (int k = 0; k < 3; ++k) {
-        const ExecVertexOut& s = shaded[g.indices[i + k]];
-        tri[k].position = s.position;
-        std::copy(s.varyings, s.varyings + varying_count, tri[k].varyings);
-      }
-      if (outside_same_plane(tri[0].position, tri[1].position, tri[2].position)) {
-        ++counters.triangles_culled_frustum;
-        continue;
-      }
-      const bool needs_clip = near_distance(tri[0].position) < 0.0f ||
-                              near_distance(tri[1].position) < 0.0f ||
-                              near_distance(tri[2].position) < 0.0f;
-      if (!needs_clip) {
-        builder.emit(tri[0], tri[1], tri[2], varying_count, draw.cull, d);
-        continue;
-      }
-      ++counters.triangles_clipped;
-      std::array<ClipVertex, 4> poly;
-      const int n = clip_near(tri, poly, varying_count);
-      for (int k = 1; k + 1 < n; ++k) {
-        builder.emit(poly[0], poly[k], poly[k + 1], varying_count, draw.cull, d);
-      }
-    }
+    // Set-up in fixed chunks of triangles, joined in submission order: the result does not
+    // depend on how many threads run the chunks.
+    const std::size_t triangles = g.index_count / 3;
+    std::vector<SetupChunk> chunks((triangles + kTrianglesPerChunk - 1) / kTrianglesPerChunk);
+    tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t k) {
+      set_up_triangles(pass, area, d, shaded, k * kTrianglesPerChunk,
+                       std::min(triangles, (k + 1) * kTrianglesPerChunk), chunks[k]);
+    });
+    join_chunks(chunks, out, counters);
   }
   counters.triangles_binned = out.triangles.size();
   return out;

@@ -64,6 +64,19 @@ DrawCall flat_draw(const Mesh& m, glm::vec4 color, BlendMode blend = BlendMode::
   return d;
 }
 
+// A pass with one opaque draw of `m` sampling `tex` at the mesh's UVs.
+RenderPassDesc textured_pass(const char* name, RenderTarget& rt, const Mesh& m,
+                             const Texture2D& tex) {
+  RenderPassDesc pass;
+  pass.name = name;
+  pass.color = &rt;
+  DrawCall d = flat_draw(m, glm::vec4(1.0f));
+  d.fragment_program = make_fragment_program<TexturedFS>({});
+  d.textures.textures[0] = &tex;
+  pass.draws.push_back(d);
+  return pass;
+}
+
 GpuConfig config(int threads) {
   GpuConfig c;
   c.threads = threads;
@@ -191,19 +204,37 @@ TEST(Raster, RenderAreaLimitsTilesAndResolves) {
   EXPECT_EQ(rt.at(33, 33), glm::vec4(1.0f));
 }
 
+// 4608 triangles: more than one set-up chunk, so varying offsets are rebased when the chunks
+// are joined. Texture coordinates map pixel centres to texel centres, so with nearest
+// filtering the image is the texture, flipped (v grows up the screen).
+TEST(Raster, LargeMeshKeepsEachTrianglesVaryings) {
+  constexpr int kSize = 64;
+  std::vector<glm::vec4> texels(kSize * kSize);
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> byte(0, 255);
+  for (glm::vec4& t : texels) t = glm::vec4(byte(rng), byte(rng), byte(rng), 255) / 255.0f;
+  const Texture2D tex("noise", kSize, kSize, texels, TexelFormat::kRGBA8,
+                      {Filter::kNearest, Wrap::kClamp}, false);
+  const Mesh grid = grid_mesh(48, 0.5f, 0.0f, 1);
+  for (int threads : {1, 2}) {
+    RenderTarget rt("rt", kSize, kSize, TexelFormat::kRGBA8);
+    const PassCounters c = Gpu(config(threads)).execute(textured_pass("many", rt, grid, tex));
+    EXPECT_EQ(c.triangles_binned, 48u * 48u * 2u);
+    EXPECT_EQ(c.fragments_shaded, static_cast<std::uint64_t>(kSize * kSize));
+    for (int y = 0; y < kSize; ++y) {
+      for (int x = 0; x < kSize; ++x) {
+        ASSERT_EQ(rt.at(x, y), tex.level(0).at(x, kSize - 1 - y)) << x << "," << y;
+      }
+    }
+  }
+}
+
 TEST(Raster, PassSamplingItsOwnTargetIsRejected) {
   RenderTarget rt("feedback", 64, 64, TexelFormat::kRGBA8);
   const Texture2D view = texture_view(rt, {Filter::kBilinear, Wrap::kClamp});
   const Mesh quad = grid_mesh(1, 0.5f, 0.0f, 1);
-  RenderPassDesc pass;
-  pass.name = "loop";
-  pass.color = &rt;
-  DrawCall d = flat_draw(quad, glm::vec4(1.0f));
-  d.fragment_program = make_fragment_program<TexturedFS>({});
-  d.textures.textures[0] = &view;
-  pass.draws.push_back(d);
   try {
-    Gpu(config(1)).execute(pass);
+    Gpu(config(1)).execute(textured_pass("loop", rt, quad, view));
     FAIL() << "expected std::invalid_argument";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("samples its own target 'feedback'"), std::string::npos)
