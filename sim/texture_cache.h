@@ -63,7 +63,8 @@ inline bool TextureCache::access(std::uint64_t address) {
     set = set_mask_ ? (line & set_mask_) : line % sets_;
   }
   std::uint64_t* ways = &tags_[set * ways_];
-  for (std::uint32_t i = 0; i < ways_; ++i) {
+  if (ways[0] == line) return true;  // already the most recent: the common hit
+  for (std::uint32_t i = 1; i < ways_; ++i) {
     if (ways[i] == line) {
       for (std::uint32_t j = i; j > 0; --j) ways[j] = ways[j - 1];  // move to front
       ways[0] = line;
