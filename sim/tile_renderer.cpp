@@ -105,15 +105,17 @@ void TileRenderer::render(int tx, int ty, const std::vector<std::uint32_t>& tria
   tex_.set_counters(&counters.texture);
 
   // Tile start: colour from a clear, or loaded from the target (costs DRAM reads).
-  for (int py = rect_.y0; py < rect_.y1; ++py) {
-    for (int px = rect_.x0; px < rect_.x1; ++px) {
-      const size_t i = static_cast<size_t>(py - rect_.y0) * ts + (px - rect_.x0);
-      color_[i] = pass_.color_load == LoadOp::kLoad ? pass_.color->at(px, py) : pass_.clear_color;
-      depth_[i] = 1.0f;
-      tag_[i] = 0;
+  std::fill(depth_.begin(), depth_.end(), 1.0f);
+  std::fill(tag_.begin(), tag_.end(), 0u);
+  if (pass_.color_load == LoadOp::kLoad) {
+    for (int py = rect_.y0; py < rect_.y1; ++py) {
+      std::copy_n(&pass_.color->at(rect_.x0, py), rect_.x1 - rect_.x0,
+                  &color_[static_cast<size_t>(py - rect_.y0) * ts]);
     }
+    counters.color_load_bytes = pixels * bpp;
+  } else {
+    std::fill(color_.begin(), color_.end(), pass_.clear_color);
   }
-  if (pass_.color_load == LoadOp::kLoad) counters.color_load_bytes = pixels * bpp;
 
   std::vector<std::uint64_t> shaded(pass_.draws.size(), 0);
   for (const std::uint32_t tri : triangles) {

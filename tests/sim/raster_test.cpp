@@ -188,6 +188,27 @@ TEST(Raster, NearPlaneCrossingTriangleIsClipped) {
   EXPECT_GT(c.fragments_shaded, 0u);
 }
 
+TEST(Raster, LoadKeepsTheTargetWhereNothingIsDrawn) {
+  RenderTarget rt("rt", 70, 40, TexelFormat::kRGBA8);
+  for (int y = 0; y < rt.height; ++y) {
+    for (int x = 0; x < rt.width; ++x) rt.at(x, y) = glm::vec4(x / 255.0f, y / 255.0f, 0, 1);
+  }
+  const RenderTarget before = rt;
+  const Mesh left_half = grid_mesh(1, 0.5f, 0.0f, 1, -1, -1, 0, 1);  // pixels x < 35
+  RenderPassDesc pass;
+  pass.name = "load";
+  pass.color = &rt;
+  pass.color_load = LoadOp::kLoad;
+  pass.draws.push_back(flat_draw(left_half, glm::vec4(1.0f)));
+  const PassCounters c = Gpu(config(2)).execute(pass);
+  EXPECT_EQ(c.color_load_bytes, 70u * 40u * 4u);
+  for (int y = 0; y < rt.height; ++y) {
+    for (int x = 0; x < rt.width; ++x) {
+      ASSERT_EQ(rt.at(x, y), x < 35 ? glm::vec4(1.0f) : before.at(x, y)) << x << "," << y;
+    }
+  }
+}
+
 TEST(Raster, RenderAreaLimitsTilesAndResolves) {
   RenderTarget rt("rt", 128, 128, TexelFormat::kRGBA8);
   const Mesh quad = grid_mesh(1, 0.5f, 0.0f, 1);
