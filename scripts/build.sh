@@ -1,7 +1,11 @@
 #!/usr/bin/env bash
 # Configures and builds skinsim into build/ (Release). Extra arguments go to cmake's configure.
+# Usage: scripts/build.sh [BUILD_DIR=build] -- [cmake configure arguments]
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/ccache-env.sh
 jobs=$(nproc 2>/dev/null || echo 2)
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "$@"
-cmake --build build -j "$jobs"
+build_dir=build
+if (($#)) && [[ "$1" != -* ]]; then build_dir=$1; shift; fi
+cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release "${ccache_args[@]}" "$@"
+cmake --build "$build_dir" -j "$jobs"

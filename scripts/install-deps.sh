@@ -3,11 +3,12 @@
 set -euo pipefail
 
 packages=(
-  cmake g++ make pkg-config
+  cmake g++ make pkg-config ccache clang-format
   libglm-dev libtinygltf-dev libstb-dev libopenimageio-dev libtbb-dev
   libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libvtk9-dev xvfb xauth
+  glslang-tools  # glslangValidator checks the exported GLSL ES in the tests
   python3  # the budget CLI test parses JUnit XML with its standard library
   # Debian's OpenImageIO CMake config references these files (iconvert, PyImath) and
   # lists /usr/include/opencv4 as an include directory of OpenImageIO::OpenImageIO.

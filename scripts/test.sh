@@ -1,17 +1,19 @@
 #!/usr/bin/env bash
 # One command that installs what is missing, builds, and passes the tests:
-#   1. Release build, every CTest test (chart tests run under xvfb-run);
-#   2. ASan + UBSan build of the unit tests (no VTK charts, no benchmarks).
+#   1. Release build with warnings as errors, every CTest test (chart tests run under xvfb-run);
+#   2. ASan + UBSan build of the unit tests (no VTK charts, no benchmarks), tests not labelled
+#      slow.
+# Builds go through ccache when it is installed (scripts/ccache-env.sh), so a second run
+# recompiles only what changed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 jobs=$(nproc 2>/dev/null || echo 2)
 
-bash scripts/build.sh
+bash scripts/build.sh build -DSKINSIM_WERROR=ON
 (cd build && ctest --output-on-failure -j "$jobs")
 
-cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSKINSIM_SANITIZE=ON \
-  -DSKINSIM_BUILD_REPORTS=OFF -DSKINSIM_BUILD_BENCH=OFF
-cmake --build build-asan -j "$jobs"
+bash scripts/build.sh build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSKINSIM_SANITIZE=ON \
+  -DSKINSIM_WERROR=ON -DSKINSIM_BUILD_REPORTS=OFF -DSKINSIM_BUILD_BENCH=OFF
 (cd build-asan && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --output-on-failure -j "$jobs" -LE slow)
