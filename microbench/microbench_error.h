@@ -3,11 +3,13 @@
 
 #include <stdexcept>
 
+#include "util/user_error.h"
+
 namespace skinsim::microbench {
 
-class MicrobenchError : public std::runtime_error {
+class MicrobenchError : public UserError {
  public:
-  using std::runtime_error::runtime_error;
+  using UserError::UserError;
 };
 
 }  // namespace skinsim::microbench

@@ -4,11 +4,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "util/user_error.h"
+
 namespace skinsim::quality {
 
-class QualityError : public std::runtime_error {
+class QualityError : public UserError {
  public:
-  explicit QualityError(const std::string& message) : std::runtime_error(message) {}
+  using UserError::UserError;
 };
 
 }  // namespace skinsim::quality

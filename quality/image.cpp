@@ -1,14 +1,15 @@
 #include "quality/image.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <string>
 #include <system_error>
 
+#include "io/atomic_file.h"
+#include "io/read_file.h"
 #include "quality/error.h"
 
 namespace skinsim::quality {
@@ -20,9 +21,15 @@ std::uint8_t to_u8(float value) {
   return static_cast<std::uint8_t>(std::lround(value * 255.0f));
 }
 
+// An 8K 16-bit RGBA PNG is at most ~256 MiB uncompressed; anything larger is not an image
+// this project wrote or can use.
+constexpr std::uintmax_t kMaxImageFileBytes = std::uintmax_t{256} << 20;
+
 // Reads all pixels as normalised floats; returns the channel count.
 int read_floats(const std::filesystem::path& path, int& width, int& height,
                 std::vector<float>& pixels) {
+  // A FIFO would block OpenImageIO's open forever, and /dev/zero would be read without end.
+  io::require_regular_file(path, "image", kMaxImageFileBytes);
   // Keep colour values as stored: without this OpenImageIO premultiplies them by alpha.
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);
@@ -124,35 +131,24 @@ void write_png_u8(const std::filesystem::path& path, int width, int height, int 
                        " bytes given for " + std::to_string(width) + "x" + std::to_string(height) +
                        "x" + std::to_string(channels));
   }
-  // The temporary name keeps the extension so OpenImageIO picks the PNG writer; the pid and a
-  // counter keep concurrent writers (threads or processes) from sharing one temp file.
-  static std::atomic<unsigned> counter{0};
-  std::filesystem::path temp = path;
-  temp += ".tmp" + std::to_string(::getpid()) + "_" + std::to_string(counter++) + ".png";
-
-  auto output = OIIO::ImageOutput::create(temp.string());
-  if (!output) {
+  // Encoded in memory, then written by the checked atomic writer: a full disk is reported
+  // and a truncated PNG never replaces a good one.
+  std::vector<unsigned char> png;
+  OIIO::Filesystem::IOVecOutput memory(png);
+  auto output = OIIO::ImageOutput::create("png");
+  if (!output || !output->supports("ioproxy")) {
     throw QualityError("cannot write '" + path.string() + "': " + OIIO::geterror());
   }
+  output->set_ioproxy(&memory);
   OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::UINT8);
   // The data is not premultiplied (a LUT's alpha is just a fourth channel): without this the
   // PNG writer would divide the colour channels by alpha.
   spec.attribute("oiio:UnassociatedAlpha", 1);
-  const bool ok = output->open(temp.string(), spec) &&
+  const bool ok = output->open(path.string(), spec) &&
                   output->write_image(OIIO::TypeDesc::UINT8, data.data()) && output->close();
-  if (!ok) {
-    const std::string why = output->geterror();
-    std::error_code ignored;
-    std::filesystem::remove(temp, ignored);
-    throw QualityError("cannot write '" + path.string() + "': " + why);
-  }
-  std::error_code error;
-  std::filesystem::rename(temp, path, error);
-  if (error) {
-    const std::string why = error.message();
-    std::filesystem::remove(temp, error);
-    throw QualityError("cannot move finished image onto '" + path.string() + "': " + why);
-  }
+  if (!ok) throw QualityError("cannot write '" + path.string() + "': " + output->geterror());
+  io::write_file_atomically(
+      path, std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
 }
 
 }  // namespace skinsim::quality

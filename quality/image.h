@@ -1,5 +1,5 @@
 // Images as a user sees them: display-referred, sRGB-encoded values in [0,1], plus pixel masks
-// and PNG input/output (writes are atomic: temp file + rename).
+// and PNG input/output (writes are encoded in memory and written by io::write_file_atomically).
 #pragma once
 
 #include <cstddef>
@@ -49,8 +49,8 @@ void save_png(const Image& image, const std::filesystem::path& path);
 Mask load_mask_png(const std::filesystem::path& path);
 void save_mask_png(const Mask& mask, const std::filesystem::path& path);
 
-// Writes `channels` interleaved 8-bit channels (1..4) of a width x height image atomically:
-// the data goes to a temporary file in the same folder which is then renamed over `path`,
+// Writes `channels` interleaved 8-bit channels (1..4) of a width x height image: encoded in
+// memory, then written with io::write_file_atomically (checked, temp file + rename),
 // so readers never see a half-written file.
 void write_png_u8(const std::filesystem::path& path, int width, int height, int channels,
                   std::span<const std::uint8_t> data);

@@ -16,11 +16,14 @@
 #include <vtkStringArray.h>
 #include <vtkTable.h>
 #include <vtkTextProperty.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
 #include <filesystem>
 
-#include "reports/atomic_file.h"
+#include "io/atomic_file.h"
+#include "io/read_file.h"
+#include "io/temp_files.h"
 #include "reports/display_check.h"
 #include "reports/report_error.h"
 
@@ -109,22 +112,26 @@ void write_png(vtkRenderWindow* window, const std::string& path) {
   grab->SetInputBufferTypeToRGB();
   grab->ReadFrontBufferOff();
   grab->Update();
-  const std::string tmp = temporary_path_beside(path);
+  // Encoded in memory, then written by the checked writer: VTK's own file writing does not
+  // report a full disk.
   vtkNew<vtkPNGWriter> writer;
-  writer->SetFileName(tmp.c_str());
+  writer->WriteToMemoryOn();
   writer->SetInputConnection(grab->GetOutputPort());
   writer->Write();
-  if (writer->GetErrorCode() != 0 || !fs::exists(tmp)) {
-    std::error_code ec;
-    fs::remove(tmp, ec);
-    throw ReportError("cannot write chart " + path);
+  vtkUnsignedCharArray* png = writer->GetResult();
+  if (writer->GetErrorCode() != 0 || png == nullptr || png->GetNumberOfValues() == 0) {
+    throw ReportError("cannot write chart " + path + ": PNG encoding failed");
   }
-  replace_file(tmp, path);
+  io::write_file_atomically(
+      path, std::string_view(reinterpret_cast<const char*>(png->GetPointer(0)),
+                             static_cast<std::size_t>(png->GetNumberOfValues())));
 }
 
 void write_svg(vtkRenderWindow* window, const std::string& path) {
-  const std::string tmp = temporary_path_beside(path);  // ends in .svg
-  const std::string tmp_prefix = tmp.substr(0, tmp.size() - 4);
+  // GL2PS writes only to a file named PREFIX.svg and does not report write errors: export to a
+  // temporary, read it back whole (an SVG ends with its closing tag), then write it checked.
+  const fs::path tmp_prefix = io::temporary_path_beside(path);
+  const fs::path tmp = tmp_prefix.string() + ".svg";
   vtkNew<vtkGL2PSExporter> exporter;
   exporter->SetRenderWindow(window);
   exporter->SetFileFormatToSVG();
@@ -134,12 +141,18 @@ void write_svg(vtkRenderWindow* window, const std::string& path) {
   // (built without PNG) cannot embed: it warns once and the SVG background stays transparent.
   exporter->UsePainterSettings();  // chart items are painted back to front: no depth sort
   exporter->Write();
-  if (!fs::exists(tmp) || fs::file_size(tmp) == 0) {
-    std::error_code ec;
-    fs::remove(tmp, ec);
-    throw ReportError("cannot write chart " + path + " (GL2PS export failed)");
+  std::string svg;
+  try {
+    svg = io::read_regular_file(tmp, "exported chart");
+  } catch (const io::InputError&) {
+    svg.clear();
   }
-  replace_file(tmp, path);
+  std::error_code ec;
+  fs::remove(tmp, ec);
+  if (svg.find("</svg>") == std::string::npos) {
+    throw ReportError("cannot write chart " + path + " (GL2PS export failed or was cut short)");
+  }
+  io::write_file_atomically(path, svg);
 }
 
 }  // namespace

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <set>
 
-#include "reports/atomic_file.h"
+#include "io/atomic_file.h"
 #include "reports/report_error.h"
 
 namespace skinsim::reports {
@@ -107,7 +107,7 @@ std::string sweep_csv(const SweepTable& table) {
 }
 
 void write_sweep_csv(const SweepTable& table, const std::string& path) {
-  write_file_atomically(path, sweep_csv(table));
+  io::write_file_atomically(path, sweep_csv(table));
 }
 
 }  // namespace skinsim::reports

@@ -7,7 +7,7 @@
 #include <optional>
 #include <set>
 
-#include "reports/atomic_file.h"
+#include "io/atomic_file.h"
 #include "reports/csv_writer.h"
 #include "reports/pareto.h"
 #include "reports/report_charts.h"
@@ -314,7 +314,7 @@ std::string write_report(const SweepTable& table, const std::string& dir,
   }
   page += "</body>\n</html>\n";
   const std::string path = (fs::path(dir) / "report.html").string();
-  write_file_atomically(path, page);
+  io::write_file_atomically(path, page);
   return path;
 }
 

@@ -5,11 +5,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "util/user_error.h"
+
 namespace skinsim::reports {
 
-class ReportError : public std::runtime_error {
+class ReportError : public UserError {
  public:
-  explicit ReportError(const std::string& message) : std::runtime_error(message) {}
+  using UserError::UserError;
 };
 
 }  // namespace skinsim::reports

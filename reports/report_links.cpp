@@ -5,6 +5,7 @@
 #include <regex>
 #include <sstream>
 
+#include "io/read_file.h"
 #include "reports/html_report.h"
 #include "reports/report_error.h"
 
@@ -66,11 +67,7 @@ bool is_external(const std::string& link) {
 
 std::vector<std::string> missing_report_links(const std::string& dir) {
   const std::filesystem::path page = std::filesystem::path(dir) / "report.html";
-  std::ifstream in(page);
-  if (!in) throw ReportError(page.string() + ": cannot open for reading");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string html = buffer.str();
+  const std::string html = io::read_regular_file(page, "report page");
 
   static const std::regex attribute(R"re((?:src|href)\s*=\s*"([^"]*)")re", std::regex::icase);
   std::vector<std::string> missing;

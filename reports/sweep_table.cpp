@@ -8,7 +8,8 @@
 #include <set>
 #include <sstream>
 
-#include "reports/atomic_file.h"
+#include "io/read_file.h"
+#include "io/atomic_file.h"
 #include "reports/report_error.h"
 
 namespace skinsim::reports {
@@ -343,17 +344,14 @@ void validate_sweep_table(const SweepTable& t) {
 
 void write_sweep_json(const SweepTable& table, const std::string& path) {
   validate_sweep_table(table);
-  write_file_atomically(path, json(table).dump(2) + "\n");
+  io::write_file_atomically(path, json(table).dump(2) + "\n");
 }
 
 SweepTable read_sweep_json(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ReportError(path + ": cannot open for reading");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
+  const std::string text = io::read_regular_file(path, "sweep results");
   json j;
   try {
-    j = json::parse(buffer.str());
+    j = json::parse(text);
   } catch (const json::parse_error& e) {
     throw ReportError(path + ": not valid JSON: " + e.what());
   }

@@ -97,7 +97,9 @@ ChartFiles write_tradeoff_chart(const SweepTable& table, const TradeoffSpec& spe
   for (const std::string& value : series) {
     std::vector<const ConfigResult*> members;
     for (const ConfigResult& r : rows) {
-      if (knob_value(r, spec.series_knob) == value) members.push_back(&r);
+      if (knob_value(r, spec.series_knob) == value && r.quality.count(spec.metric)) {
+        members.push_back(&r);
+      }
     }
     std::stable_sort(members.begin(), members.end(), [&](const auto* a, const auto* b) {
       if (spec.order_knob.empty()) return a->frame_ms < b->frame_ms;

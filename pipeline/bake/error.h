@@ -4,11 +4,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "util/user_error.h"
+
 namespace skinsim::bake {
 
-class BakeError : public std::runtime_error {
+class BakeError : public UserError {
  public:
-  explicit BakeError(const std::string& message) : std::runtime_error(message) {}
+  using UserError::UserError;
 };
 
 }  // namespace skinsim::bake

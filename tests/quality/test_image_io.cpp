@@ -84,13 +84,13 @@ TEST_F(ImageIo, ErrorsNameTheFile) {
   try {
     load_png(missing);
     FAIL() << "missing file accepted";
-  } catch (const QualityError& e) {
+  } catch (const UserError& e) {  // io::InputError: refused before OpenImageIO opens it
     EXPECT_NE(std::string(e.what()).find("missing.png"), std::string::npos) << e.what();
   }
   std::ofstream(dir_ / "garbage.png") << "not a png";
   EXPECT_THROW(load_png(dir_ / "garbage.png"), QualityError);
   const auto no_dir = dir_ / "no_such_dir" / "out.png";
-  EXPECT_THROW(save_png(Image::filled(2, 2, glm::vec3(0.5f)), no_dir), QualityError);
+  EXPECT_THROW(save_png(Image::filled(2, 2, glm::vec3(0.5f)), no_dir), UserError);
   Image broken = Image::filled(2, 2, glm::vec3(0.5f));
   broken.rgb.pop_back();
   EXPECT_THROW(save_png(broken, dir_ / "broken.png"), QualityError);

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "io/read_file.h"
 #include "reports/display_check.h"
 #include "reports/html_report.h"
 #include "reports/pareto.h"
@@ -145,7 +146,7 @@ TEST(HtmlReport, SaysSoWhenNoRowHasTheMetric) {
 }
 
 TEST(HtmlReport, MissingReportIsAnError) {
-  EXPECT_THROW(missing_report_links(fresh_output_dir()), ReportError);
+  EXPECT_THROW(missing_report_links(fresh_output_dir()), io::InputError);
 }
 
 TEST(HtmlReport, WithChartsAllLinksResolve) {

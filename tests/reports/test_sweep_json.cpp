@@ -6,6 +6,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "io/read_file.h"
 #include "reports/report_error.h"
 #include "reports/sweep_table.h"
 #include "tests/reports/synthetic_sweep.h"
@@ -101,7 +102,7 @@ TEST(SweepJson, FileErrorsNameTheFile) {
   } catch (const ReportError& e) {
     EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
   }
-  EXPECT_THROW(read_sweep_json(temp_file("does_not_exist.json")), ReportError);
+  EXPECT_THROW(read_sweep_json(temp_file("does_not_exist.json")), io::InputError);
 }
 
 TEST(SweepJson, NonFiniteValuesAreRefusedBeforeWriting) {

@@ -1,0 +1,26 @@
+// Content fingerprints: a stored result records the fingerprint of the inputs it was made
+// from (a device profile's bytes), so a later run can tell whether they changed.
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <string_view>
+
+namespace skinsim {
+
+// "fnv1a64:<16 hex digits>": FNV-1a, 64-bit (Fowler, Noll, Vo), offset basis and prime from
+// the reference (http://www.isthe.com/chongo/tech/comp/fnv/). Not cryptographic: it tells
+// edits apart, it does not resist forgery.
+inline std::string content_fingerprint(std::string_view bytes) {
+  std::uint64_t hash = 0xcbf29ce484222325ull;
+  for (const char c : bytes) {
+    hash ^= static_cast<unsigned char>(c);
+    hash *= 0x100000001b3ull;
+  }
+  char text[8 + 16 + 1];
+  std::snprintf(text, sizeof text, "fnv1a64:%016llx", static_cast<unsigned long long>(hash));
+  return text;
+}
+
+}  // namespace skinsim
