@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <cstring>
 
 #include "scene/scene_error.h"
@@ -231,8 +232,16 @@ std::vector<float> read_floats(const tinygltf::Model& model, int index, int comp
   std::vector<float> out;
   if (a.bufferView < 0) {
     // No bufferView: all zeros, unless sparse substitution follows (spec 3.6.2.3).
-    if (a.count > (std::size_t{1} << 28)) {
-      throw SceneError(fmt::format("{}: {}: count {} is implausibly large", file, where, a.count));
+    // Cap the zeros at what the file's largest buffer could hold, so a few bytes of JSON
+    // cannot demand gigabytes.
+    std::size_t largest = 0;
+    for (const auto& b : model.buffers) largest = std::max(largest, b.data.size());
+    const std::size_t limit = largest / (csize * components);
+    if (a.count > limit) {
+      throw SceneError(fmt::format(
+          "{}: {}: count {} without a bufferView exceeds the {} elements the largest buffer "
+          "({} bytes) could hold",
+          file, where, a.count, limit, largest));
     }
     out.assign(a.count * components, 0.0f);
   } else {

@@ -5,15 +5,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <numbers>
 #include <set>
 
 #include "scene/bounds.h"
 #include "scene/camera_framing.h"
+#include "scene/gltf_input.h"
 #include "scene/gltf_materials.h"
 #include "scene/gltf_nodes.h"
 #include "scene/gltf_primitive.h"
+#include "scene/load_warnings.h"
 #include "scene/scene_error.h"
 #include "scene/studio_lighting.h"
 #include "scene/validate.h"
@@ -22,38 +23,6 @@ namespace skinsim::scene {
 namespace {
 
 using Warn = std::function<void(const std::string&)>;
-
-tinygltf::Model parse_file(const std::string& path) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) {
-    throw SceneError(fmt::format("{}: file not found (or not a regular file)", path));
-  }
-  std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return std::tolower(c); });
-  if (ext != ".gltf" && ext != ".glb") {
-    throw SceneError(fmt::format("{}: expected a .gltf or .glb file", path));
-  }
-  tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(&gltf::decode_unless_in_buffer_view, nullptr);
-  tinygltf::Model model;
-  std::string err, warn;
-  bool ok = false;
-  try {
-    ok = ext == ".glb" ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                       : loader.LoadASCIIFromFile(&model, &err, &warn, path);
-  } catch (const std::exception& e) {  // tinygltf's JSON layer may throw on odd input
-    throw SceneError(fmt::format("{}: cannot parse glTF: {}", path, e.what()));
-  }
-  if (!ok) {
-    if (err.empty()) err = warn;
-    while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
-    throw SceneError(
-        fmt::format("{}: cannot parse glTF: {}", path, err.empty() ? "unknown error" : err));
-  }
-  return model;
-}
 
 // Extensions this loader understands well enough that a file may require them.
 void check_required_extensions(const tinygltf::Model& model, const std::string& path) {
@@ -76,23 +45,10 @@ int pick_scene(const tinygltf::Model& model, const std::string& path) {
   return s;
 }
 
-// The camera of the first node (pre-order) that has one, if it is a perspective camera.
-bool apply_file_camera(const tinygltf::Model& model, const std::vector<gltf::PlacedNode>& nodes,
-                       const Bounds& bounds, const std::string& path, const Warn& warn,
-                       Camera& cam) {
-  for (const auto& placed : nodes) {
-    const int index = model.nodes[static_cast<std::size_t>(placed.node)].camera;
-    if (index < 0) continue;
-    if (static_cast<std::size_t>(index) >= model.cameras.size()) {
-      throw SceneError(fmt::format("{}: nodes[{}].camera {} out of range ({} cameras)", path,
-                                   placed.node, index, model.cameras.size()));
-    }
-    const tinygltf::Camera& c = model.cameras[static_cast<std::size_t>(index)];
-    if (c.type != "perspective") {
-      warn(fmt::format("{}: cameras[{}] is {}, not perspective; framing the scene instead", path,
-                       index, c.type));
-      return false;
-    }
+// A glTF camera's projection (spec 5.12, 5.13), validated; zfar 0 = absent (perspective only).
+void apply_projection(const tinygltf::Camera& c, int index, const std::string& path, Camera& cam,
+                      double& zfar) {
+  if (c.type == "perspective") {
     const auto& p = c.perspective;
     if (!(p.yfov > 0.0 && p.yfov < std::numbers::pi) || !(p.znear > 0.0) ||
         (p.zfar != 0.0 && !(p.zfar > p.znear))) {
@@ -101,17 +57,53 @@ bool apply_file_camera(const tinygltf::Model& model, const std::vector<gltf::Pla
                       "zfar > znear (or absent)",
                       path, index));
     }
+    cam.projection = Projection::kPerspective;
+    cam.yfov_radians = static_cast<float>(p.yfov);
+    cam.znear = static_cast<float>(p.znear);
+    zfar = p.zfar;
+    return;
+  }
+  if (c.type == "orthographic") {
+    const auto& o = c.orthographic;
+    // xmag is checked but not used: the render aspect sets the width (see Camera::ymag).
+    if (!(o.xmag > 0.0 && std::isfinite(o.xmag)) || !(o.ymag > 0.0 && std::isfinite(o.ymag)) ||
+        !(o.znear >= 0.0) || !(o.zfar > o.znear && std::isfinite(o.zfar))) {
+      throw SceneError(
+          fmt::format("{}: cameras[{}].orthographic: need xmag > 0, ymag > 0, znear >= 0, "
+                      "zfar > znear",
+                      path, index));
+    }
+    cam.projection = Projection::kOrthographic;
+    cam.ymag = static_cast<float>(o.ymag);
+    cam.znear = static_cast<float>(o.znear);
+    zfar = o.zfar;
+    return;
+  }
+  throw SceneError(fmt::format(
+      "{}: cameras[{}].type '{}': need 'perspective' or 'orthographic'", path, index, c.type));
+}
+
+// The camera of the first node (pre-order) that has one.
+bool apply_file_camera(const tinygltf::Model& model, const std::vector<gltf::PlacedNode>& nodes,
+                       const Bounds& bounds, const std::string& path, Camera& cam) {
+  for (const auto& placed : nodes) {
+    const int index = model.nodes[static_cast<std::size_t>(placed.node)].camera;
+    if (index < 0) continue;
+    if (static_cast<std::size_t>(index) >= model.cameras.size()) {
+      throw SceneError(fmt::format("{}: nodes[{}].camera {} out of range ({} cameras)", path,
+                                   placed.node, index, model.cameras.size()));
+    }
+    double zfar = 0.0;
+    apply_projection(model.cameras[static_cast<std::size_t>(index)], index, path, cam, zfar);
     const glm::mat4& w = placed.world;
     cam.position = glm::vec3(w[3]);
     const glm::vec3 forward = glm::normalize(glm::vec3(w * glm::vec4(0, 0, -1, 0)));
     cam.up = glm::normalize(glm::vec3(w * glm::vec4(0, 1, 0, 0)));
     const float to_center = glm::dot(bounds.center() - cam.position, forward);
     cam.target = cam.position + forward * (to_center > 0.0f ? to_center : 1.0f);
-    cam.yfov_radians = static_cast<float>(p.yfov);
-    cam.znear = static_cast<float>(p.znear);
     // zfar absent means an infinite projection; use a far plane well past the scene.
     const float reach = glm::length(bounds.center() - cam.position) + glm::length(bounds.extent());
-    cam.zfar = p.zfar > 0.0 ? static_cast<float>(p.zfar) : std::max(reach * 2.0f, cam.znear * 2.0f);
+    cam.zfar = zfar > 0.0 ? static_cast<float>(zfar) : std::max(reach * 2.0f, cam.znear * 2.0f);
     return true;
   }
   return false;
@@ -167,7 +159,7 @@ Scene load_gltf(const std::string& path, const LoadOptions& opts) {
     throw SceneError(fmt::format(
         "{}: LoadOptions: aspect must be > 0 and auto_camera_yfov_radians in (0, 3)", path));
   }
-  tinygltf::Model model = parse_file(path);
+  tinygltf::Model model = gltf::parse_gltf_file(path);
   check_required_extensions(model, path);
   const int scene_index = pick_scene(model, path);
   const std::vector<gltf::PlacedNode> nodes = gltf::flatten_scene(model, scene_index, path);
@@ -213,7 +205,7 @@ Scene load_gltf(const std::string& path, const LoadOptions& opts) {
   }
 
   const Bounds bounds = scene_bounds(scene);
-  if (!apply_file_camera(model, nodes, bounds, path, warn, scene.camera)) {
+  if (!apply_file_camera(model, nodes, bounds, path, scene.camera)) {
     scene.camera = frame_front(bounds, opts.auto_camera_yfov_radians, opts.aspect, 0.05f);
   }
   scene.key_light = default_key_light();
@@ -223,6 +215,8 @@ Scene load_gltf(const std::string& path, const LoadOptions& opts) {
   scene.units_per_mm = opts.units_per_mm > 0.0f ? opts.units_per_mm : 0.001f;
   classify_materials(scene, opts.skin_materials);
   validate_scene(scene);
+  warn_implausible_head_size(scene, warn);
+  warn_untextured_materials(scene, warn);
   return scene;
 }
 

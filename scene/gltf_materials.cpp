@@ -1,9 +1,13 @@
 #include "scene/gltf_materials.h"
 
 #include <fmt/format.h>
+#include <stb/stb_image.h>
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <initializer_list>
 #include <limits>
 #include <map>
@@ -14,6 +18,33 @@
 
 namespace skinsim::scene::gltf {
 namespace {
+
+// Reads the width and height from the encoded image's header and refuses oversized images
+// before stb_image allocates width * height * channels bytes for them.
+bool within_size_limit(const unsigned char* bytes, int size, int index, std::string* err) {
+  int width = 0, height = 0, channels = 0;
+  // stb_image's own header reader refuses PNGs over 1 GiB decoded without saying why, so
+  // read a PNG's IHDR (signature, length, "IHDR", big-endian width and height) directly.
+  static constexpr unsigned char kPngIhdr[16] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n',
+                                                  0,    0,   0,   13,  'I',  'H',  'D',  'R'};
+  if (size >= 24 && std::memcmp(bytes, kPngIhdr, sizeof kPngIhdr) == 0) {
+    auto big_endian = [&](int at) {
+      return (std::uint32_t{bytes[at]} << 24) | (std::uint32_t{bytes[at + 1]} << 16) |
+             (std::uint32_t{bytes[at + 2]} << 8) | bytes[at + 3];
+    };
+    const std::uint32_t w = big_endian(16), h = big_endian(20);
+    width = static_cast<int>(std::min<std::uint32_t>(w, 1u << 30));
+    height = static_cast<int>(std::min<std::uint32_t>(h, 1u << 30));
+  } else if (!stbi_info_from_memory(bytes, size, &width, &height, &channels)) {
+    return true;  // not an image stb_image knows; decoding reports it
+  }
+  if (width <= kMaxImageSide && height <= kMaxImageSide) return true;
+  if (err) {
+    *err += fmt::format("images[{}]: {} x {} pixels is larger than skinsim's limit of {} x {}",
+                        index, width, height, kMaxImageSide, kMaxImageSide);
+  }
+  return false;
+}
 
 glm::vec4 texel(const tinygltf::Image& img, std::size_t i) {
   const int comps = img.component;
@@ -113,7 +144,8 @@ class ImageTable {
           fmt::format("{}: images[{}]: bufferView size {} is not decodable", file_, source, size));
     }
     std::string err, warn;
-    if (!tinygltf::LoadImageData(&img, source, &err, &warn, 0, 0, bytes, static_cast<int>(size),
+    if (!within_size_limit(bytes, static_cast<int>(size), source, &err) ||
+        !tinygltf::LoadImageData(&img, source, &err, &warn, 0, 0, bytes, static_cast<int>(size),
                                  nullptr)) {
       throw SceneError(fmt::format("{}: images[{}]: cannot decode: {}", file_, source, err));
     }
@@ -149,6 +181,7 @@ bool decode_unless_in_buffer_view(tinygltf::Image* image, int index, std::string
                                   std::string* warn, int req_width, int req_height,
                                   const unsigned char* bytes, int size, void* user_data) {
   if (image->bufferView >= 0) return true;
+  if (!within_size_limit(bytes, size, index, err)) return false;
   return tinygltf::LoadImageData(image, index, err, warn, req_width, req_height, bytes, size,
                                  user_data);
 }

@@ -1,6 +1,7 @@
 // Flattens a glTF scene's node tree into world transforms (internal to the glTF loader).
 #pragma once
 
+#include <cstddef>
 #include <glm/glm.hpp>
 #include <string>
 #include <vector>
@@ -16,10 +17,15 @@ struct PlacedNode {
   glm::mat4 world{1.0f};
 };
 
+// Most nodes a file may have. Each node with a mesh becomes a separate draw with fixed
+// per-draw set-up cost in the pipeline, so 100,000 one-triangle nodes ran for minutes;
+// head scans have a handful of nodes.
+inline constexpr std::size_t kMaxNodes = 4096;
+
 // Nodes of scenes[scene_index] in depth-first pre-order (document order), each with its
 // world matrix. The glTF spec (3.5.3) requires the nodes to form disjoint trees: a node
 // reached twice (a cycle or a second parent) throws SceneError, as do out-of-range
-// indices and malformed TRS/matrix values. Iterative, so deep trees cannot overflow the stack.
+// indices, malformed TRS/matrix values and more than kMaxNodes nodes. Iterative, so deep trees cannot overflow the stack.
 std::vector<PlacedNode> flatten_scene(const tinygltf::Model& model, int scene_index,
                                       const std::string& file);
 

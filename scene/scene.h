@@ -53,11 +53,17 @@ struct Mesh {
   std::size_t triangle_count() const { return indices.size() / 3; }
 };
 
+enum class Projection { kPerspective, kOrthographic };
+
 struct Camera {
   glm::vec3 position{0.0f, 0.0f, 1.0f};
   glm::vec3 target{0.0f};
   glm::vec3 up{0.0f, 1.0f, 0.0f};
-  float yfov_radians = 0.6f;
+  Projection projection = Projection::kPerspective;
+  float yfov_radians = 0.6f;  // perspective: vertical field of view
+  // Orthographic: half the view volume's height (glTF ymag). The width follows the render
+  // aspect (glTF: the viewport's aspect wins over xmag / ymag).
+  float ymag = 1.0f;
   float znear = 0.01f;
   float zfar = 100.0f;
 };

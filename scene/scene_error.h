@@ -5,11 +5,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "util/user_error.h"
+
 namespace skinsim::scene {
 
-class SceneError : public std::runtime_error {
+class SceneError : public UserError {
  public:
-  using std::runtime_error::runtime_error;
+  using UserError::UserError;
 };
 
 }  // namespace skinsim::scene

@@ -68,7 +68,7 @@ TEST(GltfErrors, MissingBufferFile) {
   f.add_quad_mesh(true, true);
   const std::string path = f.write_gltf("scene");
   std::filesystem::remove(f.dir() / "scene.bin");
-  expect_error(path, "cannot parse");
+  expect_error(path, "buffers[0].uri 'scene.bin'");
 }
 
 TEST(GltfErrors, ShortBuffer) {
@@ -323,6 +323,40 @@ TEST(GltfErrors, SingleByteCorruptionNeverCrashes) {
     }
   }
 }
+
+struct BadCamera {
+  const char* name;
+  nlohmann::json camera;
+  const char* expected;
+};
+
+class GltfCameraErrors : public ::testing::TestWithParam<BadCamera> {};
+
+TEST_P(GltfCameraErrors, NamesTheCameraField) {
+  testing::GltfFixture f(std::string("camera_") + GetParam().name);
+  f.add_quad_mesh(true, true);
+  f.json()["cameras"] = {GetParam().camera};
+  f.json()["nodes"].push_back({{"camera", 0}});
+  f.json()["scenes"][0]["nodes"].push_back(1);
+  expect_error(f.write_gltf("scene"), GetParam().expected);
+}
+
+nlohmann::json ortho(double xmag, double ymag, double znear, double zfar) {
+  return {{"type", "orthographic"},
+          {"orthographic", {{"xmag", xmag}, {"ymag", ymag}, {"znear", znear}, {"zfar", zfar}}}};
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, GltfCameraErrors,
+    ::testing::Values(
+        BadCamera{"ortho_zero_ymag", ortho(1, 0, 0.1, 10), "cameras[0].orthographic: need"},
+        BadCamera{"ortho_negative_xmag", ortho(-1, 1, 0.1, 10), "cameras[0].orthographic: need"},
+        BadCamera{"ortho_negative_znear", ortho(1, 1, -0.1, 10), "cameras[0].orthographic: need"},
+        BadCamera{"ortho_zfar_before_znear", ortho(1, 1, 2, 1), "cameras[0].orthographic: need"},
+        BadCamera{"perspective_zero_yfov",
+                  {{"type", "perspective"}, {"perspective", {{"yfov", 0.0}, {"znear", 0.1}}}},
+                  "cameras[0].perspective: need"}),
+    [](const auto& test) { return std::string(test.param.name); });
 
 }  // namespace
 }  // namespace skinsim::scene

@@ -128,9 +128,45 @@ TEST(GltfLoad, PointsPrimitiveSkippedWithWarning) {
   std::vector<std::string> warnings;
   const Scene s = load_gltf(f.write_glb("scene"), quiet(&warnings));
   EXPECT_EQ(s.meshes.size(), 1u);
-  ASSERT_EQ(warnings.size(), 1u);
+  ASSERT_GE(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find("primitives[1]"), std::string::npos);
 }
+
+// The 1 x 1 quad as a skin material: warnings for an implausible head size (with the
+// --units-per-mm that would make it 225 mm) and for a material with no textures.
+struct SizeCase {
+  float units_per_mm;
+  bool expect_size_warning;
+};
+
+class HeadSizeWarning : public ::testing::TestWithParam<SizeCase> {};
+
+TEST_P(HeadSizeWarning, WarnsOutsidePlausibleHeadHeights) {
+  GltfFixture f("head_size");
+  f.add_quad_mesh(true, true);
+  f.json()["materials"] = {{{"name", "skin"}}};
+  f.json()["meshes"][0]["primitives"][0]["material"] = 0;
+  std::vector<std::string> warnings;
+  LoadOptions o = quiet(&warnings);
+  o.units_per_mm = GetParam().units_per_mm;
+  load_gltf(f.write_glb("scene"), o);
+  bool size_warned = false, untextured_warned = false;
+  for (const std::string& w : warnings) {
+    if (w.find("1 units tall") != std::string::npos) {
+      size_warned = true;
+      EXPECT_NE(w.find("--units-per-mm 0.00444"), std::string::npos) << w;  // 1 / 225
+    }
+    if (w.find("material 'skin' has no textures") != std::string::npos) untextured_warned = true;
+  }
+  EXPECT_EQ(size_warned, GetParam().expect_size_warning);
+  EXPECT_TRUE(untextured_warned);
+}
+
+INSTANTIATE_TEST_SUITE_P(Units, HeadSizeWarning,
+                         ::testing::Values(SizeCase{0.0f, true},      // metres: 1000 mm
+                                           SizeCase{0.02f, true},     // 50 mm
+                                           SizeCase{0.0044f, false},  // 227 mm
+                                           SizeCase{0.008f, false})); // 125 mm
 
 TEST(GltfLoad, SparseAccessorOverridesValues) {
   GltfFixture f("sparse");
@@ -180,6 +216,25 @@ TEST(GltfLoad, CameraFromFirstCameraNode) {
   EXPECT_FLOAT_EQ(s.camera.yfov_radians, 0.7f);
   EXPECT_FLOAT_EQ(s.camera.znear, 0.05f);
   EXPECT_GT(s.camera.zfar, 4.0f);  // infinite in the file: a far plane past the scene
+}
+
+TEST(GltfLoad, OrthographicCameraKeepsYmag) {
+  GltfFixture f("ortho_camera");
+  f.add_quad_mesh(true, true);
+  f.json()["cameras"] = {{{"type", "orthographic"},
+                          {"orthographic",
+                           {{"xmag", 3.0}, {"ymag", 0.75}, {"znear", 0.0}, {"zfar", 9.0}}}}};
+  f.json()["nodes"].push_back({{"camera", 0}, {"translation", {0.5, 0.5, 4}}});
+  f.json()["scenes"][0]["nodes"].push_back(1);
+  std::vector<std::string> warnings;
+  const Scene s = load_gltf(f.write_glb("scene"), quiet(&warnings));
+  EXPECT_EQ(s.camera.projection, Projection::kOrthographic);
+  EXPECT_FLOAT_EQ(s.camera.ymag, 0.75f);
+  EXPECT_FLOAT_EQ(s.camera.znear, 0.0f);
+  EXPECT_FLOAT_EQ(s.camera.zfar, 9.0f);
+  expect_near(s.camera.position, {0.5f, 0.5f, 4.0f});
+  expect_near(s.camera.target, {0.5f, 0.5f, 0.0f});
+  for (const std::string& w : warnings) EXPECT_EQ(w.find("orthographic"), std::string::npos) << w;
 }
 
 TEST(GltfLoad, AutoCameraFramesFromFront) {
