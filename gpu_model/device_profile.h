@@ -86,20 +86,20 @@ struct DeviceProfile {
   Figure tile_overhead_cycles;
 };
 
-// What kind of number a figure is; decides validation.
-enum class FigureKind {
-  kCount,     // positive integer
-  kBytes,     // positive integer
-  kRate,      // > 0
-  kCycles,    // >= 0
-  kFraction,  // in (0, 1]
-  kSwitch,    // 0 or 1: a choice between two modelled behaviours
+// What values a figure accepts: what the emulator (sim::GpuConfig, sim::TextureCache) and the
+// pipeline can run, and otherwise physically plausible bounds that keep every modelled time
+// finite. Inclusive; the value and both range endpoints must satisfy them.
+struct FigureBounds {
+  double min = 0.0;
+  double max = 0.0;
+  bool integer = false;
+  bool power_of_two = false;  // implies integer
 };
 
 struct FigureSpec {
   const char* path;  // dotted TOML path, e.g. "gpu.clock_mhz"
   Figure DeviceProfile::*member;
-  FigureKind kind;
+  FigureBounds bounds;
   const char* unit;
   // True when the emulator's counters depend on the figure, so varying it needs a re-run.
   bool affects_counters;

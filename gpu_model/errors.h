@@ -5,12 +5,14 @@
 #include <stdexcept>
 #include <string>
 
+#include "util/user_error.h"
+
 namespace skinsim::gpu_model {
 
 // Base of every error this module throws.
-class Error : public std::runtime_error {
+class Error : public UserError {
  public:
-  using std::runtime_error::runtime_error;
+  using UserError::UserError;
 };
 
 // A device profile could not be found, parsed or validated.

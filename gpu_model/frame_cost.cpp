@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "gpu_model/finite_timing.h"
 #include "gpu_model/model_terms.h"
 #include "gpu_model/pass_cost.h"
 
@@ -44,6 +45,7 @@ FrameTiming estimate_frame(const std::vector<sim::PassCounters>& passes,
   f.bandwidth_ms = f.dram_bytes / dram_bytes_per_ms(profile);
   f.frame_ms = std::max(f.pipeline_ms, f.bandwidth_ms);
   f.fps = f.frame_ms > 0.0 ? 1000.0 / f.frame_ms : 0.0;
+  check_finite(f);
   return f;
 }
 

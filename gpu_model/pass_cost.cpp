@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "gpu_model/counter_checks.h"
+#include "gpu_model/finite_timing.h"
 #include "gpu_model/model_terms.h"
 #include "gpu_model/tile_cost.h"
 #include "gpu_model/tile_schedule.h"
@@ -90,6 +91,7 @@ PassTiming estimate_pass(const sim::PassCounters& pass, const DeviceProfile& p) 
     t.utilisation[u] = t.ms > 0.0 ? t.busy_ms[u] / t.ms : 0.0;
   }
   t.bottleneck = static_cast<Unit>(most);
+  check_finite(t);
   return t;
 }
 

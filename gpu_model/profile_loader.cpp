@@ -4,6 +4,8 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -12,6 +14,7 @@
 #include <sstream>
 
 #include "gpu_model/errors.h"
+#include "io/read_file.h"
 
 namespace skinsim::gpu_model {
 namespace {
@@ -97,30 +100,20 @@ void check_unknown_keys(const Reporter& r, const toml::table& table,
   }
 }
 
-// Checks a number against what its kind allows.
-void check_kind(const Reporter& r, const toml::node* node, const std::string& path, FigureKind kind,
-                double v) {
-  if (!std::isfinite(v)) r.fail(path, node, "must be finite");
-  switch (kind) {
-    case FigureKind::kCount:
-    case FigureKind::kBytes:
-      if (v < 1.0 || v != std::floor(v)) {
-        r.fail(path, node, fmt::format("must be a positive integer, got {}", v));
-      }
-      break;
-    case FigureKind::kRate:
-      if (v <= 0.0) r.fail(path, node, fmt::format("must be > 0, got {}", v));
-      break;
-    case FigureKind::kCycles:
-      if (v < 0.0) r.fail(path, node, fmt::format("must be >= 0, got {}", v));
-      break;
-    case FigureKind::kFraction:
-      if (v <= 0.0 || v > 1.0) r.fail(path, node, fmt::format("must be in (0, 1], got {}", v));
-      break;
-    case FigureKind::kSwitch:
-      if (v != 0.0 && v != 1.0) r.fail(path, node, fmt::format("must be 0 or 1, got {}", v));
-      break;
-  }
+std::string describe(const FigureBounds& b, const char* unit) {
+  const char* what = b.power_of_two ? "a power of two" : b.integer ? "an integer" : "a number";
+  return fmt::format("must be {} in [{}, {}]{}{}", what, b.min, b.max, *unit ? " " : "", unit);
+}
+
+// Checks a value or range endpoint against the figure's bounds (FigureSpec).
+void check_bounds(const Reporter& r, const toml::node* node, const std::string& path,
+                  const FigureSpec& spec, double v) {
+  const FigureBounds& b = spec.bounds;
+  const bool in_range = v >= b.min && v <= b.max;  // false for NaN
+  const bool integral = in_range && v == std::floor(v);
+  const bool ok = in_range && (!b.integer || integral) &&
+                  (!b.power_of_two || std::has_single_bit(static_cast<std::uint64_t>(v)));
+  if (!ok) r.fail(path, node, fmt::format("{}, got {}", describe(b, spec.unit), v));
 }
 
 Confidence parse_confidence(const Reporter& r, const toml::table& fig, const std::string& path) {
@@ -139,7 +132,7 @@ Figure parse_figure(const Reporter& r, const toml::table& fig, const FigureSpec&
   Figure f;
   const std::string value_path = base + ".value";
   f.value = require_number(r, fig.get("value"), value_path);
-  check_kind(r, fig.get("value"), value_path, spec.kind, f.value);
+  check_bounds(r, fig.get("value"), value_path, spec, f.value);
   f.source = require_string(r, fig, "source", base + ".source");
   f.confidence = parse_confidence(r, fig, base + ".confidence");
   f.min = f.max = f.value;
@@ -159,8 +152,8 @@ Figure parse_figure(const Reporter& r, const toml::table& fig, const FigureSpec&
   }
   f.min = require_number(r, arr->get(0), range_path + "[0]");
   f.max = require_number(r, arr->get(1), range_path + "[1]");
-  check_kind(r, arr->get(0), range_path + "[0]", spec.kind, f.min);
-  check_kind(r, arr->get(1), range_path + "[1]", spec.kind, f.max);
+  check_bounds(r, arr->get(0), range_path + "[0]", spec, f.min);
+  check_bounds(r, arr->get(1), range_path + "[1]", spec, f.max);
   if (!(f.min <= f.value && f.value <= f.max)) {
     r.fail(range_path, range,
            fmt::format("must satisfy min <= value <= max, got [{}, {}] with value {}", f.min, f.max,
@@ -168,6 +161,82 @@ Figure parse_figure(const Reporter& r, const toml::table& fig, const FigureSpec&
   }
   f.has_range = true;
   return f;
+}
+
+// sim::Gpu renders square tiles, and sensitivity varies one figure at a time, so a range on
+// one axis would ask for a non-square tile.
+void check_square_tiles(const Reporter& r, const toml::table& root, const DeviceProfile& p) {
+  if (p.tile_height.value != p.tile_width.value) {
+    r.fail("tile.height.value", root.at_path("tile.height.value").node(),
+           fmt::format("must equal tile.width.value ({}), got {}: the emulator renders square tiles",
+                       p.tile_width.value, p.tile_height.value));
+  }
+  for (const char* path : {"tile.width", "tile.height"}) {
+    const std::string range_path = std::string(path) + ".range";
+    const toml::node* range = root.at_path(range_path).node();
+    if (range != nullptr) {
+      r.fail(range_path, range,
+             "not supported: the emulator renders square tiles, so the tile size cannot be "
+             "varied one axis at a time");
+    }
+  }
+}
+
+// Why sim::TextureCache would refuse a cache shape.
+struct CacheProblem {
+  const char* field = nullptr;  // the figure to name; nullptr when the cache builds
+  std::string what;
+};
+
+// bytes, line bytes, ways, set hash, in the order of the [texture] cache figures.
+CacheProblem cache_problem(const std::array<double, 4>& v) {
+  // The emulator builds a set-associative cache: whole lines in whole sets.
+  const double set_bytes = v[1] * v[2];
+  if (std::fmod(v[0], set_bytes) != 0.0) {
+    return {"texture.cache_bytes",
+            fmt::format("cache_bytes {} is not a multiple of cache_line_bytes x cache_ways = {} x {}",
+                        v[0], v[1], v[2])};
+  }
+  // XOR folding works on the index bit field, so it needs a power-of-two set count
+  // (sim::SetIndex::kXorFold).
+  const auto sets = static_cast<std::uint64_t>(v[0] / set_bytes);
+  if (v[3] != 0.0 && !std::has_single_bit(sets)) {
+    return {"texture.cache_set_hash",
+            fmt::format("XOR-folded set index (cache_set_hash 1) needs a power-of-two set count, "
+                        "but cache_bytes / (cache_line_bytes x cache_ways) = {} / ({} x {}) = {} sets",
+                        v[0], v[1], v[2], sets)};
+  }
+  return {};
+}
+
+// The texture cache must build with the base figures and with each range endpoint that
+// sensitivity substitutes (one figure at a time, the others at their values).
+void check_texture_cache(const Reporter& r, const toml::table& root, const DeviceProfile& p) {
+  const std::array<std::pair<const char*, const Figure*>, 4> figures = {{
+      {"texture.cache_bytes", &p.texture_cache_bytes},
+      {"texture.cache_line_bytes", &p.texture_cache_line_bytes},
+      {"texture.cache_ways", &p.texture_cache_ways},
+      {"texture.cache_set_hash", &p.texture_cache_set_hash},
+  }};
+  std::array<double, 4> base{};
+  for (std::size_t i = 0; i < figures.size(); ++i) base[i] = figures[i].second->value;
+  const auto fail = [&](const std::string& path, const std::string& what) {
+    r.fail(path, root.at_path(path).node(), what);
+  };
+  if (const CacheProblem problem = cache_problem(base); problem.field != nullptr) {
+    fail(std::string(problem.field) + ".value", problem.what);
+  }
+  for (std::size_t i = 0; i < figures.size(); ++i) {
+    const Figure& f = *figures[i].second;
+    if (!f.has_range) continue;
+    const std::string range = std::string(figures[i].first) + ".range";
+    for (const auto& [endpoint, index] : {std::pair{f.min, "[0]"}, std::pair{f.max, "[1]"}}) {
+      std::array<double, 4> varied = base;
+      varied[i] = endpoint;
+      const CacheProblem problem = cache_problem(varied);
+      if (problem.field != nullptr) fail(range + index, problem.what);
+    }
+  }
 }
 
 DeviceProfile parse_root(const Reporter& r, const toml::table& root) {
@@ -215,22 +284,8 @@ DeviceProfile parse_root(const Reporter& r, const toml::table& root) {
     p.*spec.member = parse_figure(r, fig, spec);
   }
 
-  // The emulator builds a set-associative cache: whole lines in whole sets.
-  const double set_bytes = p.texture_cache_line_bytes.value * p.texture_cache_ways.value;
-  if (std::fmod(p.texture_cache_bytes.value, set_bytes) != 0.0) {
-    r.fail("texture.cache_bytes", root.at_path("texture.cache_bytes").node(),
-           fmt::format("{} is not a multiple of cache_line_bytes x cache_ways = {}",
-                       p.texture_cache_bytes.value, set_bytes));
-  }
-  // XOR folding works on the index bit field, so it needs a power-of-two set count
-  // (sim::SetIndex::kXorFold).
-  const auto sets = static_cast<std::uint64_t>(p.texture_cache_bytes.value / set_bytes);
-  if (p.texture_cache_set_hash.max != 0.0 && (sets & (sets - 1)) != 0) {
-    r.fail("texture.cache_set_hash", root.at_path("texture.cache_set_hash").node(),
-           fmt::format("XOR-folded set index (1) needs a power-of-two set count, but cache_bytes / "
-                       "(cache_line_bytes x cache_ways) = {} sets",
-                       sets));
-  }
+  check_square_tiles(r, root, p);
+  check_texture_cache(r, root, p);
   return p;
 }
 
@@ -270,8 +325,7 @@ DeviceProfile load_device_profile(const std::string& name_or_path, const std::st
       name_or_path.find('/') != std::string::npos || fs::path(name_or_path).extension() == ".toml";
   const fs::path path =
       is_path ? fs::path(name_or_path) : fs::path(data_dir) / "devices" / (name_or_path + ".toml");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
+  if (!fs::exists(path)) {
     std::string hint;
     if (!is_path) {
       std::string names;
@@ -286,9 +340,19 @@ DeviceProfile load_device_profile(const std::string& name_or_path, const std::st
     throw ProfileError(
         fmt::format("{}: cannot open device profile '{}'{}", path.string(), name_or_path, hint));
   }
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_device_profile(text.str(), path.string());
+  return parse_device_profile(io::read_regular_file(path, "device profile"), path.string());
+}
+
+DeviceCatalog load_device_catalog(const std::string& data_dir) {
+  DeviceCatalog catalog;
+  for (const std::string& name : list_devices(data_dir)) {
+    try {
+      catalog.profiles.push_back(load_device_profile(name, data_dir));
+    } catch (const UserError& e) {  // ProfileError, or the file could not be read
+      catalog.problems.push_back(e.what());
+    }
+  }
+  return catalog;
 }
 
 }  // namespace skinsim::gpu_model

@@ -21,4 +21,14 @@ DeviceProfile parse_device_profile(std::string_view toml_text, const std::string
 // Names (file stems) of the profiles shipped in <data_dir>/devices, sorted.
 std::vector<std::string> list_devices(const std::string& data_dir);
 
+// Every profile in <data_dir>/devices, loaded one by one so that a broken file does not hide
+// the others.
+struct DeviceCatalog {
+  std::vector<DeviceProfile> profiles;  // those that loaded, sorted by name
+  std::vector<std::string> problems;    // one per file that did not: the loader's message
+};
+
+// Throws ProfileError only when the directory itself is missing.
+DeviceCatalog load_device_catalog(const std::string& data_dir);
+
 }  // namespace skinsim::gpu_model

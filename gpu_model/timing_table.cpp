@@ -74,12 +74,4 @@ std::string format_device_table(const std::vector<DeviceProfile>& profiles) {
   return out;
 }
 
-std::string format_device_table(const std::string& data_dir) {
-  std::vector<DeviceProfile> profiles;
-  for (const std::string& name : list_devices(data_dir)) {
-    profiles.push_back(load_device_profile(name, data_dir));
-  }
-  return format_device_table(profiles);
-}
-
 }  // namespace skinsim::gpu_model

@@ -18,7 +18,4 @@ std::string format_sensitivity_table(const std::vector<SensitivityRow>& rows);
 // Key figures of the given profiles, one row each.
 std::string format_device_table(const std::vector<DeviceProfile>& profiles);
 
-// Key figures of every profile shipped in <data_dir>/devices (for `skinsim devices`).
-std::string format_device_table(const std::string& data_dir);
-
 }  // namespace skinsim::gpu_model

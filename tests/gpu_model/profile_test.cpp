@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -148,7 +149,7 @@ TEST(Profile, NonPositiveRateIsNamed) {
       replace_once(shipped_text("ipad4"), "[isp.fragments_per_clock_per_core]\nvalue = 16.0",
                    "[isp.fragments_per_clock_per_core]\nvalue = -16.0"));
   EXPECT_NE(m.find("isp.fragments_per_clock_per_core.value"), std::string::npos) << m;
-  EXPECT_NE(m.find("must be > 0"), std::string::npos) << m;
+  EXPECT_NE(m.find("must be a number in [0.001, 1024] frag/clk, got -16"), std::string::npos) << m;
   const std::string zero = parse_error(
       replace_once(shipped_text("ipad4"), "[gpu.clock_mhz]\nvalue = 300.0\nrange = [280.0, 300.0]",
                    "[gpu.clock_mhz]\nvalue = 0\nrange = [0, 300.0]"));
@@ -160,14 +161,14 @@ TEST(Profile, FractionOutsideUnitIntervalIsNamed) {
       shipped_text("ipad4"), "[memory.achievable_fraction]\nvalue = 0.6\nrange = [0.4, 0.8]",
       "[memory.achievable_fraction]\nvalue = 1.5\nrange = [0.4, 1.8]"));
   EXPECT_NE(m.find("memory.achievable_fraction.value"), std::string::npos) << m;
-  EXPECT_NE(m.find("(0, 1]"), std::string::npos) << m;
+  EXPECT_NE(m.find("must be a number in [0.01, 1], got 1.5"), std::string::npos) << m;
 }
 
 TEST(Profile, NonIntegerCountIsNamed) {
   const std::string m = parse_error(
       replace_once(shipped_text("ipad4"), "[gpu.cores]\nvalue = 4", "[gpu.cores]\nvalue = 3.5"));
   EXPECT_NE(m.find("gpu.cores.value"), std::string::npos) << m;
-  EXPECT_NE(m.find("positive integer"), std::string::npos) << m;
+  EXPECT_NE(m.find("must be an integer in [1, 64] cores, got 3.5"), std::string::npos) << m;
 }
 
 TEST(Profile, RangeMustContainValueAndIsRequiredWhenLowConfidence) {
@@ -203,7 +204,7 @@ TEST(Profile, CacheSetHashMustBeGivenAndZeroOrOne) {
     const std::string m = parse_error(
         replace_once(text, hash_block, "[texture.cache_set_hash]\nvalue = " + std::string(bad) + "\n"));
     EXPECT_NE(m.find("edited.toml:"), std::string::npos) << m;
-    EXPECT_NE(m.find("'texture.cache_set_hash.value': must be 0 or 1"), std::string::npos) << m;
+    EXPECT_NE(m.find("'texture.cache_set_hash.value': must be an integer in [0, 1]"), std::string::npos) << m;
   }
 
   const DeviceProfile hashed = parse_device_profile(
@@ -216,7 +217,7 @@ TEST(Profile, CacheSetHashNeedsPowerOfTwoSets) {
   const std::string text = replace_once(shipped_text("ipad4"), "[texture.cache_bytes]\nvalue = 8192",
                                         "[texture.cache_bytes]\nvalue = 12288");
   const std::string m = parse_error(text);
-  EXPECT_NE(m.find("'texture.cache_set_hash'"), std::string::npos) << m;
+  EXPECT_NE(m.find("'texture.cache_set_hash.range[1]'"), std::string::npos) << m;
   EXPECT_NE(m.find("48 sets"), std::string::npos) << m;
   EXPECT_EQ(parse_error(replace_once(text, "value = 0\nrange = [0, 1]", "value = 0\nrange = [0, 0]")),
             "");
@@ -233,11 +234,34 @@ TEST(Profile, BadConfidenceAndSyntaxAreReported) {
 }
 
 TEST(Profile, DeviceTableListsShippedProfiles) {
-  const std::string table = format_device_table(kDataDir);
+  const DeviceCatalog catalog = load_device_catalog(kDataDir);
+  EXPECT_TRUE(catalog.problems.empty());
+  const std::string table = format_device_table(catalog.profiles);
   for (const char* text : {"ipad3", "ipad4", "iphone5", "SGX554MP4", "SGX543MP3", "2048x1536",
                            "1136x640", "4x8", "76.8"}) {
     EXPECT_NE(table.find(text), std::string::npos) << text << "\n" << table;
   }
+}
+
+TEST(Profile, CatalogKeepsGoodProfilesAndReportsEachBrokenOne) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "skinsim_profile_catalog";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "devices");
+  fs::copy_file(kDataDir + "/devices/ipad4.toml", dir / "devices" / "ipad4.toml");
+  std::ofstream(dir / "devices" / "a_broken.toml")
+      << replace_once(shipped_text("ipad4"), "[gpu.cores]\nvalue = 4", "[gpu.cores]\nvalue = 65");
+  std::ofstream(dir / "devices" / "z_syntax.toml") << "[gpu\n";
+  fs::create_directories(dir / "devices" / "dir.toml");  // not a regular file: not listed
+
+  const DeviceCatalog catalog = load_device_catalog(dir.string());
+  ASSERT_EQ(catalog.profiles.size(), 1u);
+  EXPECT_EQ(catalog.profiles[0].name, "ipad4");
+  ASSERT_EQ(catalog.problems.size(), 2u);
+  EXPECT_NE(catalog.problems[0].find("a_broken.toml"), std::string::npos) << catalog.problems[0];
+  EXPECT_NE(catalog.problems[0].find("'gpu.cores.value'"), std::string::npos);
+  EXPECT_NE(catalog.problems[1].find("z_syntax.toml"), std::string::npos) << catalog.problems[1];
+  fs::remove_all(dir);
 }
 
 }  // namespace
