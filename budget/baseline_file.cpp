@@ -7,8 +7,9 @@
 #include <sstream>
 
 #include "budget/budget_error.h"
+#include "io/read_file.h"
 #include "quality/json_value.h"
-#include "reports/atomic_file.h"
+#include "io/atomic_file.h"
 
 namespace skinsim::budget {
 
@@ -19,18 +20,16 @@ constexpr const char* kFormat = "skinsim-budget-baseline/1";
 }  // namespace
 
 Baseline load_baseline(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
+  if (!std::filesystem::exists(path)) {
     throw BudgetError(fmt::format(
         "{}: cannot read the baseline file (record one with `skinsim baseline BUDGETS.toml "
         "--update`)",
         path.string()));
   }
-  std::ostringstream text;
-  text << in.rdbuf();
+  const std::string text = io::read_regular_file(path, "baseline file");
   std::string field = "(root)";
   try {
-    const nlohmann::json json = nlohmann::json::parse(text.str());
+    const nlohmann::json json = nlohmann::json::parse(text);
     field = "format";
     if (json.at("format").get<std::string>() != kFormat) {
       throw BudgetError(fmt::format("{}: format must be \"{}\"", path.string(), kFormat));
@@ -43,6 +42,10 @@ Baseline load_baseline(const std::filesystem::path& path) {
       BaselineEntry e;
       e.device = entry.at("device").get<std::string>();
       e.device_hash = entry.at("device_hash").get<std::string>();
+      if (entry.contains("definition_hash")) {
+        field = "budgets." + name + ".definition_hash";
+        e.definition_hash = entry.at("definition_hash").get<std::string>();
+      }
       for (const auto& [metric, value] : entry.at("metrics").items()) {
         field = "budgets." + name + ".metrics." + metric;
         e.metrics[metric] = quality::metric_from_json(value);
@@ -65,6 +68,7 @@ void save_baseline(const Baseline& baseline, const std::filesystem::path& path) 
     nlohmann::json e;
     e["device"] = entry.device;
     e["device_hash"] = entry.device_hash;
+    e["definition_hash"] = entry.definition_hash;
     e["metrics"] = nlohmann::json::object();
     for (const auto& [metric, value] : entry.metrics) {
       e["metrics"][metric] = quality::metric_to_json(value);
@@ -72,13 +76,27 @@ void save_baseline(const Baseline& baseline, const std::filesystem::path& path) 
     json["budgets"][name] = e;
   }
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
-  reports::write_file_atomically(path.string(), json.dump(2) + "\n");
+  io::write_file_atomically(path.string(), json.dump(2) + "\n");
 }
 
 std::optional<std::string> version_warning(const Baseline& baseline, const std::string& version) {
   if (baseline.skinsim_version == version) return std::nullopt;
   return fmt::format("the baseline was recorded with skinsim {}, this is skinsim {}",
                      baseline.skinsim_version, version);
+}
+
+std::optional<std::string> definition_warning(const Baseline& baseline, const std::string& budget,
+                                              const std::string& definition_hash,
+                                              const std::string& budget_file) {
+  const auto it = baseline.budgets.find(budget);
+  if (it == baseline.budgets.end() || it->second.definition_hash == definition_hash) {
+    return std::nullopt;
+  }
+  return fmt::format(
+      "budget '{}': its device, scene, resolution or knobs changed since the baseline was "
+      "recorded, so it is compared with a different frame (re-record it with `skinsim baseline "
+      "{} --update`)",
+      budget, budget_file);
 }
 
 std::optional<std::string> device_warning(const Baseline& baseline, const std::string& budget,

@@ -4,11 +4,13 @@
 
 #include <stdexcept>
 
+#include "util/user_error.h"
+
 namespace skinsim::budget {
 
-class BudgetError : public std::runtime_error {
+class BudgetError : public UserError {
  public:
-  using std::runtime_error::runtime_error;
+  using UserError::UserError;
 };
 
 }  // namespace skinsim::budget

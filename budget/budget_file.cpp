@@ -5,16 +5,21 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <set>
 #include <sstream>
 
 #include "budget/budget_error.h"
 #include "budget/metrics.h"
+#include "io/read_file.h"
 
 namespace skinsim::budget {
 
 namespace {
+
+// Above any display's refresh rate; a larger target is a typo (or 1e308).
+constexpr double kMaxTargetFps = 1000.0;
 
 int line_of(const toml::node& node) {
   return static_cast<int>(node.source().begin.line);
@@ -48,7 +53,12 @@ class Reader {
   }
 
   double number_at(const toml::node& node, const std::string& field) const {
-    if (const auto* f = node.as_floating_point()) return f->get();
+    if (const auto* f = node.as_floating_point()) {
+      if (!std::isfinite(f->get())) {
+        throw error(node, fmt::format("{} must be a finite number, got {:g}", field, f->get()));
+      }
+      return f->get();
+    }
     if (const auto* i = node.as_integer()) return static_cast<double>(i->get());
     throw error(node, fmt::format("{} must be a number", field));
   }
@@ -104,7 +114,10 @@ class Reader {
     }
     if (const toml::node* n = t.get("units_per_mm")) {
       const double v = number_at(*n, where + ".units_per_mm");
-      if (!(v > 0.0)) throw error(*n, where + ".units_per_mm must be positive");
+      if (!(v > 0.0 && v <= driver::kMaxUnitsPerMm)) {
+        throw error(*n, fmt::format("{}.units_per_mm must be in (0, {:g}], got {:g}", where,
+                                    driver::kMaxUnitsPerMm, v));
+      }
       scene.units_per_mm = static_cast<float>(v);
     }
   }
@@ -165,6 +178,12 @@ class Reader {
     if (!name) throw error(b.line, where + " has no name");
     b.name = string_at(*name, where + ".name");
     if (b.name.empty()) throw error(*name, where + ".name is empty");
+    // Names reach the terminal, JSON and JUnit XML verbatim; a control character there would
+    // garble the terminal or make the XML ill-formed.
+    if (std::any_of(b.name.begin(), b.name.end(),
+                    [](unsigned char c) { return c < 0x20 || c == 0x7f; })) {
+      throw error(*name, where + ".name contains a control character");
+    }
     const std::string named = fmt::format("budget '{}'", b.name);
     const toml::node* device = t.get("device");
     if (!device) throw error(b.line, named + " has no device");
@@ -182,7 +201,10 @@ class Reader {
     }
     if (const toml::node* n = t.get("target_fps")) {
       b.target_fps = number_at(*n, named + ".target_fps");
-      if (!(b.target_fps > 0.0)) throw error(*n, named + ".target_fps must be positive");
+      if (!(b.target_fps > 0.0 && b.target_fps <= kMaxTargetFps)) {
+        throw error(*n, fmt::format("{}.target_fps must be in (0, {:g}], got {:g}", named,
+                                    kMaxTargetFps, b.target_fps));
+      }
     }
     if (const toml::node* n = t.get("scene")) {
       const auto* table = n->as_table();
@@ -264,11 +286,7 @@ BudgetFile parse_budget_file(const std::string& text, const std::filesystem::pat
 }
 
 BudgetFile load_budget_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw BudgetError(fmt::format("{}: cannot read the budget file", path.string()));
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_budget_file(text.str(), path);
+  return parse_budget_file(io::read_regular_file(path, "budget file"), path);
 }
 
 }  // namespace skinsim::budget

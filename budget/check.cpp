@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "budget/definition_fingerprint.h"
 #include "budget/device_fingerprint.h"
 #include "budget/run_budget.h"
 
@@ -39,6 +40,10 @@ CheckReport check_budgets(const BudgetFile& file, const std::optional<Baseline>&
       if (auto w = device_warning(*baseline, budget.name, run.device, run.device_hash)) {
         report.warnings.push_back(*w);
       }
+      if (auto w = definition_warning(*baseline, budget.name,
+                                      definition_fingerprint(budget, file.path), path)) {
+        report.warnings.push_back(*w);
+      }
     }
     BudgetOutcome outcome;
     outcome.name = budget.name;
@@ -57,7 +62,8 @@ Baseline record_baseline(const BudgetFile& file, const std::string& data_dir, in
   for (const Budget& budget : file.budgets) {
     // Every metric is recorded, quality included, so a limit added later finds its value.
     const BudgetRun run = run_budget(file.path.string(), budget, data_dir, threads, true);
-    BaselineEntry entry{run.device, run.device_hash, run.measurement.metrics};
+    BaselineEntry entry{run.device, run.device_hash, definition_fingerprint(budget, file.path),
+                        run.measurement.metrics};
     // Refuse to record a baseline the budget's own limits could not be checked against (a
     // limit on a pass the frame does not have).
     evaluate_budget(file.path.string(), budget, run.measurement, &entry);

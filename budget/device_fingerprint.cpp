@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "budget/budget_error.h"
+#include "io/read_file.h"
 
 namespace skinsim::budget {
 
@@ -22,11 +23,7 @@ std::string fingerprint(std::string_view bytes) {
 }
 
 std::string file_fingerprint(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw BudgetError(fmt::format("{}: cannot read the device profile", path));
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  return fingerprint(bytes.str());
+  return fingerprint(io::read_regular_file(path, "device profile"));
 }
 
 std::string skinsim_version() {

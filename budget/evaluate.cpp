@@ -50,6 +50,14 @@ std::vector<LimitResult> evaluate_budget(const std::string& file, const Budget& 
                         "baseline {} --update`)",
                         at, file));
       }
+      // An infinite baseline would make the bound infinite and the limit always pass (or
+      // never); NaN would fail it as if the frame were too slow. Neither is a real baseline.
+      if (!std::isfinite(b->second)) {
+        throw BudgetError(fmt::format(
+            "{}: the baseline value is {:g}, not a finite number (re-record it with `skinsim "
+            "baseline {} --update`)",
+            at, b->second, file));
+      }
       r.baseline = b->second;
     }
     r.bound = limit.bound(r.baseline.value_or(0.0));

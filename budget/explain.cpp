@@ -148,6 +148,13 @@ std::string explain_failure(const Budget& budget, const LimitResult& r, const Me
   const std::string scope = metric_scope(r.limit.metric);
   const std::string kind = metric_kind(r.limit.metric);
   std::string text = what_moved(r, baseline);
+  // A cost below its lower limit is not a win to explain by what grew: the usual cause is a
+  // pass, draw or fragments that no longer run.
+  if (scope != "quality" && r.limit.comparison == Comparison::kAtLeast) {
+    return text +
+           "; the cost dropped unexpectedly: did work go missing? If the saving is intended, "
+           "re-record the baseline (skinsim baseline FILE --update)";
+  }
   if (scope == "quality") {
     return text +
            "; the frame differs more from the reference than the budget allows, so "

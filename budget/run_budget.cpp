@@ -6,6 +6,7 @@
 #include "budget/device_fingerprint.h"
 #include "driver/frame_job.h"
 #include "driver/frame_quality.h"
+#include "driver/skin_diagnosis.h"
 #include "gpu_model/errors.h"
 #include "gpu_model/profile_loader.h"
 #include "pipeline/gpu_scene.h"
@@ -51,8 +52,16 @@ BudgetRun run_budget(const std::string& file, const Budget& budget, const std::s
   if (with_quality) {
     const driver::ReferenceImages reference =
         driver::reference_images(pipeline::render_reference(gpu_scene, frame.config, threads));
-    add_quality_metrics(run.measurement,
-                        driver::evaluate_quality(frame.output.frame, reference).metrics);
+    const driver::FrameQuality quality = driver::evaluate_quality(frame.output.frame, reference);
+    if (!quality.has_skin_metrics()) {
+      for (const Limit& limit : budget.limits) {
+        if (limit.metric.ends_with("_skin")) {
+          throw BudgetError(fmt::format("{}, limit '{}': {}", where, limit.metric,
+                                        driver::no_skin_reason(scene, budget.scene.skin_materials)));
+        }
+      }
+    }
+    add_quality_metrics(run.measurement, quality.metrics);
   }
   run.device = device.name;
   run.device_hash = file_fingerprint(device.source_path);

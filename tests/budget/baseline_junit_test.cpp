@@ -23,12 +23,13 @@ TEST(Baseline, RoundTripsExactlyIncludingInfinity) {
   Baseline b;
   b.skinsim_version = "9.9.9";
   b.budgets["a"] = {
-      "ipad4", "fnv1a64:0123", {{"frame.ms", 5.356606482303355}, {"quality.psnr_skin", HUGE_VAL}}};
+      "ipad4", "fnv1a64:0123", "fnv1a64:4567", {{"frame.ms", 5.356606482303355}, {"quality.psnr_skin", HUGE_VAL}}};
   const auto path = temp_path("roundtrip.json");
   save_baseline(b, path);
   const Baseline back = load_baseline(path);
   EXPECT_EQ(back.skinsim_version, "9.9.9");
   EXPECT_EQ(back.budgets.at("a").device_hash, "fnv1a64:0123");
+  EXPECT_EQ(back.budgets.at("a").definition_hash, "fnv1a64:4567");
   EXPECT_EQ(back.budgets.at("a").metrics.at("frame.ms"), 5.356606482303355);
   EXPECT_TRUE(std::isinf(back.budgets.at("a").metrics.at("quality.psnr_skin")));
 }
@@ -58,7 +59,7 @@ TEST(Baseline, MalformedOrMissingFilesAreNamed) {
 TEST(Baseline, WarnsWhenToolOrDeviceProfileDiffer) {
   Baseline b;
   b.skinsim_version = "0.0.1";
-  b.budgets["a"] = {"ipad4", fingerprint("profile v1"), {}};
+  b.budgets["a"] = {"ipad4", fingerprint("profile v1"), fingerprint("definition v1"), {}};
   EXPECT_FALSE(version_warning(b, "0.0.1"));
   ASSERT_TRUE(version_warning(b, "0.2.0"));
   EXPECT_NE(version_warning(b, "0.2.0")->find("skinsim 0.0.1"), std::string::npos);
@@ -68,6 +69,11 @@ TEST(Baseline, WarnsWhenToolOrDeviceProfileDiffer) {
   EXPECT_NE(device_warning(b, "a", "iphone5", fingerprint("profile v1"))->find("'iphone5'"),
             std::string::npos);
   EXPECT_FALSE(device_warning(b, "other", "ipad4", "x"));
+  EXPECT_FALSE(definition_warning(b, "a", fingerprint("definition v1"), "f.toml"));
+  const auto edited = definition_warning(b, "a", fingerprint("definition v2"), "f.toml");
+  ASSERT_TRUE(edited);
+  EXPECT_NE(edited->find("skinsim baseline f.toml --update"), std::string::npos) << *edited;
+  EXPECT_FALSE(definition_warning(b, "other", "x", "f.toml"));
 }
 
 TEST(Fingerprint, IsFnv1a64) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "budget/budget_error.h"
+#include "util/user_error.h"
 
 namespace skinsim::budget {
 namespace {
@@ -114,7 +115,7 @@ TEST(BudgetFile, BadInputNamesFileLineAndField) {
       {budget_with("[budget.pipeline]\nwarp = 2\n[budget.limits]\n'frame.ms'='<= 1'\n"),
        "unknown pipeline knob 'warp'", 5},
       {budget_with("[budget.pipeline]\nscale = 7.5\n[budget.limits]\n'frame.ms'='<= 1'\n"),
-       "pipeline: buffer_scale must be in (0, 1]", 4},
+       "pipeline: scale must be in (0, 1]", 4},
       {budget_with("[budget.pipeline]\nscale = true\n[budget.limits]\n'frame.ms'='<= 1'\n"),
        "string or a number", 5},
       {budget_with("[budget.scene]\nhead_triangles = 5\n[budget.limits]\n'frame.ms'='<= 1'\n"),
@@ -149,7 +150,7 @@ TEST(BudgetFile, MissingFileIsNamed) {
   try {
     load_budget_file("/nonexistent/budgets.toml");
     FAIL();
-  } catch (const BudgetError& e) {
+  } catch (const UserError& e) {  // io::InputError, from the shared input reader
     EXPECT_NE(std::string(e.what()).find("/nonexistent/budgets.toml"), std::string::npos);
   }
 }

@@ -69,16 +69,45 @@ expect(code == 2 and "--update" in err, "an existing baseline needs --update", e
 code, out, err = run("check", budgets, "--threads", "1")
 expect(code == 0 and "2 of 2 limits in 1 budgets passed" in out, "passes its baseline", out + err)
 expect("warning" not in err, "no provenance warning for an unchanged setup", err)
-baseline = json.loads((WORK / "rel.baseline.json").read_text())
-baseline["skinsim_version"] = "0.0.0-old"
-baseline["budgets"]["small"]["device_hash"] = "fnv1a64:0000000000000000"
-baseline["budgets"]["small"]["metrics"]["frame.ms"] *= 0.5
-(WORK / "rel.baseline.json").write_text(json.dumps(baseline))
+
+# Editing what a budget measures (here its resolution) after recording warns and says how to
+# re-record; the baseline itself is left alone.
+(WORK / "rel.toml").write_text(pathlib.Path(budgets).read_text().replace("256x192", "320x240"))
+code, out, err = run("check", budgets)
+expect("budget 'small': its device, scene, resolution or knobs changed" in err
+       and "skinsim baseline" in err and "--update" in err, "definition change warns", err)
+(WORK / "rel.toml").write_text(pathlib.Path(budgets).read_text().replace("320x240", "256x192"))
+
+
+def edit_baseline(name, frame_ms_factor, **fields):
+    """Scales the recorded frame.ms of budget 'small' and overrides top-level/budget fields."""
+    path = WORK / name
+    baseline = json.loads(path.read_text())
+    baseline["budgets"]["small"]["metrics"]["frame.ms"] *= frame_ms_factor
+    baseline["skinsim_version"] = fields.get("skinsim_version", baseline["skinsim_version"])
+    if "device_hash" in fields:
+        baseline["budgets"]["small"]["device_hash"] = fields["device_hash"]
+    path.write_text(json.dumps(baseline))
+
+
+edit_baseline("rel.baseline.json", 0.5, skinsim_version="0.0.0-old",
+              device_hash="fnv1a64:0000000000000000")
 code, out, err = run("check", budgets)
 expect(code == 1, f"a frame twice its baseline exits 1, got {code}", out + err)
 expect("skinsim 0.0.0-old" in err and "device profile 'ipad4' changed" in err,
        "provenance warnings", err)
 expect("frame.ms rose from" in out and "+100.0%" in out, "relative failure says how much", out)
+
+# Two-sided limits: a frame cheaper than its baseline beyond the tolerance fails too.
+budgets = write("lower.toml",
+                SMALL + '"frame.ms" = ["<= baseline * 1.05", ">= baseline * 0.95"]\n')
+code, out, err = run("baseline", budgets)
+expect(code == 0, "lower-limit baseline recorded", out + err)
+edit_baseline("lower.baseline.json", 2.0)
+code, out, err = run("check", budgets)
+expect(code == 1, f"a frame half its baseline exits 1, got {code}", out + err)
+expect("frame.ms fell from" in out and "did work go missing?" in out,
+       "lower-limit failure says work may be missing", out)
 
 # Bad input: exit 2 and the message names the file and line.
 bad = {
@@ -88,7 +117,7 @@ bad = {
     "pass.toml": (SMALL + '"skn.ms" = "<= 5"\n', "pass.toml:10: budget 'small', limit 'skn.ms'"),
     "metric.toml": (SMALL + '"skin.speed" = "<= 5"\n', "metric.toml:10:"),
     "limit.toml": (SMALL + '"skin.ms" = "less than 5"\n', "limit.toml:10:"),
-    "knob.toml": (SMALL + '"skin.ms" = "<= 5"\n[budget.pipeline]\nscale = 9\n', "knob.toml:11: budget 'small', pipeline: buffer_scale"),
+    "knob.toml": (SMALL + '"skin.ms" = "<= 5"\n[budget.pipeline]\nscale = 9\n', "knob.toml:11: budget 'small', pipeline: scale must be in"),
 }
 for name, (text, where) in bad.items():
     code, out, err = run("check", write(name, text))

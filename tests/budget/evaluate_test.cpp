@@ -101,6 +101,25 @@ TEST(Evaluate, FrameFailureNamesThePassThatMoved) {
   EXPECT_NE(m.find("misses 250 fps"), std::string::npos) << m;
 }
 
+TEST(Evaluate, CostBelowItsLowerLimitFailsAsMissingWork) {
+  BaselineEntry base;  // every cost higher than the synthetic frame's: work went missing
+  base.metrics = {{"frame.ms", 6.0}, {"frame.dram_bytes", 3e7}, {"skin.fragments_shaded", 2e5}};
+  const Budget b = budget_of({{"frame.ms", ">= baseline * 0.95"},
+                              {"frame.dram_bytes", ">= baseline * 0.95"},
+                              {"skin.fragments_shaded", ">= baseline * 0.95"},
+                              {"frame.ms", "<= baseline * 1.05"}});
+  const auto r = evaluate_budget("f.toml", b, synthetic(), &base);
+  for (int i = 0; i < 3; ++i) {
+    ASSERT_FALSE(r[i].passed) << b.limits[i].metric;
+    EXPECT_NE(r[i].message.find("dropped unexpectedly: did work go missing?"), std::string::npos)
+        << r[i].message;
+  }
+  EXPECT_NE(r[0].message.find("frame.ms fell from 6.000 ms to 5.000 ms (-16.7%"),
+            std::string::npos)
+      << r[0].message;
+  EXPECT_TRUE(r[3].passed) << "the upper limit alone cannot catch a drop";
+}
+
 TEST(Evaluate, TextureBoundPassExplainsWithSamplesAndMissRate) {
   const Budget b = budget_of({{"blur.ms", "<= 0.5"}});
   const auto r = evaluate_budget("f.toml", b, synthetic(), nullptr);

@@ -69,7 +69,7 @@ TEST_F(FrameBudget, MeasurementIsIdenticalForAnyThreadCount) {
 
 TEST_F(FrameBudget, UnchangedFramePassesItsOwnBaseline) {
   const Measurement m = measure_frame(*frame_);
-  const BaselineEntry base{"ipad4", "h", m.metrics};
+  const BaselineEntry base{"ipad4", "h", "", m.metrics};
   for (const LimitResult& r : evaluate_budget("small.toml", file_->budgets.at(0), m, &base)) {
     EXPECT_TRUE(r.passed) << r.limit.metric;
   }
@@ -77,7 +77,7 @@ TEST_F(FrameBudget, UnchangedFramePassesItsOwnBaseline) {
 
 TEST_F(FrameBudget, HeavierSkinShaderFailsTheBudget) {
   const Measurement before = measure_frame(*frame_);
-  const BaselineEntry base{"ipad4", "h", before.metrics};
+  const BaselineEntry base{"ipad4", "h", "", before.metrics};
   // A test-only heavier skin shader: twice the vector ALU ops per fragment, as if the shader
   // had grown, re-timed by the cost model.
   driver::FrameResult heavier = *frame_;

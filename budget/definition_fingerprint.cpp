@@ -1,0 +1,32 @@
+#include "budget/definition_fingerprint.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "budget/device_fingerprint.h"
+
+namespace skinsim::budget {
+
+namespace {
+
+std::string relative_to(const std::string& path, const std::filesystem::path& budget_file) {
+  if (path.empty() || path == "builtin" || path.find('/') == std::string::npos) return path;
+  return std::filesystem::path(path).lexically_relative(budget_file.parent_path()).string();
+}
+
+}  // namespace
+
+std::string definition_fingerprint(const Budget& budget, const std::filesystem::path& budget_file) {
+  std::string text = fmt::format(
+      "device={}\nscene.path={}\nscene.head_triangles={}\nscene.texture_size={}\n"
+      "scene.skin_materials={}\nscene.units_per_mm={}\n",
+      relative_to(budget.device, budget_file), relative_to(budget.scene.path, budget_file),
+      budget.scene.head_triangles, budget.scene.texture_size,
+      fmt::join(budget.scene.skin_materials, ","), budget.scene.units_per_mm);
+  for (const std::string& knob : pipeline::config_field_names()) {
+    text += fmt::format("{}={}\n", knob, pipeline::get_config_field(budget.config, knob));
+  }
+  return fingerprint(text);
+}
+
+}  // namespace skinsim::budget
