@@ -24,18 +24,24 @@ FrameQuality evaluate_quality(const sim::RenderTarget& frame, const ReferenceIma
     throw std::invalid_argument("frame and reference sizes differ");
   }
   const quality::Image test = to_image(frame);
-  const quality::FlipResult flip_skin = quality::flip(test, reference.image, &reference.skin);
   FrameQuality q;
-  q.metrics["psnr_skin"] = quality::psnr(test, reference.image, &reference.skin);
-  q.metrics["ssim_skin"] = quality::ssim(test, reference.image, &reference.skin);
-  q.metrics["flip_skin"] = flip_skin.mean;
   q.metrics["psnr_frame"] = quality::psnr(test, reference.image);
   q.metrics["ssim_frame"] = quality::ssim(test, reference.image);
+  // With no skin pixel in the reference the skin metrics do not exist (the caller says why):
+  // the frame metrics and the FLIP map still do.
+  const bool has_skin = reference.skin.count() > 0;
+  const quality::FlipResult flip =
+      quality::flip(test, reference.image, has_skin ? &reference.skin : nullptr);
+  if (has_skin) {
+    q.metrics["psnr_skin"] = quality::psnr(test, reference.image, &reference.skin);
+    q.metrics["ssim_skin"] = quality::ssim(test, reference.image, &reference.skin);
+    q.metrics["flip_skin"] = flip.mean;
+  }
   // The FLIP map covers every pixel; only its mean depends on the mask.
   double sum = 0.0;
-  for (const float v : flip_skin.map.values) sum += v;
-  q.metrics["flip_frame"] = flip_skin.map.values.empty() ? 0.0 : sum / flip_skin.map.values.size();
-  q.error_map = quality::false_colour(flip_skin.map);
+  for (const float v : flip.map.values) sum += v;
+  q.metrics["flip_frame"] = flip.map.values.empty() ? 0.0 : sum / flip.map.values.size();
+  q.error_map = quality::false_colour(flip.map);
   return q;
 }
 

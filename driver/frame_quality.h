@@ -12,9 +12,11 @@
 namespace skinsim::driver {
 
 struct FrameQuality {
-  // Keys: psnr_skin, ssim_skin, flip_skin, psnr_frame, ssim_frame, flip_frame.
+  // Keys: psnr_frame, ssim_frame, flip_frame, and psnr_skin, ssim_skin, flip_skin when the
+  // reference shows skin (has_skin_metrics).
   std::map<std::string, double> metrics;
   quality::Image error_map;  // FLIP error, magma colour map
+  bool has_skin_metrics() const { return metrics.count("flip_skin") > 0; }
 };
 
 // The reference as an 8-bit display image and its skin mask, computed once and shared by

@@ -19,6 +19,7 @@ scene::Scene load_scene(const SceneSource& source, float aspect) {
   o.units_per_mm = source.units_per_mm;
   o.aspect = aspect;
   o.skin_materials = source.skin_materials;
+  o.warn = source.warn;
   return scene::load_gltf(source.path, o);
 }
 

@@ -1,6 +1,7 @@
 // Where a run's scene comes from: the built-in procedural head, or a glTF file.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -8,12 +9,18 @@
 
 namespace skinsim::driver {
 
+// The largest scene scale a user may give (units per millimetre): a nanometre-unit scene; any
+// more is a typo, and 1e308 would overflow the float it is stored in.
+constexpr double kMaxUnitsPerMm = 1e6;
+
 struct SceneSource {
   std::string path;  // empty or "builtin" = the built-in default scene
   int head_triangles = 60000;
   int texture_size = 1024;
   std::vector<std::string> skin_materials;  // --skin-materials override
   float units_per_mm = 0.0f;                // <= 0: the file's own (glTF: metres)
+  // Receives the loader's warnings (scene::LoadOptions::warn); empty: printed to stderr.
+  std::function<void(const std::string&)> warn;
   bool builtin() const { return path.empty() || path == "builtin"; }
   std::string label() const { return builtin() ? "builtin:default-head" : path; }
 };

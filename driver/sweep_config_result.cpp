@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "gpu_model/sensitivity.h"
+#include "io/read_file.h"
 #include "gpu_model/timing.h"
 
 namespace skinsim::driver {
@@ -130,9 +131,9 @@ nlohmann::json to_json(const StoredConfig& stored) {
 }
 
 std::optional<StoredConfig> read_stored_config(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) return std::nullopt;
-  const nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (!std::filesystem::exists(path)) return std::nullopt;
+  const nlohmann::json j = nlohmann::json::parse(io::read_regular_file(path, "stored sweep result"),
+                                                 nullptr, /*allow_exceptions=*/false);
   if (j.is_discarded() || !j.is_object() || j.value("format", 0) != kFormatVersion) {
     return std::nullopt;
   }

@@ -4,9 +4,12 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+
+#include "io/read_file.h"
 
 namespace skinsim::driver {
 
@@ -31,10 +34,16 @@ double number(const toml::node& node, const std::string& at) {
   throw SweepError(at + ": expected a number");
 }
 
-int integer(const toml::node& node, const std::string& at) {
+// The TOML integer checked against [lo, hi] before it is narrowed, so 4294968296 is refused
+// rather than wrapping round to a value in range.
+int integer(const toml::node& node, const std::string& at, int lo, int hi) {
   const auto* i = node.as_integer();
   if (!i) throw SweepError(at + ": expected an integer");
-  return static_cast<int>(i->get());
+  const std::int64_t value = i->get();
+  if (value < lo || value > hi) {
+    throw SweepError(fmt::format("{}: {} is out of range: must be in [{}, {}]", at, value, lo, hi));
+  }
+  return static_cast<int>(value);
 }
 
 // A table's entries in file order (toml::table iterates by key): the first axis written varies
@@ -55,23 +64,40 @@ const toml::table& table_at(const toml::node& node, const std::string& at) {
   return *t;
 }
 
-void parse_axes(const toml::table& axes, const std::string& name, SweepSpec& spec) {
+// A device profile given as a relative .toml path is relative to the sweep file's directory
+// (as in budget files), not to wherever the command runs; shipped names stay as they are.
+std::string resolve_device(const std::string& value, const std::string& base_dir) {
+  const std::filesystem::path path(value);
+  if (path.extension() != ".toml" || path.is_absolute()) return value;
+  return (std::filesystem::path(base_dir) / path).lexically_normal().string();
+}
+
+// A knob's value from the file, device paths resolved against the file's directory.
+std::string knob_value(const std::string& knob, const toml::node& node, const std::string& at,
+                       const std::string& base_dir) {
+  const std::string text = value_text(node, at);
+  return knob == "device" ? resolve_device(text, base_dir) : text;
+}
+
+void parse_axes(const toml::table& axes, const std::string& name, const std::string& base_dir,
+                SweepSpec& spec) {
   for (const auto& [key, node] : in_file_order(axes)) {
     const std::string at = where(name, *node, "axes." + key);
     std::vector<std::string> values;
     if (const auto* array = node->as_array()) {
-      for (const toml::node& v : *array) values.push_back(value_text(v, at));
+      for (const toml::node& v : *array) values.push_back(knob_value(key, v, at, base_dir));
     } else {
-      values.push_back(value_text(*node, at));  // a single value is a one-value axis
+      values.push_back(knob_value(key, *node, at, base_dir));  // one value: a one-value axis
     }
     set_axis(spec, key, values, at);
   }
 }
 
-void parse_fixed(const toml::table& fixed, const std::string& name, SweepSpec& spec) {
+void parse_fixed(const toml::table& fixed, const std::string& name, const std::string& base_dir,
+                 SweepSpec& spec) {
   for (const auto& [key, node] : in_file_order(fixed)) {
     const std::string at = where(name, *node, "fixed." + key);
-    spec.fixed.push_back({key, value_text(*node, at), at});
+    spec.fixed.push_back({key, knob_value(key, *node, at, base_dir), at});
   }
 }
 
@@ -89,15 +115,9 @@ void parse_scene(const toml::table& scene, const std::string& name, const std::s
         s.path = (std::filesystem::path(base_dir) / s.path).lexically_normal().string();
       }
     } else if (k == "head_triangles") {
-      s.head_triangles = integer(node, at);
-      if (s.head_triangles < 1000 || s.head_triangles > 2000000) {
-        throw SweepError(at + ": must be in [1000, 2000000]");
-      }
+      s.head_triangles = integer(node, at, 1000, 2000000);
     } else if (k == "texture_size") {
-      s.texture_size = integer(node, at);
-      if (s.texture_size < 16 || s.texture_size > 4096) {
-        throw SweepError(at + ": must be in [16, 4096]");
-      }
+      s.texture_size = integer(node, at, 16, 4096);
     } else if (k == "skin_materials") {
       const auto* array = node.as_array();
       if (!array) throw SweepError(at + ": expected an array of material names");
@@ -145,9 +165,9 @@ SweepSpec parse_sweep_text(const std::string& text, const std::string& name,
     const std::string k(key.str());
     const std::string at = where(name, node, k);
     if (k == "axes") {
-      parse_axes(table_at(node, at), name, spec);
+      parse_axes(table_at(node, at), name, base_dir, spec);
     } else if (k == "fixed") {
-      parse_fixed(table_at(node, at), name, spec);
+      parse_fixed(table_at(node, at), name, base_dir, spec);
     } else if (k == "scene") {
       parse_scene(table_at(node, at), name, base_dir, spec);
     } else if (k == "report") {
@@ -157,17 +177,15 @@ SweepSpec parse_sweep_text(const std::string& text, const std::string& name,
     }
   }
   if (spec.axes.empty()) throw SweepError(name + ": no [axes] given: nothing to sweep");
-  // Validate every value now, so a bad one is reported against this file before any work.
-  expand_sweep(spec);
+  // Validate every value now, so a bad one is reported against this file before any work; a
+  // sweep over the limit is validated value by value (counting canonicalises every value) and
+  // refused by the command unless it raises the limit.
+  if (count_sweep_configs(spec) <= kDefaultMaxConfigs) expand_sweep(spec);
   return spec;
 }
 
 SweepSpec parse_sweep_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SweepError(fmt::format("{}: cannot open sweep file", path));
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_sweep_text(text.str(), path, std::filesystem::path(path).parent_path().string());
+  return parse_sweep_text(io::read_regular_file(path, "sweep file"), path, std::filesystem::path(path).parent_path().string());
 }
 
 }  // namespace skinsim::driver

@@ -9,7 +9,7 @@
 //   [scene]
 //   path = "head.glb"          # relative to the sweep file; "builtin" (default)
 //   skin_materials = ["all"]
-//   units_per_mm = 0.04
+//   units_per_mm = 0.035
 //   [report]
 //   budget_ms = 33.3
 //

@@ -7,9 +7,10 @@
 #include <nlohmann/json.hpp>
 
 #include "driver/sweep_spec.h"
+#include "io/read_file.h"
 #include "pipeline/reference/reference.h"
 #include "quality/image.h"
-#include "reports/atomic_file.h"
+#include "io/atomic_file.h"
 
 namespace skinsim::driver {
 
@@ -38,9 +39,9 @@ void quantise(quality::Image& image) {
 bool load_cached(const std::filesystem::path& marker, const nlohmann::json& fingerprint,
                  const std::filesystem::path& image_path, const std::filesystem::path& mask_path,
                  ReferenceImages& out) {
-  std::ifstream in(marker);
-  if (!in) return false;
-  const nlohmann::json stored = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (!std::filesystem::exists(marker)) return false;
+  const nlohmann::json stored = nlohmann::json::parse(
+      io::read_regular_file(marker, "reference cache marker"), nullptr, /*allow_exceptions=*/false);
   if (stored.is_discarded() || !stored.contains("fingerprint") ||
       stored["fingerprint"] != fingerprint) {
     return false;
@@ -81,7 +82,7 @@ ReferenceImages cached_reference(const pipeline::GpuScene& scene,
   std::filesystem::create_directories(refs_dir);
   quality::save_png(images.image, image_path);
   quality::save_mask_png(images.skin, mask_path);
-  reports::write_file_atomically(marker.string(),
+  io::write_file_atomically(marker.string(),
                                  nlohmann::json{{"fingerprint", fingerprint}}.dump(2) + "\n");
   if (rendered) *rendered = true;
   return images;

@@ -19,7 +19,7 @@ SweepReportOutcome write_sweep_report(const reports::SweepTable& table, const st
     charts = false;
   }
   reports::ReportOptions options;
-  options.quality_metric = kRecommendMetric;
+  options.quality_metric = recommend_metric(table.rows);
   options.higher_is_better = false;
   options.draw_charts = charts;
   options.write_data_files = false;  // write_sweep_data writes results.json / results.csv

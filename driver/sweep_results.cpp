@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <optional>
 #include <set>
@@ -16,14 +17,13 @@ namespace skinsim::driver {
 
 namespace {
 
-// Stored results belong to a configuration when every swept knob it uses has the swept value
-// (run_sweep has already replaced stored results whose full fingerprint no longer matched).
-bool belongs_to(const StoredConfig& stored, const SweepConfig& config) {
-  if (reports::knob_value(stored.row, "device") != config.device) return false;
-  for (const auto& [knob, value] : config.swept) {
-    if (reports::knob_value(stored.row, knob) != value) return false;
-  }
-  return true;
+// A stored result belongs to this sweep only when its whole fingerprint matches: every knob
+// (the --set ones too), the device and the scene. Comparing the swept knobs alone would
+// show another sweep's rows (one that differed only in a --set knob) as this one's.
+bool belongs_to(const StoredConfig& stored, const SweepConfig& config,
+                const std::map<std::string, nlohmann::json>& fingerprints) {
+  const auto it = fingerprints.find(config.id);
+  return it != fingerprints.end() && stored.fingerprint == it->second;
 }
 
 std::string joined(const std::set<std::string>& values) {
@@ -32,8 +32,16 @@ std::string joined(const std::set<std::string>& values) {
 
 }  // namespace
 
+std::string recommend_metric(const std::vector<reports::ConfigResult>& rows) {
+  const bool any_skin = std::any_of(rows.begin(), rows.end(), [](const reports::ConfigResult& r) {
+    return r.quality.count("flip_skin") > 0;
+  });
+  return any_skin ? "flip_skin" : "flip_frame";
+}
+
 reports::SweepTable assemble_sweep_table(const SweepSpec& spec,
                                          const std::vector<SweepConfig>& configs,
+                                         const std::map<std::string, nlohmann::json>& fingerprints,
                                          const std::string& out_dir) {
   reports::SweepTable table;
   table.scene = spec.scene.label();
@@ -43,7 +51,7 @@ reports::SweepTable assemble_sweep_table(const SweepSpec& spec,
   for (const SweepConfig& c : configs) {
     std::optional<StoredConfig> s =
         read_stored_config(std::filesystem::path(out_dir) / config_json_path(c.id));
-    if (!s || !belongs_to(*s, c)) continue;
+    if (!s || !belongs_to(*s, c, fingerprints)) continue;
     // configs/<id>.json keeps every knob (the fingerprint); the table shows the knobs the
     // frame depends on, so a knob the technique ignores has no misleading value.
     keep_used_knobs(c, s->row.knobs);
@@ -57,7 +65,7 @@ reports::SweepTable assemble_sweep_table(const SweepSpec& spec,
   if (stored.empty()) return table;
 
   const std::optional<std::size_t> knee =
-      reports::pareto_knee(table.rows, kRecommendMetric, false, table.budget_ms);
+      reports::pareto_knee(table.rows, recommend_metric(table.rows), false, table.budget_ms);
   const StoredConfig& chosen = stored[knee.value_or(0)];
   table.heatmap = chosen.heatmap;
   table.sensitivity = chosen.sensitivity;

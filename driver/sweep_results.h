@@ -3,6 +3,8 @@
 // results.json and results.csv.
 #pragma once
 
+#include <map>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -11,14 +13,19 @@
 
 namespace skinsim::driver {
 
-// The quality metric that picks the recommended configuration (lower is better).
-inline constexpr const char* kRecommendMetric = "flip_skin";
+// The quality metric that picks the recommended configuration (lower is better): FLIP over
+// skin, or over the whole frame when no row has skin metrics (the scene shows no skin, and
+// the sweep said why).
+std::string recommend_metric(const std::vector<reports::ConfigResult>& rows);
 
-// Rows for the configurations of `configs` that are finished in `out_dir` (in expansion
-// order; unfinished ones are left out). The heat map, sensitivity and assumptions come from
-// the recommended row (reports::pareto_knee on flip_skin within the budget), else the first.
+// Rows for the configurations of `configs` that are finished in `out_dir` with the fingerprint
+// run_sweep expects (`fingerprints`, SweepRunSummary::fingerprints), in expansion order;
+// unfinished ones and another sweep's results stored under the same ids are left out. The heat map,
+// sensitivity and assumptions come from the recommended row (reports::pareto_knee on flip_skin
+// within the budget), else the first.
 reports::SweepTable assemble_sweep_table(const SweepSpec& spec,
                                          const std::vector<SweepConfig>& configs,
+                                         const std::map<std::string, nlohmann::json>& fingerprints,
                                          const std::string& out_dir);
 
 // out_dir/results.json and out_dir/results.csv, atomically.

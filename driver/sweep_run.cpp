@@ -1,24 +1,30 @@
 #include "driver/sweep_run.h"
 
+#include <fmt/format.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <set>
 
 #include "driver/frame_job.h"
 #include "driver/images.h"
+#include "driver/skin_diagnosis.h"
 #include "driver/sweep_config_result.h"
 #include "driver/sweep_progress.h"
 #include "driver/sweep_reference.h"
 #include "gpu_model/profile_loader.h"
 #include "pipeline/skin_pipeline.h"
 #include "quality/image.h"
-#include "reports/atomic_file.h"
+#include "io/atomic_file.h"
+#include "io/read_file.h"
+#include "util/fingerprint.h"
 
 namespace skinsim::driver {
 
@@ -53,16 +59,35 @@ bool cancelled(const SweepRunOptions& o) {
   return o.cancel && o.cancel->load();
 }
 
-bool finished_before(const fs::path& dir, const Job& job) {
+enum class Stored { kNone, kFinished, kForeign };
+
+// Whether this configuration is finished in `dir`, or its id holds another sweep's result.
+Stored stored_state(const fs::path& dir, const Job& job) {
   const std::optional<StoredConfig> stored =
       read_stored_config(dir / config_json_path(job.config->id));
-  return stored && stored->fingerprint == job.fingerprint &&
-         fs::exists(dir / config_frame_path(job.config->id)) &&
-         fs::exists(dir / config_error_path(job.config->id));
+  if (!stored) return Stored::kNone;
+  if (stored->fingerprint != job.fingerprint) return Stored::kForeign;
+  return fs::exists(dir / config_frame_path(job.config->id)) &&
+                 fs::exists(dir / config_error_path(job.config->id))
+             ? Stored::kFinished
+             : Stored::kNone;
+}
+
+// Why a row cannot be stored, or "": a NaN or infinite figure would be written as JSON null,
+// fail to read back, and so be recomputed on every resume without a word.
+std::string non_finite_figure(const reports::ConfigResult& row) {
+  std::vector<std::pair<std::string, double>> figures = {
+      {"frame_ms", row.frame_ms}, {"fps", row.fps}, {"dram_bytes", row.dram_bytes}};
+  for (const auto& [name, value] : row.quality) figures.emplace_back("quality." + name, value);
+  for (const auto& [name, value] : figures) {
+    if (!std::isfinite(value)) return fmt::format("{} is {} (not a finite number)", name, value);
+  }
+  return "";
 }
 
 // Renders, times and measures one configuration and writes its files; the JSON goes last, so
-// a configuration counts as finished only once all its files are in place.
+// a configuration counts as finished only once all its files are in place. Throws SweepError
+// when a figure is not a finite number.
 void compute(const fs::path& dir, const Job& job) {
   const std::string& id = job.config->id;
   // One host thread per frame: the configurations themselves run in parallel, and the
@@ -75,9 +100,10 @@ void compute(const fs::path& dir, const Job& job) {
   stored.fingerprint = job.fingerprint;
   stored.row =
       config_row(*job.config, frame, measured, config_frame_path(id), config_error_path(id));
+  if (const std::string bad = non_finite_figure(stored.row); !bad.empty()) throw SweepError(bad);
   stored.heatmap = pass_heatmap(frame, kHeatmapPass, id);
   add_sensitivity(frame, *job.device, stored);
-  reports::write_file_atomically((dir / config_json_path(id)).string(),
+  io::write_file_atomically((dir / config_json_path(id)).string(),
                                  to_json(stored).dump(1) + "\n");
 }
 
@@ -98,11 +124,18 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
   const Clock::time_point start = Clock::now();
   const fs::path dir(options.out_dir);
 
-  // Devices first: an unknown profile fails before any work or directory.
+  // Devices first: an unknown profile fails before any work or directory. A stored result
+  // made with other figures (an edited profile) is not this sweep's: the profile's bytes are
+  // part of the fingerprint.
   std::map<std::string, gpu_model::DeviceProfile> devices;
+  std::map<std::string, std::string> device_fingerprints;
   for (const SweepConfig& c : configs) {
     if (!devices.count(c.device)) {
-      devices.emplace(c.device, gpu_model::load_device_profile(c.device, options.data_dir));
+      const gpu_model::DeviceProfile& device =
+          devices.emplace(c.device, gpu_model::load_device_profile(c.device, options.data_dir))
+              .first->second;
+      device_fingerprints[c.device] = content_fingerprint(
+          io::read_regular_file(device.source_path, "device profile"));
     }
   }
   fs::create_directories(dir / "configs");
@@ -110,6 +143,7 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
   SweepRunSummary summary;
   summary.total = static_cast<int>(configs.size());
   std::vector<Job> jobs;
+  std::set<std::string> foreign;  // ids holding another sweep's result
   for (const SweepConfig& c : configs) {
     Job job;
     job.config = &c;
@@ -120,9 +154,13 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
                               static_cast<int>(job.device->display_height.value));
     job.resolved.validate();
     job.fingerprint = config_fingerprint(c, spec.scene, job.resolved.width, job.resolved.height);
-    if (finished_before(dir, job)) {
+    job.fingerprint["device_profile"] = device_fingerprints.at(c.device);
+    summary.fingerprints[c.id] = job.fingerprint;
+    const Stored state = stored_state(dir, job);
+    if (state == Stored::kFinished) {
       ++summary.resumed;
     } else {
+      if (state == Stored::kForeign) foreign.insert(c.id);
       jobs.push_back(std::move(job));
     }
   }
@@ -153,12 +191,19 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
                                   &rendered);
       });
       summary.references_rendered += rendered ? 1 : 0;
+      if (images.skin.count() == 0) {  // still rendered and measured, over the whole frame
+        summary.warnings.push_back(fmt::format(
+            "{}x{}: {} (skin metrics not available; configurations are compared by FLIP over "
+            "the frame)",
+            w, h, no_skin_reason(*s.scene, spec.scene.skin_materials)));
+      }
       it = references.emplace(stem, std::move(images)).first;
     }
     job.reference = &it->second;
   }
 
   std::mutex mutex;
+  std::map<std::size_t, std::string> failures;  // by job index: expansion order
   std::atomic<int> not_run{0};
   progress.start_configs();
   arena.execute([&] {
@@ -171,7 +216,15 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
               continue;
             }
             const Clock::time_point t0 = Clock::now();
-            compute(dir, jobs[i]);
+            try {
+              compute(dir, jobs[i]);
+            } catch (const UserError& e) {
+              // One configuration that cannot be measured (a figure that is not a finite
+              // number) is reported with its reason; the others still run.
+              const std::lock_guard lock(mutex);
+              failures[i] = e.what();
+              continue;
+            }
             progress.finished(jobs[i].config->id, seconds_since(t0));
             const std::lock_guard lock(mutex);
             summary.computed.push_back(jobs[i].config->id);
@@ -182,6 +235,9 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
   });
   progress.close();
   summary.not_run = not_run.load();
+  for (const auto& [i, reason] : failures) summary.failed.push_back({jobs[i].config->id, reason});
+  for (const std::string& id : summary.computed) foreign.erase(id);
+  summary.foreign_ignored = static_cast<int>(foreign.size());
   summary.cancelled = cancelled(options);
   summary.seconds = seconds_since(start);
   return summary;

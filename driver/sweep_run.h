@@ -8,6 +8,8 @@
 #include <atomic>
 #include <cstdio>
 #include <functional>
+#include <map>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -25,14 +27,30 @@ struct SweepRunOptions {
   std::function<void(const std::string& id)> on_finished;
 };
 
+// A configuration that ran but could not be measured (an error, or a figure that is not a
+// number); it has no row, and a later run tries it again.
+struct FailedConfig {
+  std::string id;
+  std::string reason;
+};
+
 struct SweepRunSummary {
   int total = 0;
   int resumed = 0;                    // already finished by an earlier run, skipped
   std::vector<std::string> computed;  // ids computed by this run, in finishing order
   int not_run = 0;                    // left unstarted because of cancellation
+  std::vector<FailedConfig> failed;   // in expansion order
   int references_rendered = 0;        // references rendered (not loaded from refs/)
   bool cancelled = false;
   double seconds = 0.0;  // wall time
+  // Per configuration id, the fingerprint (config_fingerprint) a stored result must have to
+  // be this sweep's: assemble_sweep_table shows only those.
+  std::map<std::string, nlohmann::json> fingerprints;
+  // Stored results in the directory under this sweep's ids but from a different sweep (another
+  // --set knob, scene or device) that this run did not replace: ignored, not shown.
+  int foreign_ignored = 0;
+  // Said once per reference, e.g. that it shows no skin (no skin metrics, and why).
+  std::vector<std::string> warnings;
 };
 
 // configs/<id>.json and the images, relative to the sweep directory.

@@ -116,20 +116,73 @@ void set_axis(SweepSpec& spec, const std::string& knob, const std::vector<std::s
   }
 }
 
-std::vector<SweepConfig> expand_sweep(const SweepSpec& spec) {
-  SweepConfig base;
-  base.device = "ipad4";
-  for (const FixedKnob& f : spec.fixed) {
-    require_knob(f.knob, f.origin);
-    set_knob(base, f.knob, canonical_value(f.knob, f.value, f.origin));
-  }
+namespace {
 
+// The knobs pipeline::knob_applies reads to decide whether another knob applies: the
+// technique, and the specular model (the LUT knobs need the KS LUT).
+bool decides_applicability(const std::string& knob) {
+  return knob == "technique" || knob == "specular";
+}
+
+// One value of each deciding axis, and which axes the configurations with those values use.
+struct Group {
+  std::vector<std::size_t> index;  // per axis: the deciding axes' value index, else 0
+  std::vector<bool> used;          // per axis
+};
+
+// The sweep with its values canonicalised and the deciding axes' combinations folded: a
+// configuration is a group plus one value of each used non-deciding axis.
+struct FoldedSweep {
+  SweepConfig base;
+  std::vector<std::vector<std::string>> values;  // canonical, per axis
+  std::vector<Group> groups;
+};
+
+std::string invalid_configuration(const std::vector<std::string>& label_parts,
+                                  const pipeline::ConfigError& e) {
+  return fmt::format("configuration '{}' is invalid: {}", label(label_parts), e.what());
+}
+
+// An axis value a group's technique does not use is never built, but is still checked with
+// that technique (scale 2 is wrong for wrap too), so a typo is not hidden by the folding.
+void validate_unused_values(const SweepSpec& spec,
+                            const std::vector<std::vector<std::string>>& values,
+                            const SweepConfig& group_config, const Group& g) {
+  std::vector<std::string> deciding_label;
+  for (std::size_t a = 0; a < values.size(); ++a) {
+    if (g.used[a] && decides_applicability(spec.axes[a].knob)) {
+      deciding_label.push_back(spec.axes[a].knob + " " + values[a][g.index[a]]);
+    }
+  }
+  for (std::size_t a = 0; a < values.size(); ++a) {
+    if (g.used[a]) continue;
+    for (const std::string& value : values[a]) {
+      SweepConfig c = group_config;
+      set_knob(c, spec.axes[a].knob, value);
+      try {
+        c.config.validate();
+      } catch (const pipeline::ConfigError& e) {
+        std::vector<std::string> parts = deciding_label;
+        parts.push_back(spec.axes[a].knob + " " + value);
+        throw SweepError(invalid_configuration(parts, e));
+      }
+    }
+  }
+}
+
+FoldedSweep fold_sweep(const SweepSpec& spec) {
+  FoldedSweep f;
+  f.base.device = "ipad4";
+  for (const FixedKnob& fixed : spec.fixed) {
+    require_knob(fixed.knob, fixed.origin);
+    set_knob(f.base, fixed.knob, canonical_value(fixed.knob, fixed.value, fixed.origin));
+  }
   // Canonical values per axis; a value given twice would make two identical configurations.
-  std::vector<std::vector<std::string>> values;
+  std::vector<std::vector<std::string>> deciding;  // the deciding axes' values, others one
   for (const SweepAxis& axis : spec.axes) {
     require_knob(axis.knob, axis.origin);
     if (axis.values.empty()) throw SweepError(axis.origin + ": no values given");
-    std::vector<std::string>& canon = values.emplace_back();
+    std::vector<std::string>& canon = f.values.emplace_back();
     for (const std::string& v : axis.values) {
       std::string c = canonical_value(axis.knob, v, axis.origin);
       if (std::find(canon.begin(), canon.end(), c) != canon.end()) {
@@ -137,53 +190,130 @@ std::vector<SweepConfig> expand_sweep(const SweepSpec& spec) {
       }
       canon.push_back(std::move(c));
     }
+    deciding.push_back(decides_applicability(axis.knob) ? canon
+                                                        : std::vector<std::string>{canon[0]});
   }
+  // Only the deciding axes are enumerated here (at most techniques x specular models).
+  std::set<std::vector<std::size_t>> seen;
+  std::vector<std::size_t> index(deciding.size(), 0);
+  do {
+    SweepConfig c = f.base;
+    for (std::size_t a = 0; a < deciding.size(); ++a) {
+      if (decides_applicability(spec.axes[a].knob))
+        set_knob(c, spec.axes[a].knob, deciding[a][index[a]]);
+    }
+    Group g{index, std::vector<bool>(index.size())};
+    // A deciding axis the technique does not use keeps its base value (then folds with the
+    // group of its first value); the other axes' use follows from that configuration.
+    for (std::size_t a = 0; a < deciding.size(); ++a) {
+      const std::string& knob = spec.axes[a].knob;
+      if (!decides_applicability(knob) || pipeline::knob_applies(c.config, knob)) continue;
+      set_knob(c, knob, base_value(f.base, knob));
+      g.index[a] = 0;
+    }
+    for (std::size_t a = 0; a < deciding.size(); ++a) {
+      const std::string& knob = spec.axes[a].knob;
+      g.used[a] = knob == "device" || pipeline::knob_applies(c.config, knob);
+    }
+    validate_unused_values(spec, f.values, c, g);
+    std::vector<std::size_t> key = g.index;
+    for (std::size_t a = 0; a < key.size(); ++a) {
+      if (!g.used[a]) key[a] = SIZE_MAX;  // unused: the base value, whatever the index
+    }
+    if (seen.insert(key).second) f.groups.push_back(std::move(g));
+  } while (advance(index, deciding));
+  return f;
+}
+
+// The product of the used non-deciding axes' sizes in one group, saturating at SIZE_MAX.
+std::size_t group_size(const FoldedSweep& f, const Group& g, const SweepSpec& spec) {
+  std::size_t n = 1;
+  for (std::size_t a = 0; a < f.values.size(); ++a) {
+    if (!g.used[a] || decides_applicability(spec.axes[a].knob)) continue;
+    if (__builtin_mul_overflow(n, f.values[a].size(), &n)) return SIZE_MAX;
+  }
+  return n;
+}
+
+std::size_t count_folded(const FoldedSweep& f, const SweepSpec& spec) {
+  std::size_t total = 0;
+  for (const Group& g : f.groups) {
+    if (__builtin_add_overflow(total, group_size(f, g, spec), &total)) return SIZE_MAX;
+  }
+  return total;
+}
+
+SweepConfig make_config(const FoldedSweep& f, const SweepSpec& spec, const Group& g,
+                        const std::vector<std::size_t>& index) {
+  SweepConfig c = f.base;
+  std::vector<std::string> id_parts, label_parts;
+  for (std::size_t a = 0; a < f.values.size(); ++a) {
+    const std::string& knob = spec.axes[a].knob;
+    const std::string value = g.used[a] ? f.values[a][index[a]] : base_value(f.base, knob);
+    set_knob(c, knob, value);
+    id_parts.push_back(id_part(knob, value));
+    if (g.used[a]) {
+      c.swept.emplace_back(knob, value);
+      label_parts.push_back(knob + " " + value);
+    }
+  }
+  try {
+    c.config.validate();
+  } catch (const pipeline::ConfigError& e) {
+    throw SweepError(invalid_configuration(label_parts, e));
+  }
+  c.id = id_parts.empty() ? "default" : fmt::format("{}", fmt::join(id_parts, "_"));
+  c.label = label(label_parts);
+  return c;
+}
+
+}  // namespace
+
+std::size_t count_sweep_configs(const SweepSpec& spec) {
+  return count_folded(fold_sweep(spec), spec);
+}
+
+std::vector<SweepConfig> expand_sweep(const SweepSpec& spec, std::size_t max_configs) {
+  const FoldedSweep f = fold_sweep(spec);
+  const std::size_t count = count_folded(f, spec);
+  if (count > max_configs) {
+    throw SweepError(
+        fmt::format("the sweep has {} configurations, over the limit of {} (each takes seconds and "
+                    "megabytes): narrow its axes, or pass --max-configs {} to run it anyway",
+                    count == SIZE_MAX ? std::string("more than 2^64") : std::to_string(count),
+                    max_configs, count));
+  }
+  // Every configuration as its value indices (an unused axis at 0: where the unfolded
+  // product first reaches it), in the unfolded product's order: the first axis slowest.
+  std::vector<std::pair<std::vector<std::size_t>, const Group*>> order;
+  order.reserve(count);
+  for (const Group& g : f.groups) {
+    std::vector<std::vector<std::string>> ranges(f.values.size(), std::vector<std::string>{""});
+    for (std::size_t a = 0; a < f.values.size(); ++a) {
+      if (g.used[a] && !decides_applicability(spec.axes[a].knob)) ranges[a] = f.values[a];
+    }
+    std::vector<std::size_t> index(f.values.size(), 0);
+    do {
+      std::vector<std::size_t> full = index;
+      for (std::size_t a = 0; a < full.size(); ++a) {
+        if (decides_applicability(spec.axes[a].knob)) full[a] = g.index[a];
+      }
+      order.emplace_back(std::move(full), &g);
+    } while (advance(index, ranges));
+  }
+  std::stable_sort(order.begin(), order.end(),
+                   [](const auto& x, const auto& y) { return x.first < y.first; });
 
   std::vector<SweepConfig> configs;
   std::set<std::string> ids;
-  std::set<std::vector<std::string>> combinations;
-  std::vector<std::size_t> index(values.size(), 0);
-  do {
-    SweepConfig c = base;
-    std::vector<std::string> full_label;
-    for (std::size_t a = 0; a < values.size(); ++a) {
-      const std::string& knob = spec.axes[a].knob;
-      set_knob(c, knob, values[a][index[a]]);
-      full_label.push_back(knob + " " + values[a][index[a]]);
-    }
-    try {  // every value is checked, used by this configuration's technique or not
-      c.config.validate();
-    } catch (const pipeline::ConfigError& e) {
-      throw SweepError(
-          fmt::format("configuration '{}' is invalid: {}", label(full_label), e.what()));
-    }
-    // An axis this configuration's technique does not use keeps the base value: the
-    // combinations that differ only there render the same frame, so only the first runs.
-    // The id still names every axis (the same id and fingerprint as before axes were
-    // technique-aware, so earlier sweep directories resume); the label names what applies.
-    std::vector<std::string> combination, id_parts, label_parts;
-    for (std::size_t a = 0; a < values.size(); ++a) {
-      const std::string& knob = spec.axes[a].knob;
-      const bool used = knob == "device" || pipeline::knob_applies(c.config, knob);
-      const std::string value = used ? values[a][index[a]] : base_value(base, knob);
-      set_knob(c, knob, value);
-      combination.push_back(value);
-      id_parts.push_back(id_part(knob, value));
-      if (used) {
-        c.swept.emplace_back(knob, value);
-        label_parts.push_back(knob + " " + value);
-      }
-    }
-    if (!combinations.insert(combination).second) continue;
-    const std::string stem =
-        id_parts.empty() ? "default" : fmt::format("{}", fmt::join(id_parts, "_"));
-    c.id = stem;
+  for (const auto& [index, group] : order) {
+    SweepConfig c = make_config(f, spec, *group, index);
     // Different values can sanitise to one id (two profile paths with one stem): number them.
+    const std::string stem = c.id;
     for (int n = 2; ids.count(c.id) != 0; ++n) c.id = fmt::format("{}-{}", stem, n);
     ids.insert(c.id);
-    c.label = label(label_parts);
     configs.push_back(std::move(c));
-  } while (advance(index, values));
+  }
   return configs;
 }
 

@@ -2,6 +2,7 @@
 // fixed, and the scene; expanded into configurations with short, stable, readable ids.
 #pragma once
 
+#include <cstddef>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -11,14 +12,15 @@
 
 #include "driver/scene_source.h"
 #include "pipeline/config.h"
+#include "util/user_error.h"
 
 namespace skinsim::driver {
 
 // Bad sweep input (an unknown knob, a bad value, a broken sweep file); the message names the
 // option or file, line and key at fault.
-class SweepError : public std::runtime_error {
+class SweepError : public UserError {
  public:
-  using std::runtime_error::runtime_error;
+  using UserError::UserError;
 };
 
 // One swept knob: every value is tried with every value of the other axes, for each
@@ -65,15 +67,26 @@ struct SweepConfig {
   std::vector<std::pair<std::string, std::string>> swept;
 };
 
+// Sweeps larger than this are refused unless the user raises the limit (`--max-configs`):
+// each configuration renders frames and writes megabytes, so 1.6 million would run for hours.
+inline constexpr std::size_t kDefaultMaxConfigs = 10000;
+
 // Every combination of the axes' values, in axis order (last axis fastest), except that an
 // axis a combination's technique does not use (pipeline::knob_applies: scale for wrap, lut
 // with an analytic specular model) is not expanded for it: it keeps its base value (fixed,
-// else the default), and the combinations that then repeat one run only once. The id still
-// names every axis's value, the label only those used. Values are validated and
-// canonicalised through pipeline::set_config_field/get_config_field ("1.0" -> "1"), and every
-// combination through PipelineConfig::validate(). Throws SweepError naming the axis origin
-// and value, or a duplicate value on one axis.
-std::vector<SweepConfig> expand_sweep(const SweepSpec& spec);
+// else the default), and the combinations that then repeat one run only once. Only the
+// technique and specular axes are enumerated to find out which axes apply, so the count is
+// known before anything is built. The id still names every axis's value, the label only those
+// used. Values are validated and canonicalised through pipeline::set_config_field/
+// get_config_field ("1.0" -> "1"), and every configuration through PipelineConfig::validate().
+// Throws SweepError naming the axis origin and value, a duplicate value on one axis, or more
+// than `max_configs` configurations (naming the count, the limit and --max-configs).
+std::vector<SweepConfig> expand_sweep(const SweepSpec& spec,
+                                      std::size_t max_configs = kDefaultMaxConfigs);
+
+// How many configurations expand_sweep would make (saturating at SIZE_MAX), without making
+// them: milliseconds even for a product of billions. Validates every value as expand_sweep.
+std::size_t count_sweep_configs(const SweepSpec& spec);
 
 // Everything a finished configuration's results depend on that the sweep controls: every
 // pipeline knob (resolution resolved to `width`x`height`), the device and the scene options.

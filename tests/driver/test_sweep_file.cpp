@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "driver/sweep_file.h"
+#include "util/user_error.h"
 
 namespace skinsim::driver {
 namespace {
@@ -52,7 +53,7 @@ TEST(SweepFile, ErrorsNameFileLineAndKey) {
   expect_error("[axes]\nscale = [1]\n[fixed]\ngamma = \"linear\"\n",
                "s.toml:4: fixed.gamma: bad value 'linear'");
   expect_error("[axes]\nscale = [1]\n[scene]\nhead_triangles = 10\n",
-               "s.toml:4: scene.head_triangles: must be in [1000, 2000000]");
+               "s.toml:4: scene.head_triangles: 10 is out of range: must be in [1000, 2000000]");
   expect_error("[axes]\nscale = [1]\n[scene]\ncamera = 1\n", "s.toml:4: scene.camera: unknown key");
   expect_error("[axez]\nscale = [1]\n", "s.toml:1: axez: unknown table");
   expect_error("[fixed]\nscale = 1\n", "s.toml: no [axes] given");
@@ -60,13 +61,64 @@ TEST(SweepFile, ErrorsNameFileLineAndKey) {
                "s.toml:2: report.budget_ms: must be > 0");
 }
 
+// Hostile sweep files: each must end as a SweepError naming the file, line and key at fault.
+TEST(SweepFile, AdversarialFilesAreRefusedNamingFileLineAndKey) {
+  const struct {
+    const char* what;
+    std::string text;
+    const char* fragment;
+  } cases[] = {
+      {"wrong type", "[axes]\nscale = {a = 1}\n",
+       "s.toml:2: axes.scale: expected a string or a number"},
+      {"table as a scalar", "axes = 3\n", "s.toml:1: axes: expected a table"},
+      {"unknown key", "[axes]\nscale = [1]\n[report]\nbudget = 3\n",
+       "s.toml:4: report.budget: unknown key"},
+      {"empty axis", "[axes]\nscale = []\n", "s.toml:2: axes.scale: no values given"},
+      {"duplicate value", "[axes]\nscale = [0.5, 0.50]\n",
+       "s.toml:2: axes.scale: value '0.5' given twice"},
+      {"huge head_triangles", "[axes]\nscale = [1]\n[scene]\nhead_triangles = 4294968296\n",
+       "s.toml:4: scene.head_triangles: 4294968296 is out of range: must be in [1000, 2000000]"},
+      {"negative texture_size",
+       "[axes]\nscale = [1]\n[scene]\ntexture_size = -9223372036854775807\n",
+       "s.toml:4: scene.texture_size: -9223372036854775807 is out of range"},
+      {"huge integer knob", "[axes]\nblur_iterations = [4294967297]\n",
+       "s.toml:2: axes.blur_iterations: bad value"},
+      {"nan budget", "[axes]\nscale = [1]\n[report]\nbudget_ms = nan\n",
+       "s.toml:4: report.budget_ms: must be > 0"},
+      {"inf units", "[axes]\nscale = [1]\n[scene]\nunits_per_mm = -inf\n",
+       "s.toml:4: scene.units_per_mm: must be > 0"},
+      {"empty device", "[axes]\nscale = [1]\n[fixed]\ndevice = \"\"\n",
+       "s.toml:4: fixed.device: empty device name"},
+      {"empty knob value", "[axes]\nlut = [\"\"]\n", "s.toml:2: axes.lut: bad value ''"},
+      {"non-UTF-8", "[axes]\nscale = [\"\xff\xfe\"]\n", "s.toml:2:"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.what);
+    expect_error(c.text, c.fragment);
+  }
+}
+
+TEST(SweepFile, RelativeDevicePathsAreRelativeToTheFile) {
+  const SweepSpec spec = parse_sweep_text(
+      "[axes]\ndevice = [\"ipad4\", \"profiles/mine.toml\", \"/abs/other.toml\"]\n", "my.toml",
+      "/data/sweeps");
+  ASSERT_EQ(spec.axes.size(), 1u);
+  EXPECT_EQ(
+      spec.axes[0].values,
+      (std::vector<std::string>{"ipad4", "/data/sweeps/profiles/mine.toml", "/abs/other.toml"}));
+  const SweepSpec fixed =
+      parse_sweep_text("[axes]\nscale = [1]\n[fixed]\ndevice = \"d.toml\"\n", "my.toml", "/data");
+  EXPECT_EQ(fixed.fixed.back().value, "/data/d.toml");
+}
+
 TEST(SweepFile, MissingFileIsNamed) {
   try {
     parse_sweep_file("/nonexistent/sweep.toml");
     FAIL();
-  } catch (const SweepError& e) {
-    EXPECT_NE(std::string(e.what()).find("/nonexistent/sweep.toml: cannot open"),
-              std::string::npos);
+  } catch (const UserError& e) {
+    EXPECT_NE(std::string(e.what()).find("sweep file /nonexistent/sweep.toml: No such file"),
+              std::string::npos)
+        << e.what();
   }
 }
 

@@ -3,11 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
 
+#include "driver/frame_quality.h"
+#include "driver/skin_diagnosis.h"
 #include "driver/sweep_results.h"
 #include "driver/sweep_run.h"
 #include "driver/sweep_spec.h"
@@ -56,7 +59,7 @@ reports::SweepTable run_and_write(const SweepSpec& spec, const SweepRunOptions& 
   const std::vector<SweepConfig> configs = expand_sweep(spec);
   const SweepRunSummary s = run_sweep(spec, configs, o);
   if (summary) *summary = s;
-  reports::SweepTable table = assemble_sweep_table(spec, configs, o.out_dir);
+  reports::SweepTable table = assemble_sweep_table(spec, configs, s.fingerprints, o.out_dir);
   write_sweep_data(table, o.out_dir);
   return table;
 }
@@ -195,6 +198,105 @@ TEST(SweepRun, CancellationLeavesOnlyCompleteFiles) {
   EXPECT_EQ(resumed.resumed, 1);
   EXPECT_EQ(resumed.computed.size(), 3u);
   EXPECT_FALSE(resumed.cancelled);
+}
+
+TEST(SweepRun, AnInterruptedSweepShowsOnlyItsOwnRows) {
+  // Two sweeps into one directory that differ only in a --set knob: the same ids, another
+  // fingerprint. The second is interrupted after its first configuration.
+  const fs::path dir = out_dir("foreign");
+  const SweepSpec first = tiny_spec();
+  run_and_write(first, options(dir, 1));
+  SweepSpec second = tiny_spec();
+  second.fixed.push_back({"blur_iterations", "3", "--set blur_iterations=3"});
+  std::atomic<bool> cancel{false};
+  SweepRunOptions o = options(dir, 1);
+  o.cancel = &cancel;
+  o.on_finished = [&](const std::string&) { cancel = true; };
+  SweepRunSummary summary;
+  const reports::SweepTable table = run_and_write(second, o, &summary);
+  EXPECT_TRUE(summary.cancelled);
+  EXPECT_EQ(summary.resumed, 0);  // the first sweep's results are not this one's
+  ASSERT_EQ(summary.computed.size(), 1u);
+  EXPECT_EQ(summary.foreign_ignored, 1);  // the other id still holds the first sweep's result
+  ASSERT_EQ(table.rows.size(), 1u);
+  EXPECT_EQ(table.rows[0].id, summary.computed[0]);
+  EXPECT_EQ(reports::knob_value(table.rows[0], "blur_iterations"), "3");
+}
+
+// A device profile edited between two runs of the same sweep: the stored results were made
+// with other figures, so they are recomputed rather than resumed.
+TEST(SweepRun, AnEditedDeviceProfileIsAnotherSweep) {
+  const fs::path dir = out_dir("edited_profile");
+  fs::create_directories(dir);
+  const fs::path profile = dir / "mine.toml";
+  fs::copy_file(fs::path(SKINSIM_TEST_DATA_DIR) / "devices" / "ipad4.toml", profile);
+  SweepSpec spec = tiny_spec();
+  spec.fixed.push_back({"device", profile.string(), "test"});
+  const fs::path results = dir / "sweep";
+  run_and_write(spec, options(results, 1));
+
+  SweepRunSummary unchanged;
+  run_and_write(spec, options(results, 1), &unchanged);
+  EXPECT_EQ(unchanged.resumed, 2);
+
+  std::ofstream(profile, std::ios::app) << "\n# an edit: another profile file\n";
+  SweepRunSummary edited;
+  run_and_write(spec, options(results, 1), &edited);
+  EXPECT_EQ(edited.resumed, 0);
+  EXPECT_EQ(edited.computed.size(), 2u);
+}
+
+TEST(FrameQuality, AReferenceWithoutSkinGivesFrameMetricsOnly) {
+  ReferenceImages reference;
+  reference.image.width = reference.skin.width = 4;
+  reference.image.height = reference.skin.height = 2;
+  reference.image.rgb.assign(8, glm::vec3(0.5f));
+  reference.skin.values.assign(8, 0);  // no skin pixel
+  const sim::RenderTarget frame("frame", 4, 2, sim::TexelFormat::kRGBA8);
+  const FrameQuality q = evaluate_quality(frame, reference);
+  EXPECT_FALSE(q.has_skin_metrics());
+  EXPECT_EQ(q.metrics.count("psnr_skin") + q.metrics.count("ssim_skin"), 0u);
+  for (const char* m : {"psnr_frame", "ssim_frame", "flip_frame"}) {
+    ASSERT_EQ(q.metrics.count(m), 1u) << m;
+    EXPECT_TRUE(std::isfinite(q.metrics.at(m))) << m;
+  }
+  EXPECT_GT(q.metrics.at("flip_frame"), 0.0);  // a black frame against mid grey
+  EXPECT_EQ(q.error_map.width, 4);
+}
+
+// Which rule found no skin, and what to pass, for each way a frame can end up without skin.
+TEST(SkinDiagnosis, NamesTheRuleThatFoundNoSkin) {
+  scene::Scene scene;
+  scene.materials.resize(2);
+  scene.materials[0].name = "Face";
+  scene.materials[1].name = "Hair";
+  const struct {
+    const char* what;
+    std::vector<std::string> skin_materials;
+    bool face_is_skin;
+    std::string expected;
+  } cases[] = {
+      {"mistyped name",
+       {"Face", "Fcae"},
+       true,
+       "--skin-materials Fcae match no material of the scene (its materials: Face, Hair)"},
+      {"no rule marks skin",
+       {},
+       false,
+       "no material is skin by its extras.skinsim.kind or by a name containing \"skin\" (its "
+       "materials: Face, Hair); pass --skin-materials"},
+      {"skin out of view",
+       {"Face"},
+       true,
+       "the skin materials (Face) are not visible from the camera"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.what);
+    scene.materials[0].kind =
+        c.face_is_skin ? scene::MaterialKind::kSkin : scene::MaterialKind::kOther;
+    const std::string reason = no_skin_reason(scene, c.skin_materials);
+    EXPECT_NE(reason.find(c.expected), std::string::npos) << reason;
+  }
 }
 
 TEST(SweepRun, ResultsDoNotDependOnThreadCount) {

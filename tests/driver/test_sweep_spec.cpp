@@ -1,6 +1,8 @@
 // Sweep expansion: combinations, order, canonical values, ids, validation errors.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <map>
 #include <set>
 
@@ -137,6 +139,54 @@ TEST(SweepSpec, UnusedAxisValuesAreStillValidated) {
   } catch (const SweepError& e) {
     EXPECT_NE(std::string(e.what()).find("technique wrap, scale 2"), std::string::npos) << e.what();
   }
+}
+
+// `count` values of a float knob: first, first + step, ...
+std::vector<std::string> float_values(int count, double first, double step) {
+  std::vector<std::string> values;
+  for (int i = 0; i < count; ++i) values.push_back(fmt::format("{}", first + step * i));
+  return values;
+}
+
+TEST(SweepSpec, AHugeProductThatFoldsToTwoIsCountedWithoutEnumerating) {
+  SweepSpec spec;
+  set_axis(spec, "technique", {"lod", "ssss"}, "--techniques");  // use none of the axes below
+  set_axis(spec, "scale", float_values(1000, 0.001, 0.001), "--scales");
+  set_axis(spec, "normal_offset_mm", float_values(1000, 0.0, 0.01), "axes.normal_offset_mm");
+  set_axis(spec, "blur_iterations", {"1", "2", "3", "4", "5", "6", "7", "8"}, "--blur-iterations");
+  set_axis(spec, "lod_distance_m", float_values(12, 1.0, 1.0), "axes.lod_distance_m");
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_EQ(count_sweep_configs(spec), 2u);  // of 2 x 1000 x 1000 x 8 x 12 = 192 million
+  const std::vector<SweepConfig> configs = expand_sweep(spec);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ASSERT_EQ(configs.size(), 2u);
+  EXPECT_EQ(configs[0].label, "technique lod");
+  EXPECT_EQ(configs[1].label, "technique ssss");
+  EXPECT_LT(seconds, 2.0);
+}
+
+TEST(SweepSpec, ASweepOverTheLimitIsRefusedNamingCountLimitAndOption) {
+  SweepSpec spec;
+  set_axis(spec, "technique", {"mobile"}, "--techniques");
+  set_axis(spec, "scale", float_values(1000, 0.001, 0.001), "--scales");
+  set_axis(spec, "normal_offset_mm", float_values(200, 0.0, 0.01), "axes.normal_offset_mm");
+  set_axis(spec, "blur_iterations", {"1", "2", "3", "4", "5", "6", "7", "8"}, "--blur-iterations");
+  EXPECT_EQ(count_sweep_configs(spec), 1600000u);
+  try {
+    expand_sweep(spec);
+    FAIL() << "1.6 million configurations accepted";
+  } catch (const SweepError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("1600000 configurations"), std::string::npos) << m;
+    EXPECT_NE(m.find("limit of 10000"), std::string::npos) << m;
+    EXPECT_NE(m.find("--max-configs 1600000"), std::string::npos) << m;
+  }
+  // Raising the limit is what --max-configs does; a small sweep passes under a small limit.
+  SweepSpec small;
+  set_axis(small, "scale", {"1", "0.5"}, "--scales");
+  EXPECT_EQ(expand_sweep(small, 2).size(), 2u);
+  EXPECT_THROW(expand_sweep(small, 1), SweepError);
 }
 
 TEST(SweepSpec, RowsKeepTheKnobsTheFrameUses) {
