@@ -5,11 +5,33 @@
 
 #include <cstdlib>
 
+#include "util/parse_number.h"
+
 namespace skinsim::app {
 
 std::string default_data_dir() {
   if (const char* env = std::getenv("SKINSIM_DATA_DIR"); env && *env) return env;
   return SKINSIM_DEFAULT_DATA_DIR;
+}
+
+CLI::Validator integer_in(int lo, int hi) {
+  return CLI::Validator(
+      [lo, hi](std::string& text) -> std::string {
+        const auto v = parse_integer<long long>(text);
+        if (v && *v >= lo && *v <= hi) return "";
+        return fmt::format("expected a decimal integer in [{}, {}], got '{}'", lo, hi, text);
+      },
+      fmt::format("INT in [{} - {}]", lo, hi));
+}
+
+CLI::Validator positive_real(double max) {
+  return CLI::Validator(
+      [max](std::string& text) -> std::string {
+        const auto v = parse_real<double>(text);
+        if (v && *v > 0.0 && *v <= max) return "";
+        return fmt::format("expected a decimal number in (0, {:g}], got '{}'", max, text);
+      },
+      fmt::format("NUMBER in (0, {:g}]", max));
 }
 
 void add_device_options(CLI::App& cmd, DeviceOptions& o) {
@@ -20,7 +42,7 @@ void add_device_options(CLI::App& cmd, DeviceOptions& o) {
                  "Directory holding devices/*.toml (default: $SKINSIM_DATA_DIR or the source tree's data/)");
   cmd.add_option("--threads", o.threads,
                  "Host worker threads; 0 = all cores, 1 = synchronous (results are identical)")
-      ->check(CLI::Range(0, 256))
+      ->check(integer_in(0, 256))
       ->capture_default_str();
 }
 
@@ -29,10 +51,10 @@ void add_scene_options(CLI::App& cmd, driver::SceneSource& s) {
                  "glTF 2.0 file (.gltf/.glb), or 'builtin' for the procedural head (default)");
   cmd.add_option("--head-triangles", s.head_triangles,
                  "Triangles of the built-in head mesh")
-      ->check(CLI::Range(1000, 2000000))
+      ->check(integer_in(1000, 2000000))
       ->capture_default_str();
   cmd.add_option("--texture-size", s.texture_size, "Built-in skin texture edge in texels")
-      ->check(CLI::Range(16, 4096))
+      ->check(integer_in(16, 4096))
       ->capture_default_str();
   cmd.add_option("--skin-materials", s.skin_materials,
                  "Material names to treat as skin ('all' = every material); default rule: "
@@ -40,7 +62,7 @@ void add_scene_options(CLI::App& cmd, driver::SceneSource& s) {
       ->delimiter(',');
   cmd.add_option("--units-per-mm", s.units_per_mm,
                  "World units per millimetre of the scene (default: glTF metres, 0.001)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_real(driver::kMaxUnitsPerMm));
 }
 
 namespace {
@@ -48,7 +70,14 @@ namespace {
 void knob(CLI::App& cmd, pipeline::PipelineConfig& config, const std::string& flag,
           const std::string& key, const std::string& help) {
   cmd.add_option_function<std::string>(
-         flag, [&config, key](const std::string& v) { pipeline::set_config_field(config, key, v); },
+         flag,
+         [&config, flag, key](const std::string& v) {
+           try {
+             pipeline::set_config_field(config, key, v);
+           } catch (const pipeline::ConfigError& e) {  // name the option the user typed
+             throw pipeline::ConfigError(fmt::format("{}: {}", flag, e.what()));
+           }
+         },
          help)
       ->default_str(pipeline::get_config_field(config, key));
 }

@@ -21,6 +21,11 @@ void add_scene_options(CLI::App& cmd, driver::SceneSource& source);
 // the CLI, sweep files and budgets validate identically.
 void add_pipeline_options(CLI::App& cmd, pipeline::PipelineConfig& config);
 
+// Validators for numeric options. CLI11 alone accepts "0x10", " 1" and "nan"; these accept
+// only what skinsim::parse_integer / parse_real accept, within range.
+CLI::Validator integer_in(int lo, int hi);
+CLI::Validator positive_real(double max);
+
 // The shipped data directory: $SKINSIM_DATA_DIR, else the source tree's data/.
 std::string default_data_dir();
 

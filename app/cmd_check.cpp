@@ -15,7 +15,8 @@
 #include "budget/check.h"
 #include "budget/check_table.h"
 #include "budget/junit.h"
-#include "reports/atomic_file.h"
+#include "io/atomic_file.h"
+#include "io/temp_files.h"
 
 namespace skinsim::app {
 
@@ -40,7 +41,7 @@ void add_common_options(CLI::App& cmd, BudgetOptions& o) {
                  "tree's data/)");
   cmd.add_option("--threads", o.threads,
                  "Host worker threads; 0 = all cores (results are identical for any count)")
-      ->check(CLI::Range(0, 256))
+      ->check(integer_in(0, 256))
       ->capture_default_str();
 }
 
@@ -71,7 +72,8 @@ int check(const BudgetOptions& o) {
   }
   fmt::print("{}", budget::format_check_table(report));
   if (!o.junit.empty()) {
-    reports::write_file_atomically(o.junit, budget::junit_xml(report, file.path.string()));
+    io::remove_stale_temporaries(std::filesystem::path(o.junit).parent_path());
+    io::write_file_atomically(o.junit, budget::junit_xml(report, file.path.string()));
     fmt::print("wrote {}\n", o.junit);
   }
   return report.passed() ? 0 : 1;
@@ -84,6 +86,7 @@ int record(const BudgetOptions& o) {
         "{}: a baseline already exists; pass --update to replace it", file.baseline_path.string()));
   }
   const budget::Baseline baseline = budget::record_baseline(file, data_dir(o), o.threads);
+  io::remove_stale_temporaries(file.baseline_path.parent_path());
   budget::save_baseline(baseline, file.baseline_path);
   fmt::print("recorded the baseline of {} budgets with skinsim {} in {}\n", baseline.budgets.size(),
              baseline.skinsim_version, file.baseline_path.string());

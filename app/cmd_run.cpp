@@ -11,6 +11,7 @@
 #include "driver/frame_job.h"
 #include "driver/images.h"
 #include "driver/result_json.h"
+#include "driver/skin_diagnosis.h"
 #include "gpu_model/profile_loader.h"
 #include "gpu_model/sensitivity.h"
 #include "gpu_model/timing_json.h"
@@ -19,7 +20,8 @@
 #include "pipeline/brdf_lut_texture.h"
 #include "pipeline/technique.h"
 #include "quality/json_value.h"
-#include "reports/atomic_file.h"
+#include "io/atomic_file.h"
+#include "io/run_directory.h"
 
 namespace skinsim::app {
 
@@ -42,14 +44,24 @@ int run(const RunOptions& o) {
       pipeline::render_size(config, static_cast<int>(device.display_width.value),
                             static_cast<int>(device.display_height.value));
   config.validate();
+  // Checked before any work, so a bad --out fails fast; swapped in only if the run succeeds.
+  io::RunDirectory run_directory(o.out);
 
+  // Printed as they arise and kept for result.json's "warnings".
+  std::vector<std::string> warnings;
+  const auto warn = [&warnings](const std::string& message) {
+    fmt::print(stderr, "skinsim run: warning: {}\n", message);
+    warnings.push_back(message);
+  };
+  driver::SceneSource source = o.scene;
+  source.warn = warn;
   const scene::Scene scene =
-      driver::load_scene(o.scene, static_cast<float>(config.width) / static_cast<float>(config.height));
+      driver::load_scene(source, static_cast<float>(config.width) / static_cast<float>(config.height));
   const pipeline::GpuScene gpu_scene(scene);
   const driver::FrameResult result = driver::run_frame(gpu_scene, config, device, o.device.threads);
+  if (!result.output.lod_notice.empty()) warn(result.output.lod_notice);
 
-  const std::filesystem::path out(o.out);
-  std::filesystem::create_directories(out);
+  const std::filesystem::path& out = run_directory.staging();
   std::vector<std::string> written = {"frame.png"};
   driver::write_png(result.output.frame, out / "frame.png");
   for (const pipeline::NamedTarget& t : result.output.intermediates) {
@@ -73,9 +85,19 @@ int run(const RunOptions& o) {
     written.insert(written.end(), {"reference.png", "error_flip.png"});
     nlohmann::json metrics = nlohmann::json::object();
     for (const auto& [name, value] : q.metrics) metrics[name] = quality::metric_to_json(value);
+    if (q.has_skin_metrics()) {
+      fmt::print("quality vs reference: skin PSNR {:.2f} dB, SSIM {:.4f}, FLIP {:.4f}\n",
+                 q.metrics.at("psnr_skin"), q.metrics.at("ssim_skin"), q.metrics.at("flip_skin"));
+    } else {
+      // The frame is still rendered and measured; only the skin metrics do not exist.
+      const std::string why = driver::no_skin_reason(scene, o.scene.skin_materials);
+      warn(why + " (skin metrics not available)");
+      metrics["skin_metrics_unavailable"] = why;
+      fmt::print("quality vs reference: skin metrics not available; frame PSNR {:.2f} dB, SSIM "
+                 "{:.4f}, FLIP {:.4f}\n",
+                 q.metrics.at("psnr_frame"), q.metrics.at("ssim_frame"), q.metrics.at("flip_frame"));
+    }
     json["quality"] = metrics;
-    fmt::print("quality vs reference: skin PSNR {:.2f} dB, SSIM {:.4f}, FLIP {:.4f}\n",
-               q.metrics.at("psnr_skin"), q.metrics.at("ssim_skin"), q.metrics.at("flip_skin"));
   }
   if (o.sensitivity) {
     const auto recount = [&](const gpu_model::DeviceProfile& varied) {
@@ -85,7 +107,12 @@ int run(const RunOptions& o) {
     json["sensitivity"] = gpu_model::to_json(rows);
     fmt::print("\n{}", gpu_model::format_sensitivity_table(rows));
   }
-  reports::write_file_atomically((out / "result.json").string(), json.dump(2) + "\n");
+  json["warnings"] = warnings;
+  // Paths and names come from the user as raw bytes; JSON must be UTF-8, so invalid bytes are
+  // written as U+FFFD rather than throwing after the frame has been rendered.
+  io::write_file_atomically(
+      (out / "result.json").string(),
+      json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
 
   // The technique's own knobs, as set: the ones its frame depends on.
   std::vector<std::string> knobs;
@@ -99,7 +126,8 @@ int run(const RunOptions& o) {
              result.output.lod ? ", LOD shader" : "");
   fmt::print("{}", gpu_model::format_frame_table(result.timing));
   written.push_back("result.json");
-  fmt::print("wrote {}/{{{}}}\n", out.string(), fmt::join(written, ", "));
+  run_directory.commit();
+  fmt::print("wrote {}/{{{}}}\n", o.out, fmt::join(written, ", "));
   return 0;
 }
 

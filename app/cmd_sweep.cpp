@@ -7,11 +7,13 @@
 
 #include <atomic>
 #include <csignal>
+#include <cstdint>
 #include <filesystem>
 
 #include "app/cli_options.h"
 #include "app/commands.h"
 #include "driver/sweep_file.h"
+#include "io/temp_files.h"
 #include "driver/sweep_report.h"
 #include "driver/sweep_results.h"
 #include "driver/sweep_run.h"
@@ -51,7 +53,16 @@ struct SweepOptions {
   bool charts = true;
   bool require_charts = false;
   double budget_ms = 0.0;  // 0 = the sweep file's or 33.3
+  std::size_t max_configs = driver::kDefaultMaxConfigs;
 };
+
+// `--out ""` would write into the current directory, and a file there cannot hold results.
+void require_out_dir(const std::string& out) {
+  if (out.empty()) throw driver::SweepError("--out: empty path: give the sweep directory");
+  if (std::filesystem::exists(out) && !std::filesystem::is_directory(out)) {
+    throw driver::SweepError(fmt::format("--out {}: exists and is not a directory", out));
+  }
+}
 
 driver::SweepSpec build_spec(const SweepOptions& o, const CLI::App& cmd) {
   driver::SweepSpec spec =
@@ -88,42 +99,63 @@ driver::SweepSpec build_spec(const SweepOptions& o, const CLI::App& cmd) {
 }
 
 void print_recommendation(const reports::SweepTable& table) {
-  const auto knee =
-      reports::pareto_knee(table.rows, driver::kRecommendMetric, false, table.budget_ms);
+  const std::string metric = driver::recommend_metric(table.rows);
+  const auto knee = reports::pareto_knee(table.rows, metric, false, table.budget_ms);
   if (!knee) {
     fmt::print("no configuration fits the {:.1f} ms budget\n", table.budget_ms);
     return;
   }
   const reports::ConfigResult& r = table.rows[*knee];
-  fmt::print("recommended: {} ({}): {:.2f} ms ({:.1f} fps), FLIP over skin {:.4f}\n", r.id, r.label,
-             r.frame_ms, r.fps, r.quality.at(driver::kRecommendMetric));
+  fmt::print("recommended: {} ({}): {:.2f} ms ({:.1f} fps), FLIP over {} {:.4f}\n", r.id, r.label,
+             r.frame_ms, r.fps, metric == "flip_skin" ? "skin" : "the frame", r.quality.at(metric));
 }
 
 int run(const SweepOptions& o, const CLI::App& cmd) {
+  require_out_dir(o.out);
   const driver::SweepSpec spec = build_spec(o, cmd);
-  const std::vector<driver::SweepConfig> configs = driver::expand_sweep(spec);
+  const std::vector<driver::SweepConfig> configs = driver::expand_sweep(spec, o.max_configs);
 
   driver::SweepRunOptions run_options;
   run_options.out_dir = o.out;
   run_options.data_dir = o.data_dir.empty() ? default_data_dir() : o.data_dir;
   run_options.threads = o.threads;
   run_options.cancel = &g_interrupted;
+  io::remove_stale_temporaries_in_tree(o.out);  // left by a sweep killed mid-write
   g_interrupted.store(false);
   std::signal(SIGINT, on_sigint);
   const driver::SweepRunSummary summary = driver::run_sweep(spec, configs, run_options);
   std::signal(SIGINT, SIG_DFL);
 
-  std::size_t combinations = 1;
-  for (const driver::SweepAxis& axis : spec.axes) combinations *= axis.values.size();
+  std::size_t combinations = 1;  // saturating: a folded sweep's product can exceed 2^64
+  for (const driver::SweepAxis& axis : spec.axes) {
+    if (__builtin_mul_overflow(combinations, axis.values.size(), &combinations)) {
+      combinations = SIZE_MAX;
+    }
+  }
   const std::size_t skipped = combinations - configs.size();
-  fmt::print("skinsim sweep: {} configurations on {}: {} computed, {} resumed{} in {:.1f} s{}\n",
+  fmt::print("skinsim sweep: {} configurations on {}: {} computed, {} resumed{}{} in {:.1f} s{}\n",
              summary.total, spec.scene.label(), summary.computed.size(), summary.resumed,
+             summary.failed.empty() ? "" : fmt::format(", {} failed", summary.failed.size()),
              summary.not_run ? fmt::format(", {} not run", summary.not_run) : "", summary.seconds,
              skipped ? fmt::format(" ({} more combinations differ only in knobs their technique "
                                    "does not use)",
                                    skipped)
                      : "");
-  const reports::SweepTable table = driver::assemble_sweep_table(spec, configs, o.out);
+  for (const std::string& w : summary.warnings) {
+    fmt::print(stderr, "skinsim sweep: warning: {}\n", w);
+  }
+  for (const driver::FailedConfig& f : summary.failed) {
+    fmt::print(stderr, "skinsim sweep: configuration {} failed: {}\n", f.id, f.reason);
+  }
+  if (summary.foreign_ignored) {
+    fmt::print(stderr,
+               "skinsim sweep: note: {} stored results from a different sweep ignored (another "
+               "--set knob, scene or device wrote them into {}); this sweep replaces them as it "
+               "computes those configurations\n",
+               summary.foreign_ignored, o.out);
+  }
+  const reports::SweepTable table =
+      driver::assemble_sweep_table(spec, configs, summary.fingerprints, o.out);
   driver::write_sweep_data(table, o.out);
   std::vector<std::string> written = {"results.json", "results.csv", "configs/"};
   if (summary.cancelled) {
@@ -141,6 +173,11 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
   if (!report.note.empty()) fmt::print(stderr, "skinsim sweep: note: {}\n", report.note);
   print_recommendation(table);
   fmt::print("wrote {}/{{{}}}\n", o.out, fmt::join(written, ", "));
+  if (!summary.failed.empty()) {
+    fmt::print(stderr, "skinsim sweep: {} of {} configurations failed (reasons above)\n",
+               summary.failed.size(), summary.total);
+    return 1;
+  }
   return o.charts && o.require_charts && !report.charts_drawn ? 1 : 0;
 }
 
@@ -190,9 +227,14 @@ Command add_sweep_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--out", o->out, "Sweep directory (re-running into it resumes)")
       ->capture_default_str();
+  cmd->add_option("--max-configs", o->max_configs,
+                  "Refuse sweeps of more configurations than this (each renders frames and "
+                  "writes megabytes); raise it to run a larger sweep anyway")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   cmd->add_option("--budget-ms", o->budget_ms,
                   "Frame budget for the recommendation (default: the sweep file's, else 33.3)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_real(60000.0));  // a minute per frame
   cmd->add_flag("!--no-charts", o->charts,
                 "Write report.html without the VTK charts (no X display needed)");
   cmd->add_flag("--require-charts", o->require_charts,

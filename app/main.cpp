@@ -2,12 +2,74 @@
 // each costs on a device.
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <exception>
+#include <filesystem>
 #include <map>
+#include <new>
+#include <string>
+#include <string_view>
+#include <vector>
 
 #include "app/commands.h"
 #include "driver/host_memory.h"
+#include "util/user_error.h"
+
+namespace {
+
+// Exit statuses: 0 success, 1 a check failed (budgets), 2 bad input the user can fix,
+// 3 an internal error (a bug in skinsim).
+constexpr int kExitBadInput = 2;
+constexpr int kExitInternalError = 3;
+
+// Runs `body` and maps what escapes it to a message and an exit status. `where` prefixes the
+// message ("skinsim" or "skinsim run").
+template <typename Body>
+int report_errors(const std::string& where, Body&& body) {
+  try {
+    return body();
+  } catch (const skinsim::UserError& e) {
+    fmt::print(stderr, "{}: error: {}\n", where, e.what());
+    return kExitBadInput;
+  } catch (const std::filesystem::filesystem_error& e) {  // names the path at fault
+    fmt::print(stderr, "{}: error: {}\n", where, e.what());
+    return kExitBadInput;
+  } catch (const std::bad_alloc&) {
+    fmt::print(stderr,
+               "{}: error: out of memory: the input asks for more memory than this machine can "
+               "give (a smaller resolution, scene or sweep may fit)\n",
+               where);
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "{}: internal error (a bug in skinsim, please report it): {}\n", where,
+               e.what());
+    return kExitInternalError;
+  }
+}
+
+// Checks CLI11 gets wrong before it parses: it hands "--opt=" (an empty value) the next
+// argument as its value, and reports an unknown subcommand as "A subcommand is required".
+void check_raw_arguments(CLI::App& app, int argc, char** argv) {
+  std::vector<std::string> known;
+  for (const CLI::App* sub : app.get_subcommands({})) known.push_back(sub->get_name());
+  if (argc > 1 && argv[1][0] != '-' &&
+      std::find(known.begin(), known.end(), argv[1]) == known.end()) {
+    throw skinsim::UserError(fmt::format("unknown subcommand '{}' (known: {})", argv[1],
+                                         fmt::join(known, ", ")));
+  }
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view arg = argv[i];
+    if (arg == "--") break;  // what follows is positional
+    if (arg.starts_with("--") && arg.ends_with("=")) {
+      throw skinsim::UserError(
+          fmt::format("option {} needs a value after '='", arg.substr(0, arg.size() - 1)));
+    }
+  }
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   skinsim::driver::retain_freed_memory();
@@ -24,27 +86,23 @@ int main(int argc, char** argv) {
   add(skinsim::app::add_microbench_command(app));
   add(skinsim::app::add_check_command(app));
   add(skinsim::app::add_baseline_command(app));
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    app.exit(e);  // prints the message
-    return 2;
-  } catch (const std::exception& e) {  // a knob's own validation (pipeline::ConfigError)
-    fmt::print(stderr, "skinsim: error: {}\n", e.what());
-    return 2;
-  }
-  for (const auto& [sub, run] : commands) {
-    if (!sub->parsed()) continue;
+  const int parsed = report_errors("skinsim", [&] {  // knobs validate as they are parsed
+    check_raw_arguments(app, argc, argv);
     try {
-      return run();
-    } catch (const std::exception& e) {
-      fmt::print(stderr, "skinsim {}: error: {}\n", sub->get_name(), e.what());
-      return 2;
+      app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+      return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+      return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+      app.exit(e);  // prints the message
+      return kExitBadInput;
     }
+    return -1;
+  });
+  if (parsed != -1) return parsed;
+  for (const auto& [sub, run] : commands) {
+    if (sub->parsed()) return report_errors("skinsim " + sub->get_name(), run);
   }
-  return 2;
+  return kExitBadInput;
 }

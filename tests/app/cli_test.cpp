@@ -2,11 +2,16 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <nlohmann/json.hpp>
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <string>
+
+#include "tests/scene/gltf_fixture.h"
 
 namespace {
 
@@ -55,7 +60,7 @@ TEST(Cli, UnknownOptionIsExitTwo) {
 TEST(Cli, OutOfRangeKnobNamesTheKnob) {
   const Result r = run("run --scale 1.5 --no-reference --out /tmp/skinsim_cli_unused");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.output.find("buffer_scale"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("scale must be in (0, 1], got 1.5"), std::string::npos) << r.output;
   const Result lut = run("run --lut 30x128 --no-reference");
   EXPECT_EQ(lut.exit_code, 2);
   EXPECT_NE(lut.output.find("lut width"), std::string::npos) << lut.output;
@@ -74,9 +79,44 @@ TEST(Cli, TruncatedGlbIsExitTwo) {
   const auto dir = temp_dir("truncated");
   const auto path = dir / "truncated.glb";
   std::ofstream(path, std::ios::binary) << "glTF\x02";
-  const Result r = run("run --scene " + path.string() + " --no-reference --out " + dir.string());
+  const Result r =
+      run("run --scene " + path.string() + " --no-reference --out " + (dir / "out").string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find(path.string()), std::string::npos) << r.output;
+}
+
+std::set<std::string> names_in(const std::filesystem::path& dir) {
+  std::set<std::string> names;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    names.insert(e.path().filename().string());
+  }
+  return names;
+}
+
+// A failed run leaves the previous run's directory as it was: no new images beside an old
+// result.json, and no staging directory left behind.
+TEST(Cli, FailedRunLeavesThePreviousRunUntouched) {
+  const auto dir = temp_dir("swap");
+  const std::string out = (dir / "out").string();
+  const std::string small = " --resolution 96x64 --texture-size 64 --no-reference --out " + out;
+  ASSERT_EQ(run("run" + small).exit_code, 0);
+  const auto before = names_in(out);
+  const auto written = std::filesystem::last_write_time(dir / "out" / "result.json");
+  const Result r = run("run --scene /nonexistent/head.glb" + small);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(names_in(out), before);
+  EXPECT_EQ(std::filesystem::last_write_time(dir / "out" / "result.json"), written);
+  EXPECT_EQ(names_in(dir), std::set<std::string>{"out"});
+}
+
+TEST(Cli, RunRefusesToReplaceAForeignDirectory) {
+  const auto dir = temp_dir("foreign");
+  std::ofstream(dir / "notes.txt") << "mine";
+  const Result r = run("run --resolution 96x64 --texture-size 64 --no-reference --out " +
+                       dir.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("not a skinsim run directory"), std::string::npos) << r.output;
+  EXPECT_EQ(names_in(dir), std::set<std::string>{"notes.txt"});
 }
 
 TEST(Cli, UnknownDeviceIsExitTwo) {
@@ -92,6 +132,32 @@ TEST(Cli, DevicesAndShadersPrintTables) {
   const Result s = run("shaders --json");
   EXPECT_EQ(s.exit_code, 0);
   EXPECT_NE(s.output.find("\"texture_reads_dependent\""), std::string::npos);
+}
+
+// One broken profile does not hide the others: all good ones are listed, the broken one is
+// named with its problem, and the exit status says something was wrong.
+TEST(Cli, DevicesListsGoodProfilesAndNamesBrokenOnes) {
+  const auto dir = temp_dir("devices");
+  std::filesystem::create_directories(dir / "devices");
+  for (const char* name : {"ipad3", "ipad4"}) {
+    std::filesystem::copy_file(std::string(SKINSIM_DATA_DIR) + "/devices/" + name + ".toml",
+                               dir / "devices" / (std::string(name) + ".toml"));
+  }
+  std::ifstream in(std::string(SKINSIM_DATA_DIR) + "/devices/ipad4.toml");
+  std::string profile((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  profile.replace(profile.find("value = 300.0"), 13, "value = 1e-300");
+  std::ofstream(dir / "devices" / "broken.toml") << profile;
+  const Result r = run("devices --data-dir " + dir.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  for (const char* dev : {"ipad3", "ipad4"}) {
+    EXPECT_NE(r.output.find(dev), std::string::npos) << r.output;
+  }
+  EXPECT_NE(r.output.find("skinsim devices: error: " + (dir / "devices" / "broken.toml").string()),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("'gpu.clock_mhz.value': must be a number in [1, 10000] MHz, got 1e-300"),
+            std::string::npos)
+      << r.output;
 }
 
 double frame_ms_of(const std::filesystem::path& result_json) {
@@ -138,13 +204,143 @@ TEST(Cli, RunsTheRealHeadScanAndWritesResults) {
   if (!std::filesystem::exists(SKINSIM_TEST_LEE)) GTEST_SKIP() << "asset not present";
   const auto dir = temp_dir("lee");
   const Result r = run(std::string("run --scene ") + SKINSIM_TEST_LEE +
-                       " --skin-materials all --units-per-mm 0.04 --resolution 512x384 --out " +
+                       " --skin-materials all --units-per-mm 0.035 --resolution 512x384 --out " +
                        dir.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   for (const char* f : {"frame.png", "reference.png", "result.json", "irradiance.png"}) {
     EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;
   }
   EXPECT_NE(r.output.find("skin PSNR"), std::string::npos);
+}
+
+// A skin quad exactly filling an orthographic camera's view (ymag 1; the 4:3 render aspect
+// sets the width): the frame and the reference render, and the camera is the file's.
+TEST(Cli, OrthographicCameraRendersWithReference) {
+  skinsim::scene::testing::GltfFixture f("cli_ortho");
+  f.add_quad_mesh(true, true);
+  f.json()["nodes"][0]["scale"] = {8.0 / 3.0, 2.0, 1.0};
+  f.json()["nodes"][0]["translation"] = {-4.0 / 3.0, -1.0, -1.0};
+  f.json()["materials"] = {{{"name", "skin"}}};
+  f.json()["meshes"][0]["primitives"][0]["material"] = 0;
+  f.json()["cameras"] = {
+      {{"type", "orthographic"},
+       {"orthographic", {{"xmag", 1.0}, {"ymag", 1.0}, {"znear", 0.01}, {"zfar", 10.0}}}}};
+  f.json()["nodes"].push_back({{"camera", 0}});
+  f.json()["scenes"][0]["nodes"].push_back(1);
+  const std::string scene = f.write_gltf("quad");
+  for (const char* technique : {"mobile", "burley"}) {
+    const auto dir = f.dir() / technique;
+    const Result r = run("run --scene " + scene + " --technique " + technique +
+                         " --resolution 64x48 --out " + dir.string());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_EQ(r.output.find("orthographic"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("skin PSNR"), std::string::npos) << r.output;
+    for (const char* file : {"frame.png", "reference.png", "result.json"}) {
+      EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
+    }
+  }
+}
+
+// Without --units-per-mm the scan (7.95 units tall) is read as metres: the run says so, says
+// why the LOD shader was chosen, and records both in result.json's "warnings".
+TEST(Cli, ScanInWrongUnitsWarnsAboutSizeAndLod) {
+  if (!std::filesystem::exists(SKINSIM_TEST_LEE)) GTEST_SKIP() << "asset not present";
+  const auto dir = temp_dir("lee_units");
+  const Result r = run(std::string("run --scene ") + SKINSIM_TEST_LEE +
+                       " --skin-materials all --no-reference --resolution 256x192 --out " +
+                       dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const char* expected :
+       {"skinsim run: warning: ", "--units-per-mm 0.0353", "LOD shader was chosen: camera distance",
+        "> lod_distance_m 2 m", "has no textures"}) {
+    EXPECT_NE(r.output.find(expected), std::string::npos) << expected << "\n" << r.output;
+  }
+  std::ifstream in(dir / "result.json");
+  const std::string json((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_NE(json.find("\"warnings\""), std::string::npos);
+  EXPECT_NE(json.find("LOD shader was chosen"), std::string::npos);
+}
+
+// Sweep inputs refused before any work: exit 2 with the option or file, line and key named.
+TEST(Cli, SweepRefusesBadOutHugeSweepsAndOutOfRangeIntegers) {
+  const auto dir = temp_dir("sweep_inputs");
+  const Result empty_out = run("sweep --out \"\" --no-charts");
+  EXPECT_EQ(empty_out.exit_code, 2);
+  EXPECT_NE(empty_out.output.find("--out: empty path"), std::string::npos) << empty_out.output;
+  std::ofstream(dir / "file") << "x";
+  const Result file_out = run("sweep --no-charts --out " + (dir / "file").string());
+  EXPECT_EQ(file_out.exit_code, 2);
+  EXPECT_NE(file_out.output.find("is not a directory"), std::string::npos) << file_out.output;
+
+  std::string
+      scales;  // 1000 scales x 8 blur iterations x 2 LUT formats x the default sweep's 4 LUT sizes
+  for (int i = 1; i <= 1000; ++i) scales += (i > 1 ? "," : "") + std::to_string(i / 1000.0);
+  const std::string huge = "sweep --no-charts --techniques mobile --scales " + scales +
+                           " --blur-iterations 1,2,3,4,5,6,7,8 --lut-formats rgba8,rgba16f --out " +
+                           (dir / "huge").string();
+  const Result refused = run(huge);
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.output.find("64000 configurations, over the limit of 10000"), std::string::npos)
+      << refused.output;
+  EXPECT_NE(refused.output.find("--max-configs 64000"), std::string::npos) << refused.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "huge"));
+
+  std::ofstream(dir / "big.toml") << "[axes]\nscale = [1]\n[scene]\nhead_triangles = 4294968296\n";
+  const Result big = run("sweep --no-charts --sweep-file " + (dir / "big.toml").string());
+  EXPECT_EQ(big.exit_code, 2);
+  EXPECT_NE(big.output.find("big.toml:4: scene.head_triangles: 4294968296 is out of range"),
+            std::string::npos)
+      << big.output;
+
+  // A device path in a sweep file is relative to the file, not to the working directory.
+  std::ofstream(dir / "dev.toml") << "[axes]\nscale = [1]\n[fixed]\ndevice = \"mine.toml\"\n";
+  const Result dev = run("sweep --no-charts --out " + (dir / "dev").string() + " --sweep-file " +
+                         (dir / "dev.toml").string());
+  EXPECT_EQ(dev.exit_code, 2);
+  EXPECT_NE(dev.output.find((dir / "mine.toml").string()), std::string::npos) << dev.output;
+}
+
+// A scene whose skin materials match nothing: every configuration is still rendered and
+// measured over the whole frame, the sweep says once why there are no skin metrics and what to
+// pass, and recommends by FLIP over the frame.
+TEST(Cli, SweepWithoutSkinComparesWholeFrames) {
+  if (!std::filesystem::exists(SKINSIM_TEST_LEE)) GTEST_SKIP() << "asset not present";
+  const auto dir = temp_dir("sweep_noskin");
+  const Result r = run(std::string("sweep --no-charts --scene ") + SKINSIM_TEST_LEE +
+                       " --skin-materials nosuch --units-per-mm 0.04 --scales 0.5,0.25 --luts "
+                       "8x32 --resolutions 128x96 --out " +
+                       dir.string());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("warning: 128x96: no skin in the frame"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("no skin in the frame: --skin-materials nosuch match no material of "
+                          "the scene (its materials: "),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("pass the skin materials' names, or 'all'"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("2 computed, 0 resumed in"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("FLIP over the frame"), std::string::npos) << r.output;
+}
+
+// `run` on a scene without skin renders and writes everything, warns why, and leaves the skin
+// metrics out of result.json (saying why) while the frame metrics are there.
+TEST(Cli, RunWithoutSkinWritesFrameMetricsAndSaysWhy) {
+  if (!std::filesystem::exists(SKINSIM_TEST_LEE)) GTEST_SKIP() << "asset not present";
+  const auto dir = temp_dir("run_noskin");
+  const Result r = run(std::string("run --scene ") + SKINSIM_TEST_LEE +
+                       " --units-per-mm 0.04 --resolution 128x96 --out " + dir.string());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("no material is skin by its extras.skinsim.kind"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("skin metrics not available"), std::string::npos) << r.output;
+  std::ifstream in(dir / "result.json");
+  const nlohmann::json result = nlohmann::json::parse(in);
+  const nlohmann::json& q = result.at("quality");
+  EXPECT_FALSE(q.contains("flip_skin")) << q;
+  EXPECT_TRUE(q.at("flip_frame").is_number()) << q;
+  EXPECT_NE(q.at("skin_metrics_unavailable").get<std::string>().find("--skin-materials"),
+            std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(dir / "error_flip.png"));
 }
 
 }  // namespace

@@ -1,0 +1,96 @@
+"""Adversarial CLI input: every numeric option of `skinsim run` given a value that is not a
+plain finite number in range must exit 2 with a message naming the option (or its knob), and
+must never render. Also the raw-argument checks: `--opt=` with no value, unknown subcommands,
+and a non-UTF-8 scene path that must not crash the JSON step.
+Usage: adversarial_cli_test.py SKINSIM WORK_DIR"""
+import os
+import pathlib
+import shutil
+import subprocess
+import sys
+
+SKINSIM, WORK = sys.argv[1], pathlib.Path(sys.argv[2])
+shutil.rmtree(WORK, ignore_errors=True)
+WORK.mkdir(parents=True)
+OUT = str(WORK / "out")
+failures = []
+
+# Option -> the names a message may use for it (the flag, or the knob a budget file types).
+NUMERIC_OPTIONS = {
+    "--threads": ["--threads"],
+    "--head-triangles": ["--head-triangles"],
+    "--texture-size": ["--texture-size"],
+    "--units-per-mm": ["--units-per-mm"],
+    "--scale": ["--scale"],
+    "--lut": ["--lut"],
+    "--blur-iterations": ["--blur-iterations"],
+    "--blur-width-mm": ["--blur-width-mm"],
+    "--normal-offset-mm": ["--normal-offset-mm"],
+    "--lobe1": ["--lobe1"],
+    "--lobe2": ["--lobe2"],
+    "--specular-intensity": ["--specular-intensity"],
+    "--resolution": ["--resolution"],
+    "--lod-distance": ["--lod-distance"],
+    "--preintegrated-lut": ["--preintegrated-lut"],
+    "--wrap": ["--wrap"],
+    "--burley-samples": ["--burley-samples"],
+    "--burley-distance-mm": ["--burley-distance-mm"],
+    "--texture-space-size": ["--texture-space-size"],
+}
+BAD_VALUES = ["nan", "inf", "-inf", "1e308", "0x10", " 1", "1 ", ""]
+
+
+def run(args):
+    p = subprocess.run([SKINSIM, *args], capture_output=True)
+    return p.returncode, (p.stdout + p.stderr).decode("utf-8", "replace")
+
+
+def expect_bad_input(args, names):
+    code, out = run(args)
+    if code != 2 or not any(n in out for n in names):
+        failures.append(f"{args!r}: expected exit 2 naming {names}, got {code}:\n{out}")
+    if "internal error" in out or len(out) > 2000:
+        failures.append(f"{args!r}: message is not a readable user error:\n{out[:2000]}")
+
+
+for option, names in NUMERIC_OPTIONS.items():
+    for value in BAD_VALUES:
+        expect_bad_input(["run", option, value, "--no-reference", "--out", OUT], names)
+    # "--opt=" must not take the next argument as its value.
+    expect_bad_input(["run", option + "=", "--no-reference", "--out", OUT], names)
+    expect_bad_input(["run", option + "=nan", "--no-reference", "--out", OUT], names)
+
+# Out-of-range values print readably, not as hundreds of digits.
+code, out = run(["run", "--scale", "1e30", "--no-reference", "--out", OUT])
+if code != 2 or "scale must be in (0, 1], got 1e+30" not in out:
+    failures.append(f"--scale 1e30: expected a {{:g}}-style range message, got {code}:\n{out}")
+
+code, out = run(["rnu", "--help"])
+if code != 2 or "unknown subcommand 'rnu'" not in out or "run" not in out:
+    failures.append(f"unknown subcommand: got {code}:\n{out}")
+
+# Nothing above may have rendered.
+if pathlib.Path(OUT).exists():
+    failures.append(f"a rejected run wrote {OUT}")
+
+# A scene path that is not UTF-8 renders and writes valid JSON (invalid bytes replaced).
+lee = os.environ.get("SKINSIM_TEST_LEE", "")
+if lee and pathlib.Path(lee).is_file():
+    odd = WORK / b"head-\xff\xfe.glb".decode("utf-8", "surrogateescape")
+    os.symlink(lee, odd)
+    out_dir = WORK / "utf8"
+    code, out = run(["run", "--scene", str(odd), "--resolution", "128x96", "--no-reference",
+                     "--texture-space-size", "64", "--out", str(out_dir)])
+    result = out_dir / "result.json"
+    if code != 0 or not result.is_file():
+        failures.append(f"non-UTF-8 scene path: expected exit 0, got {code}:\n{out}")
+    else:
+        import json
+        scene = json.loads(result.read_bytes().decode("utf-8"))["scene"]
+        if "\ufffd" not in scene:
+            failures.append(f"non-UTF-8 scene path: expected U+FFFD in {scene!r}")
+
+for f in failures:
+    print("FAIL:", f)
+print(f"{len(failures)} failure(s)")
+sys.exit(1 if failures else 0)
