@@ -6,6 +6,8 @@
 
 #include <tuple>
 
+#include "util/parse_number.h"
+
 namespace skinsim::pipeline {
 
 namespace {
@@ -17,7 +19,7 @@ bool power_of_two(int v) { return v > 0 && (v & (v - 1)) == 0; }
 
 void PipelineConfig::validate() const {
   require(std::isfinite(buffer_scale) && buffer_scale > 0.0f && buffer_scale <= 1.0f,
-          fmt::format("buffer_scale must be in (0, 1], got {}", buffer_scale));
+          fmt::format("scale must be in (0, 1], got {:g}", buffer_scale));
   require(power_of_two(lut_width) && lut_width >= 2 && lut_width <= 1024,
           fmt::format("lut width must be a power of two in [2, 1024], got {}", lut_width));
   require(power_of_two(lut_height) && lut_height >= 2 && lut_height <= 1024,
@@ -28,32 +30,32 @@ void PipelineConfig::validate() const {
           fmt::format("blur_iterations must be in [1, 8], got {}", blur_iterations));
   if (blur_width_mm) {
     require(std::isfinite(*blur_width_mm) && *blur_width_mm > 0.0f && *blur_width_mm <= 50.0f,
-            fmt::format("blur_width_mm must be in (0, 50], got {}", *blur_width_mm));
+            fmt::format("blur_width_mm must be in (0, 50], got {:g}", *blur_width_mm));
   }
   require(std::isfinite(normal_offset_mm) && normal_offset_mm >= 0.0f && normal_offset_mm <= 20.0f,
-          fmt::format("normal_offset_mm must be in [0, 20], got {}", normal_offset_mm));
+          fmt::format("normal_offset_mm must be in [0, 20], got {:g}", normal_offset_mm));
   for (const auto& [name, lobe] : {std::pair{"lobe1", lobe1}, std::pair{"lobe2", lobe2}}) {
     require(lobe.roughness >= 0.05f && lobe.roughness <= 1.0f,
-            fmt::format("{}.roughness must be in [0.05, 1], got {}", name, lobe.roughness));
+            fmt::format("{}.roughness must be in [0.05, 1], got {:g}", name, lobe.roughness));
     require(lobe.weight >= 0.0f && lobe.weight <= 1.0f,
-            fmt::format("{}.weight must be in [0, 1], got {}", name, lobe.weight));
+            fmt::format("{}.weight must be in [0, 1], got {:g}", name, lobe.weight));
   }
   require(std::fabs(lobe1.weight + lobe2.weight - 1.0f) < 1e-3f,
-          fmt::format("lobe weights must sum to 1, got {} + {}", lobe1.weight, lobe2.weight));
+          fmt::format("lobe weights must sum to 1, got {:g} + {:g}", lobe1.weight, lobe2.weight));
   require(specular_intensity >= 0.0f && specular_intensity <= 1.0f,
-          fmt::format("specular_intensity must be in [0, 1], got {}", specular_intensity));
+          fmt::format("specular_intensity must be in [0, 1], got {:g}", specular_intensity));
   require((width == 0) == (height == 0), "resolution needs both width and height");
   require(width == 0 || (width >= 16 && width <= 8192 && height >= 16 && height <= 8192),
           fmt::format("resolution must be within 16..8192 per axis, got {}x{}", width, height));
   require(std::isfinite(lod_distance_m) && lod_distance_m > 0.0f,
-          fmt::format("lod_distance_m must be > 0, got {}", lod_distance_m));
+          fmt::format("lod_distance_m must be > 0, got {:g}", lod_distance_m));
   require(power_of_two(preintegrated_lut_width) && preintegrated_lut_width >= 4 &&
               preintegrated_lut_width <= 1024 && power_of_two(preintegrated_lut_height) &&
               preintegrated_lut_height >= 4 && preintegrated_lut_height <= 1024,
           fmt::format("preintegrated_lut must be powers of two in [4, 1024] per axis, got {}x{}",
                       preintegrated_lut_width, preintegrated_lut_height));
   require(std::isfinite(wrap) && wrap >= 0.0f && wrap <= 1.0f,
-          fmt::format("wrap must be in [0, 1], got {}", wrap));
+          fmt::format("wrap must be in [0, 1], got {:g}", wrap));
   require(burley_samples >= 4 && burley_samples <= kMaxBurleySamples,
           fmt::format("burley_samples must be in [4, {}], got {}", kMaxBurleySamples,
                       burley_samples));
@@ -61,7 +63,7 @@ void PipelineConfig::validate() const {
     const glm::vec3 d = *burley_distance_mm;
     for (int c = 0; c < 3; ++c) {
       require(std::isfinite(d[c]) && d[c] >= 0.01f && d[c] <= 20.0f,
-              fmt::format("burley_distance_mm must be in [0.01, 20] mm per channel, got {},{},{}",
+              fmt::format("burley_distance_mm must be in [0.01, 20] mm per channel, got {:g},{:g},{:g}",
                           d.r, d.g, d.b));
     }
   }
@@ -73,19 +75,13 @@ void PipelineConfig::validate() const {
 
 std::pair<int, int> parse_size(const std::string& text, const std::string& what) {
   const auto x = text.find_first_of("xX");
-  try {
-    if (x == std::string::npos) throw std::invalid_argument("no x");
-    size_t used_w = 0, used_h = 0;
-    const int w = std::stoi(text.substr(0, x), &used_w);
-    const int h = std::stoi(text.substr(x + 1), &used_h);
-    if (used_w != x || used_h != text.size() - x - 1 || w <= 0 || h <= 0) {
-      throw std::invalid_argument("trailing");
-    }
-    return {w, h};
-  } catch (const std::logic_error&) {
-    throw ConfigError(fmt::format("{}: expected WIDTHxHEIGHT with positive integers, got '{}'",
-                                  what, text));
+  if (x != std::string::npos) {
+    const auto w = parse_integer<int>(std::string_view(text).substr(0, x));
+    const auto h = parse_integer<int>(std::string_view(text).substr(x + 1));
+    if (w && h && *w > 0 && *h > 0) return {*w, *h};
   }
+  throw ConfigError(
+      fmt::format("{}: expected WIDTHxHEIGHT with positive integers, got '{}'", what, text));
 }
 
 GammaMode parse_gamma(const std::string& text) {
@@ -97,25 +93,13 @@ GammaMode parse_gamma(const std::string& text) {
 namespace {
 
 float parse_float(const std::string& key, const std::string& text) {
-  try {
-    size_t used = 0;
-    const float v = std::stof(text, &used);
-    if (used != text.size() || !std::isfinite(v)) throw std::invalid_argument("trailing");
-    return v;
-  } catch (const std::logic_error&) {
-    throw ConfigError(fmt::format("{}: expected a number, got '{}'", key, text));
-  }
+  if (const auto v = parse_real<float>(text)) return *v;
+  throw ConfigError(fmt::format("{}: expected a finite decimal number, got '{}'", key, text));
 }
 
 int parse_int(const std::string& key, const std::string& text) {
-  try {
-    size_t used = 0;
-    const int v = std::stoi(text, &used);
-    if (used != text.size()) throw std::invalid_argument("trailing");
-    return v;
-  } catch (const std::logic_error&) {
-    throw ConfigError(fmt::format("{}: expected an integer, got '{}'", key, text));
-  }
+  if (const auto v = parse_integer<int>(text)) return *v;
+  throw ConfigError(fmt::format("{}: expected a decimal integer, got '{}'", key, text));
 }
 
 glm::vec3 parse_rgb(const std::string& key, const std::string& text) {

@@ -11,12 +11,13 @@
 
 #include "pipeline/technique.h"
 #include "sim/texture.h"
+#include "util/user_error.h"
 
 namespace skinsim::pipeline {
 
-class ConfigError : public std::runtime_error {
+class ConfigError : public UserError {
  public:
-  using std::runtime_error::runtime_error;
+  using UserError::UserError;
 };
 
 enum class GammaMode { kSquare, kSrgb };  // gamma 2.0 (GPU Pro 5) or exact sRGB

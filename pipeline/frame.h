@@ -23,6 +23,9 @@ struct NamedTarget {
 struct FrameOutput {
   View view;
   bool lod = false;  // the single-pass distant-skin shader ran
+  // Set when the automatic choice took the single-pass shader for distance: says the camera
+  // distance, lod_distance_m and the units that related them.
+  std::string lod_notice;
   std::vector<sim::PassCounters> passes;
   sim::RenderTarget frame;  // the final image (display-encoded RGBA8)
   std::vector<NamedTarget> intermediates;

@@ -83,10 +83,22 @@ View make_view(const GpuScene& gpu_scene, int width, int height) {
   v.width = width;
   v.height = height;
   v.eye = cam.position;
+  v.camera_position = cam.position;
+  v.forward = glm::normalize(cam.target - cam.position);
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
-  const glm::mat4 proj = glm::perspective(cam.yfov_radians, aspect, cam.znear, cam.zfar);
-  v.view_proj = proj * glm::lookAt(cam.position, cam.target, cam.up);
-  v.focal_pixels = 0.5f * static_cast<float>(height) / std::tan(0.5f * cam.yfov_radians);
+  if (cam.projection == scene::Projection::kOrthographic) {
+    // glTF: the viewport's aspect wins over xmag / ymag; ymag is kept.
+    const float half_w = cam.ymag * aspect;
+    const glm::mat4 proj = glm::ortho(-half_w, half_w, -cam.ymag, cam.ymag, cam.znear, cam.zfar);
+    v.view_proj = proj * glm::lookAt(cam.position, cam.target, cam.up);
+    v.orthographic = true;
+    v.focal_pixels = 0.5f * static_cast<float>(height) / cam.ymag;
+    v.eye = cam.position - v.forward * (1e4f * (cam.zfar + std::max(half_w, cam.ymag)));
+  } else {
+    const glm::mat4 proj = glm::perspective(cam.yfov_radians, aspect, cam.znear, cam.zfar);
+    v.view_proj = proj * glm::lookAt(cam.position, cam.target, cam.up);
+    v.focal_pixels = 0.5f * static_cast<float>(height) / std::tan(0.5f * cam.yfov_radians);
+  }
 
   glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
   float x0 = static_cast<float>(width), y0 = static_cast<float>(height), x1 = 0.0f, y1 = 0.0f;
@@ -96,7 +108,8 @@ View make_view(const GpuScene& gpu_scene, int width, int height) {
       lo = glm::min(lo, p);
       hi = glm::max(hi, p);
       const glm::vec4 c = v.view_proj * glm::vec4(p, 1.0f);
-      if (c.w <= cam.znear * 0.5f) {  // behind the camera: the skin may cover everything
+      // Behind a perspective camera: the skin may cover everything (orthographic w is 1).
+      if (!v.orthographic && c.w <= cam.znear * 0.5f) {
         x0 = y0 = 0.0f;
         x1 = static_cast<float>(width);
         y1 = static_cast<float>(height);

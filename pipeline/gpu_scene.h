@@ -55,15 +55,33 @@ class GpuScene {
 // Camera matrices for a render resolution, and the skin's screen footprint.
 struct View {
   glm::mat4 view_proj{1.0f};
+  // Where shaders place the viewer: normalize(eye - p) is the view vector. Orthographic
+  // views put it 1e4 view-volume sizes behind the camera (make_view), so that this same
+  // expression gives the parallel view direction (to ~1e-4 rad) in every program and the
+  // perspective programs stay as they are.
   glm::vec3 eye{0.0f};
+  glm::vec3 forward{0.0f, 0.0f, -1.0f};  // unit view direction
+  glm::vec3 camera_position{0.0f};       // the camera itself (the eye of perspective views)
+  bool orthographic = false;
   int width = 0;
   int height = 0;
-  float focal_pixels = 0.0f;       // pixels per unit of world size at distance 1
+  // Perspective: pixels per unit of world size at distance 1. Orthographic: pixels per
+  // unit of world size at any distance.
+  float focal_pixels = 0.0f;
   float skin_distance = 0.0f;      // camera to the skin bounding-box centre (world units)
   sim::PixelRect skin_rect;        // screen bounding rectangle of all skin (pixels)
   bool skin_visible = false;
+  // Pixels per world unit on a surface `distance` units from the camera.
+  float pixels_per_unit(float distance) const {
+    return orthographic ? focal_pixels : focal_pixels / distance;
+  }
+  // Unit vector from a surface point towards the viewer (parallel for orthographic views).
+  glm::vec3 to_viewer(const glm::vec3& p) const {
+    return orthographic ? -forward : glm::normalize(eye - p);
+  }
   // Pixels per millimetre on the skin at its distance (drives the blur width).
   float pixels_per_mm(float units_per_mm) const {
+    if (orthographic) return focal_pixels * units_per_mm;
     return skin_distance > 0.0f ? focal_pixels * units_per_mm / skin_distance : 0.0f;
   }
 };

@@ -71,6 +71,10 @@ std::vector<sim::NamedProfile> shader_catalog() {
   c.push_back(entry(sim::make_fragment_program<UvCombineFS>({})));
   c.push_back(
       entry(sim::make_fragment_program<DiffusedSkinFS<kSquare, kKsLut, DiffusionSource::kUv>>({})));
+  // Screen-space diffusion under an orthographic camera.
+  c.push_back(entry(sim::make_fragment_program<DiffuseDepthOrthoFS>({})));
+  c.push_back(entry(sim::make_fragment_program<BurleyOrthoFS>(burley_default)));
+  c.push_back(entry(sim::make_fragment_program<SsssBlurOrthoFS>({})));
   return c;
 }
 

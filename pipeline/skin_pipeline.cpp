@@ -1,5 +1,7 @@
 #include "pipeline/skin_pipeline.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -79,6 +81,17 @@ FrameOutput render_mobile_frame(const GpuScene& gs, const PipelineConfig& cfg, s
   const float units_per_m = gs.scene().units_per_mm * 1000.0f;
   out.lod = mode == MobileMode::kForceLod || !gs.has_skin() || !out.view.skin_visible ||
             out.view.skin_distance > cfg.lod_distance_m * units_per_m;
+  if (out.lod && mode != MobileMode::kForceLod && !gs.has_skin()) {
+    out.lod_notice =
+        "the single-pass LOD shader was chosen: no material is classified as skin (name your "
+        "skin materials with --skin-materials, or 'all')";
+  } else if (out.lod && mode != MobileMode::kForceLod && out.view.skin_visible) {
+    out.lod_notice = fmt::format(
+        "the single-pass LOD shader was chosen: camera distance {:.3g} m > lod_distance_m {:.3g} "
+        "m at units_per_mm {:.4g}; if the scene is not in metres pass --units-per-mm (or raise "
+        "--lod-distance)",
+        out.view.skin_distance / units_per_m, cfg.lod_distance_m, gs.scene().units_per_mm);
+  }
 
   if (out.lod) {
     out.passes.push_back(framebuffer_pass(gs, out.view, cfg, lut, nullptr, true, out.frame, gpu));

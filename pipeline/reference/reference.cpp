@@ -199,8 +199,7 @@ class Diffusion {
 
   glm::vec3 at(int x, int y) const {
     const glm::vec4 p = g_.position.at(x, y);
-    const float depth = glm::length(glm::vec3(p) - view_.eye);
-    const float px_per_unit = view_.focal_pixels / depth;
+    const float px_per_unit = view_.pixels_per_unit(glm::length(glm::vec3(p) - view_.eye));
     glm::vec3 result(0.0f);
     for (const bake::GaussianTerm& gaussian : bake::skin_gaussians()) {
       const float variance = gaussian.variance_mm2 * units_per_mm_ * units_per_mm_;
@@ -281,7 +280,7 @@ ReferenceFrame render_reference(const GpuScene& gs, const PipelineConfig& config
       out.skin_mask[static_cast<size_t>(y) * w + x] = 1;
       const glm::vec3 n(g.normal.at(x, y));
       const float reflectivity = g.normal.at(x, y).w;
-      const glm::vec3 v = glm::normalize(view.eye - glm::vec3(p));
+      const glm::vec3 v = view.to_viewer(glm::vec3(p));
       const float n_dot_v = std::clamp(glm::dot(n, v), 0.0f, 1.0f);
       const glm::vec3 albedo(g.albedo.at(x, y));
       float energy = 0.0f, fresnel = 0.0f;

@@ -34,6 +34,18 @@ struct QuadVS {
   }
 };
 
+// Normal-mapped irradiance of the key light plus ambient at a skin fragment.
+template <class L>
+typename L::vec3 skin_irradiance(const typename L::FragIn& in, typename L::TexUnit& tex,
+                                 int normal_map_unit, const glm::vec3& light_dir,
+                                 const glm::vec3& light_radiance, const glm::vec3& ambient) {
+  using vec3 = typename L::vec3;
+  const typename L::vec4 normal_map = tex.sample(normal_map_unit, in.texcoord(SurfaceSlots::kUv));
+  const vec3 n = normal_mapped<L>(sl::normalize(in.v3(SurfaceSlots::kNormal)),
+                                  in.v4(SurfaceSlots::kTangent), normal_map);
+  return vec3(light_radiance) * sl::saturate(sl::dot(n, vec3(light_dir))) + vec3(ambient);
+}
+
 struct DiffuseDepthFS {
   static constexpr const char* kName = "diffuse_depth_fs";
   struct Uniforms {
@@ -49,18 +61,42 @@ struct DiffuseDepthFS {
                                    const Uniforms& u) {
     using vec3 = typename L::vec3;
     using vec4 = typename L::vec4;
-    const vec4 normal_map = tex.sample(kNormalMap, in.texcoord(SurfaceSlots::kUv));
-    const vec3 n = normal_mapped<L>(sl::normalize(in.v3(SurfaceSlots::kNormal)),
-                                    in.v4(SurfaceSlots::kTangent), normal_map);
     const vec3 irradiance =
-        vec3(u.light_radiance) * sl::saturate(sl::dot(n, vec3(u.light_dir))) + vec3(u.ambient);
+        skin_irradiance<L>(in, tex, kNormalMap, u.light_dir, u.light_radiance, u.ambient);
     const auto depth_mm = sl::length(vec3(u.eye) - in.v3(SurfaceSlots::kWorldPos)) * u.mm_per_unit;
     return vec4(irradiance, depth_mm);
   }
 };
 
+// Orthographic views: alpha is the depth beyond the near plane in mm plus 1 mm (0 stays
+// "no skin"); the kernels use only depth differences, their scale being the same at every
+// depth.
+struct DiffuseDepthOrthoFS {
+  static constexpr const char* kName = "diffuse_depth_ortho_fs";
+  struct Uniforms {
+    glm::vec3 depth_axis{0.0f, 0.0f, -1.0f};  // view direction * mm per unit
+    float depth_offset = 1.0f;                // mm
+    glm::vec3 light_dir{0.0f, 0.0f, 1.0f};
+    glm::vec3 light_radiance{1.0f};
+    glm::vec3 ambient{0.0f};
+  };
+  static constexpr int kNormalMap = DiffuseDepthFS::kNormalMap;
+  template <class L>
+  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
+                                   const Uniforms& u) {
+    using vec3 = typename L::vec3;
+    using vec4 = typename L::vec4;
+    const vec3 irradiance =
+        skin_irradiance<L>(in, tex, kNormalMap, u.light_dir, u.light_radiance, u.ambient);
+    const auto depth_mm =
+        sl::dot(vec3(u.depth_axis), in.v3(SurfaceSlots::kWorldPos)) + u.depth_offset;
+    return vec4(irradiance, depth_mm);
+  }
+};
+
 // Uniforms shared by the two kernels: uv per mm at depth 1 mm per axis (focal length in
-// pixels over the target size), and the follow-surface depth tolerance.
+// pixels over the target size; orthographic views: uv per mm at any depth), and the
+// follow-surface depth tolerance.
 struct ScreenKernelUniforms {
   glm::vec2 focal_uv{1.0f};
   float inv_follow_mm = 0.25f;  // 1 / depth difference (mm) at which a tap is fully replaced
@@ -75,16 +111,32 @@ typename L::vec3 follow_surface(const typename L::vec4& tap, const typename L::v
   return sl::mix(sl::xyz(tap), sl::xyz(centre), off_surface);
 }
 
+// The kernels' uv per mm: divided by the centre's depth for perspective views, the same
+// at every depth for orthographic ones (a separate program, so perspective ones keep their
+// op counts).
+template <bool kOrthographic, class L, class Scalar>
+typename L::vec2 uv_per_mm_at(const glm::vec2& focal_uv, const Scalar& depth_mm) {
+  using vec2 = typename L::vec2;
+  if constexpr (kOrthographic) {
+    return vec2(focal_uv);
+  } else {
+    return vec2(focal_uv) * sl::rcp(sl::max(depth_mm, 1.0f));
+  }
+}
+
 // Burley normalized diffusion: `count` taps at precomputed offsets (mm, a Fibonacci spiral
 // with radii from the inverse CDF of the widest channel), RGB weights R_c(r) / pdf(r)
 // normalised per channel (techniques/kernels.h). The centre is read once, independently.
-struct BurleyFS {
-  static constexpr const char* kName = "burley_sss_fs";
-  struct Uniforms : ScreenKernelUniforms {
-    int count = 0;
-    std::array<glm::vec2, kMaxBurleySamples> offsets_mm{};
-    std::array<glm::vec3, kMaxBurleySamples> weights{};
-  };
+struct BurleyUniforms : ScreenKernelUniforms {
+  int count = 0;
+  std::array<glm::vec2, kMaxBurleySamples> offsets_mm{};
+  std::array<glm::vec3, kMaxBurleySamples> weights{};
+};
+
+template <bool kOrthographic>
+struct BurleyFSFor {
+  static constexpr const char* kName = kOrthographic ? "burley_sss_ortho_fs" : "burley_sss_fs";
+  using Uniforms = BurleyUniforms;
   template <class L>
   static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
                                    const Uniforms& u) {
@@ -94,7 +146,7 @@ struct BurleyFS {
     const auto screen = in.screen_texcoord();
     const vec4 centre = tex.sample(0, screen);
     const auto depth = sl::w(centre);
-    const vec2 uv_per_mm = vec2(u.focal_uv) * sl::rcp(sl::max(depth, 1.0f));
+    const vec2 uv_per_mm = uv_per_mm_at<kOrthographic, L>(u.focal_uv, depth);
     vec3 sum(0.0f);
     for (int i = 0; i < u.count; ++i) {
       const vec4 t = tex.sample(0, screen.value + vec2(u.offsets_mm[i]) * uv_per_mm);
@@ -108,13 +160,16 @@ struct BurleyFS {
 // offsets (mm) along the axis, RGB weights of the six-Gaussian profile (techniques/kernels.h).
 inline constexpr int kSsssTaps = 17;  // Jimenez's default quality
 
-struct SsssBlurFS {
-  static constexpr const char* kName = "ssss_blur_fs";
-  struct Uniforms : ScreenKernelUniforms {
-    glm::vec2 axis{1.0f, 0.0f};
-    std::array<float, kSsssTaps> offsets_mm{};  // tap 0 is the centre (offset 0)
-    std::array<glm::vec3, kSsssTaps> weights{};
-  };
+struct SsssBlurUniforms : ScreenKernelUniforms {
+  glm::vec2 axis{1.0f, 0.0f};
+  std::array<float, kSsssTaps> offsets_mm{};  // tap 0 is the centre (offset 0)
+  std::array<glm::vec3, kSsssTaps> weights{};
+};
+
+template <bool kOrthographic>
+struct SsssBlurFSFor {
+  static constexpr const char* kName = kOrthographic ? "ssss_blur_ortho_fs" : "ssss_blur_fs";
+  using Uniforms = SsssBlurUniforms;
   template <class L>
   static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
                                    const Uniforms& u) {
@@ -124,7 +179,7 @@ struct SsssBlurFS {
     const auto screen = in.screen_texcoord();
     const vec4 centre = tex.sample(0, screen);
     const auto depth = sl::w(centre);
-    const vec2 step = vec2(u.focal_uv * u.axis) * sl::rcp(sl::max(depth, 1.0f));
+    const vec2 step = uv_per_mm_at<kOrthographic, L>(u.focal_uv * u.axis, depth);
     vec3 sum = sl::xyz(centre) * vec3(u.weights[0]);
     for (int i = 1; i < kSsssTaps; ++i) {
       const vec4 t = tex.sample(0, screen.value + step * u.offsets_mm[i]);
@@ -133,5 +188,10 @@ struct SsssBlurFS {
     return vec4(sum, depth);
   }
 };
+
+using BurleyFS = BurleyFSFor<false>;
+using BurleyOrthoFS = BurleyFSFor<true>;
+using SsssBlurFS = SsssBlurFSFor<false>;
+using SsssBlurOrthoFS = SsssBlurFSFor<true>;
 
 }  // namespace skinsim::pipeline::shaders

@@ -32,9 +32,19 @@ sim::PassCounters diffuse_pass(const GpuScene& gs, const View& view, sim::Render
                                sim::Gpu& gpu) {
   const SceneLighting light = scene_lighting(gs.scene());
   auto vs = sim::make_vertex_program<shaders::SurfaceVS>({view.view_proj, 0.0f});
-  auto fs = sim::make_fragment_program<shaders::DiffuseDepthFS>(
-      {view.eye, light.light_dir, light.light_radiance, light.ambient,
-       1.0f / gs.scene().units_per_mm});
+  const float mm_per_unit = 1.0f / gs.scene().units_per_mm;
+  std::shared_ptr<const sim::FragmentProgram> fs;
+  if (view.orthographic) {
+    // Depth from the near plane (fragments lie beyond it), plus 1 mm so that skin is > 0.
+    const float near_plane_mm =
+        (glm::dot(view.forward, view.camera_position) + gs.scene().camera.znear) * mm_per_unit;
+    fs = sim::make_fragment_program<shaders::DiffuseDepthOrthoFS>(
+        {view.forward * mm_per_unit, 1.0f - near_plane_mm, light.light_dir,
+         light.light_radiance, light.ambient});
+  } else {
+    fs = sim::make_fragment_program<shaders::DiffuseDepthFS>(
+        {view.eye, light.light_dir, light.light_radiance, light.ambient, mm_per_unit});
+  }
   sim::RenderPassDesc pass;
   pass.name = "diffuse";
   pass.color = &target;
@@ -52,12 +62,22 @@ sim::PassCounters diffuse_pass(const GpuScene& gs, const View& view, sim::Render
   return gpu.execute(pass);
 }
 
-shaders::ScreenKernelUniforms kernel_uniforms(const View& view) {
+shaders::ScreenKernelUniforms kernel_uniforms(const View& view, float units_per_mm) {
   shaders::ScreenKernelUniforms k;
-  k.focal_uv = glm::vec2(view.focal_pixels / static_cast<float>(view.width),
-                         view.focal_pixels / static_cast<float>(view.height));
+  // Perspective: uv per mm at a depth of 1 mm (the shader divides by the depth in mm).
+  // Orthographic: uv per mm at every depth.
+  const float pixels = view.orthographic ? view.pixels_per_mm(units_per_mm) : view.focal_pixels;
+  k.focal_uv = glm::vec2(pixels / static_cast<float>(view.width),
+                         pixels / static_cast<float>(view.height));
   k.inv_follow_mm = 1.0f / kFollowSurfaceMm;
   return k;
+}
+
+// The perspective or orthographic program of a kernel (shaders/screen_diffusion.h).
+template <template <bool> class Kernel, class Uniforms>
+std::shared_ptr<const sim::FragmentProgram> kernel_program(const View& view, const Uniforms& u) {
+  if (view.orthographic) return sim::make_fragment_program<Kernel<true>>(u);
+  return sim::make_fragment_program<Kernel<false>>(u);
 }
 
 // A kernel pass over the skin's screen rectangle reading `source`.
@@ -87,11 +107,11 @@ FrameOutput render_burley_frame(const GpuScene& gs, const PipelineConfig& cfg, s
     const BurleyKernel kernel =
         burley_kernel(cfg.burley_samples, cfg.burley_distance_mm.value_or(burley_distance_fit()));
     shaders::BurleyFS::Uniforms u;
-    static_cast<shaders::ScreenKernelUniforms&>(u) = kernel_uniforms(out.view);
+    static_cast<shaders::ScreenKernelUniforms&>(u) = kernel_uniforms(out.view, gs.scene().units_per_mm);
     u.count = cfg.burley_samples;
     std::copy(kernel.offsets_mm.begin(), kernel.offsets_mm.end(), u.offsets_mm.begin());
     std::copy(kernel.weights.begin(), kernel.weights.end(), u.weights.begin());
-    out.passes.push_back(kernel_pass("sss", sim::make_fragment_program<shaders::BurleyFS>(u),
+    out.passes.push_back(kernel_pass("sss", kernel_program<shaders::BurleyFSFor>(out.view, u),
                                      diffuse, diffused, out.view, gpu));
   }
   out.passes.push_back(diffused_skin_pass(gs, out.view, cfg, shaders::DiffusionSource::kScreen,
@@ -110,14 +130,14 @@ FrameOutput render_ssss_frame(const GpuScene& gs, const PipelineConfig& cfg, sim
   if (out.view.skin_visible) {
     const SeparableKernel kernel = separable_kernel();
     shaders::SsssBlurFS::Uniforms u;
-    static_cast<shaders::ScreenKernelUniforms&>(u) = kernel_uniforms(out.view);
+    static_cast<shaders::ScreenKernelUniforms&>(u) = kernel_uniforms(out.view, gs.scene().units_per_mm);
     u.offsets_mm = kernel.offsets_mm;
     u.weights = kernel.weights;
     u.axis = {1.0f, 0.0f};
-    out.passes.push_back(kernel_pass("sss_h", sim::make_fragment_program<shaders::SsssBlurFS>(u),
+    out.passes.push_back(kernel_pass("sss_h", kernel_program<shaders::SsssBlurFSFor>(out.view, u),
                                      diffuse, horizontal, out.view, gpu));
     u.axis = {0.0f, 1.0f};
-    out.passes.push_back(kernel_pass("sss_v", sim::make_fragment_program<shaders::SsssBlurFS>(u),
+    out.passes.push_back(kernel_pass("sss_v", kernel_program<shaders::SsssBlurFSFor>(out.view, u),
                                      horizontal, diffused, out.view, gpu));
   }
   out.passes.push_back(diffused_skin_pass(gs, out.view, cfg, shaders::DiffusionSource::kScreen,
