@@ -449,3 +449,8 @@ inline CVec<3> operator*(const glm::mat3& m, const CVec<3>& v) {
 }
 
 }  // namespace skinsim::sim::sl
+
+// The Emit instantiation's overloads (GLSL-emitting value types) must be visible
+// wherever shaders are defined: they call the language qualified (`sl::max`), and a
+// qualified call in a template finds only what is declared before the template.
+#include "sim/shader_emit.h"  // IWYU pragma: export
