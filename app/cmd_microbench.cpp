@@ -30,12 +30,15 @@ Command add_microbench_command(CLI::App& app) {
       ->check(CLI::Range(16, 8192))
       ->capture_default_str();
   cmd->add_option("--only", o->bench.only,
-                  "Benchmarks to run: " + fmt::format("{}", fmt::join(microbench::microbenchmark_names(), ", ")))
+                  "Benchmarks to run: " +
+                      fmt::format("{}", fmt::join(microbench::microbenchmark_names(), ", ")))
       ->delimiter(',');
   cmd->add_flag("--json", o->json, "Print JSON instead of a table");
   return [o] {
-    const std::string data_dir = o->device.data_dir.empty() ? default_data_dir() : o->device.data_dir;
-    const gpu_model::DeviceProfile profile = gpu_model::load_device_profile(o->device.device, data_dir);
+    const std::string data_dir =
+        o->device.data_dir.empty() ? default_data_dir() : o->device.data_dir;
+    const gpu_model::DeviceProfile profile =
+        gpu_model::load_device_profile(o->device.device, data_dir);
     microbench::MicrobenchOptions options = o->bench;
     options.threads = o->device.threads;
     const auto results = microbench::run_microbenchmarks(profile, options);

@@ -9,6 +9,7 @@
 #include "app/cli_options.h"
 #include "app/commands.h"
 #include "driver/frame_job.h"
+#include "driver/frame_quality.h"
 #include "driver/images.h"
 #include "driver/result_json.h"
 #include "driver/skin_diagnosis.h"
@@ -16,12 +17,11 @@
 #include "gpu_model/sensitivity.h"
 #include "gpu_model/timing_json.h"
 #include "gpu_model/timing_table.h"
-#include "driver/frame_quality.h"
+#include "io/atomic_file.h"
+#include "io/run_directory.h"
 #include "pipeline/brdf_lut_texture.h"
 #include "pipeline/technique.h"
 #include "quality/json_value.h"
-#include "io/atomic_file.h"
-#include "io/run_directory.h"
 
 namespace skinsim::app {
 
@@ -55,8 +55,8 @@ int run(const RunOptions& o) {
   };
   driver::SceneSource source = o.scene;
   source.warn = warn;
-  const scene::Scene scene =
-      driver::load_scene(source, static_cast<float>(config.width) / static_cast<float>(config.height));
+  const scene::Scene scene = driver::load_scene(
+      source, static_cast<float>(config.width) / static_cast<float>(config.height));
   const pipeline::GpuScene gpu_scene(scene);
   const driver::FrameResult result = driver::run_frame(gpu_scene, config, device, o.device.threads);
   if (!result.output.lod_notice.empty()) warn(result.output.lod_notice);
@@ -68,7 +68,7 @@ int run(const RunOptions& o) {
     driver::write_png(t.target, out / (t.name + ".png"), t.display_scale);
     written.push_back(t.name + ".png");
   }
-  if (config.specular == pipeline::SpecularModel::kKsLut) {  // only that model reads the LUT
+  if (pipeline::reads_brdf_lut(config)) {
     pipeline::BrdfLutTexture::shared(config)->write_png((out / "brdf_lut.png").string());
     written.push_back("brdf_lut.png");
   }
@@ -93,9 +93,10 @@ int run(const RunOptions& o) {
       const std::string why = driver::no_skin_reason(scene, o.scene.skin_materials);
       warn(why + " (skin metrics not available)");
       metrics["skin_metrics_unavailable"] = why;
-      fmt::print("quality vs reference: skin metrics not available; frame PSNR {:.2f} dB, SSIM "
-                 "{:.4f}, FLIP {:.4f}\n",
-                 q.metrics.at("psnr_frame"), q.metrics.at("ssim_frame"), q.metrics.at("flip_frame"));
+      fmt::print(
+          "quality vs reference: skin metrics not available; frame PSNR {:.2f} dB, SSIM "
+          "{:.4f}, FLIP {:.4f}\n",
+          q.metrics.at("psnr_frame"), q.metrics.at("ssim_frame"), q.metrics.at("flip_frame"));
     }
     json["quality"] = metrics;
   }
@@ -114,16 +115,14 @@ int run(const RunOptions& o) {
       (out / "result.json").string(),
       json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
 
-  // The technique's own knobs, as set: the ones its frame depends on.
   std::vector<std::string> knobs;
-  for (const std::string& knob : pipeline::technique_knobs(config.technique)) {
+  for (const std::string& knob : pipeline::summary_knobs(config)) {
     if (!pipeline::knob_applies(config, knob)) continue;
     knobs.push_back(knob + " " + pipeline::get_config_field(config, knob));
   }
-  fmt::print("skinsim run: {} with {} on {} ({}), {}x{}{}{}{}\n", o.scene.label(),
-             pipeline::technique_name(config.technique), device.name, device.gpu, config.width,
-             config.height, knobs.empty() ? "" : ", ", fmt::join(knobs, ", "),
-             result.output.lod ? ", LOD shader" : "");
+  fmt::print("skinsim run: {} with {} on {} ({}), {}x{}{}{}{}\n", o.scene.label(), config.technique,
+             device.name, device.gpu, config.width, config.height, knobs.empty() ? "" : ", ",
+             fmt::join(knobs, ", "), result.output.lod ? ", LOD shader" : "");
   fmt::print("{}", gpu_model::format_frame_table(result.timing));
   written.push_back("result.json");
   run_directory.commit();

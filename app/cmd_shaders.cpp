@@ -1,11 +1,13 @@
 // `skinsim shaders`: every shader's op profile, like an offline shader compiler's report.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <iostream>
 
 #include "app/commands.h"
 #include "driver/result_json.h"
 #include "pipeline/shader_catalog.h"
+#include "pipeline/technique.h"
 
 namespace skinsim::app {
 
@@ -18,21 +20,24 @@ Command add_shaders_command(CLI::App& app) {
     const auto catalog = pipeline::shader_catalog();
     if (*json) {
       nlohmann::json out = nlohmann::json::array();
-      for (const auto& s : catalog) {
+      for (const auto& [s, techniques] : catalog) {
         nlohmann::json entry = driver::to_json(s.profile);
         entry["name"] = s.name;
+        entry["techniques"] = techniques;
         out.push_back(entry);
       }
       fmt::print("{}\n", out.dump(2));
       return 0;
     }
-    fmt::print("{:<30} {:>6} {:>6} {:>6} {:>6} {:>7} {:>6} {:>7}\n", "shader", "vector",
-               "scalar", "transc", "tex_in", "tex_dep", "inputs", "outputs");
-    for (const auto& s : catalog) {
+    fmt::print("{:<30} {:>6} {:>6} {:>6} {:>6} {:>7} {:>6} {:>7}  {}\n", "shader", "vector",
+               "scalar", "transc", "tex_in", "tex_dep", "inputs", "outputs", "techniques");
+    for (const auto& [s, techniques] : catalog) {
       const sim::OpProfile& p = s.profile;
-      fmt::print("{:<30} {:>6} {:>6} {:>6} {:>6} {:>7} {:>6} {:>7}\n", s.name, p.vector_ops,
+      const bool every = techniques.size() == pipeline::all_techniques().size();
+      fmt::print("{:<30} {:>6} {:>6} {:>6} {:>6} {:>7} {:>6} {:>7}  {}\n", s.name, p.vector_ops,
                  p.scalar_ops, p.transcendental_ops, p.texture_reads_independent,
-                 p.texture_reads_dependent, p.input_floats, p.output_floats);
+                 p.texture_reads_dependent, p.input_floats, p.output_floats,
+                 every ? std::string("all") : fmt::format("{}", fmt::join(techniques, ",")));
     }
     return 0;
   };

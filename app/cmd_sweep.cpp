@@ -13,11 +13,11 @@
 #include "app/cli_options.h"
 #include "app/commands.h"
 #include "driver/sweep_file.h"
-#include "io/temp_files.h"
 #include "driver/sweep_report.h"
 #include "driver/sweep_results.h"
 #include "driver/sweep_run.h"
 #include "driver/sweep_spec.h"
+#include "io/temp_files.h"
 #include "reports/pareto.h"
 
 namespace skinsim::app {

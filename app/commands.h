@@ -16,5 +16,7 @@ Command add_sweep_command(CLI::App& app);
 Command add_microbench_command(CLI::App& app);
 Command add_check_command(CLI::App& app);
 Command add_baseline_command(CLI::App& app);
+Command add_techniques_command(CLI::App& app);
+Command add_knobs_command(CLI::App& app);
 
 }  // namespace skinsim::app

@@ -1,9 +1,9 @@
 // skinsim: emulate a mobile tile-based GPU running skin-rendering pipelines, and model what
 // each costs on a device.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <exception>
 #include <filesystem>
@@ -56,8 +56,8 @@ void check_raw_arguments(CLI::App& app, int argc, char** argv) {
   for (const CLI::App* sub : app.get_subcommands({})) known.push_back(sub->get_name());
   if (argc > 1 && argv[1][0] != '-' &&
       std::find(known.begin(), known.end(), argv[1]) == known.end()) {
-    throw skinsim::UserError(fmt::format("unknown subcommand '{}' (known: {})", argv[1],
-                                         fmt::join(known, ", ")));
+    throw skinsim::UserError(
+        fmt::format("unknown subcommand '{}' (known: {})", argv[1], fmt::join(known, ", ")));
   }
   for (int i = 1; i < argc; ++i) {
     const std::string_view arg = argv[i];
@@ -78,7 +78,9 @@ int main(int argc, char** argv) {
       "pipelines, and model their cost per device"};
   app.require_subcommand(1);
   std::map<const CLI::App*, skinsim::app::Command> commands;
-  auto add = [&](skinsim::app::Command c) { commands[app.get_subcommands({}).back()] = std::move(c); };
+  auto add = [&](skinsim::app::Command c) {
+    commands[app.get_subcommands({}).back()] = std::move(c);
+  };
   add(skinsim::app::add_run_command(app));
   add(skinsim::app::add_devices_command(app));
   add(skinsim::app::add_shaders_command(app));
@@ -86,6 +88,8 @@ int main(int argc, char** argv) {
   add(skinsim::app::add_microbench_command(app));
   add(skinsim::app::add_check_command(app));
   add(skinsim::app::add_baseline_command(app));
+  add(skinsim::app::add_techniques_command(app));
+  add(skinsim::app::add_knobs_command(app));
   const int parsed = report_errors("skinsim", [&] {  // knobs validate as they are parsed
     check_raw_arguments(app, argc, argv);
     try {

@@ -7,7 +7,6 @@
 #include "pipeline/config.h"
 #include "pipeline/frame.h"
 #include "pipeline/gpu_scene.h"
-#include "pipeline/skin_pipeline.h"
 
 namespace skinsim::driver {
 

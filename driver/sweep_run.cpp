@@ -20,10 +20,10 @@
 #include "driver/sweep_progress.h"
 #include "driver/sweep_reference.h"
 #include "gpu_model/profile_loader.h"
-#include "pipeline/skin_pipeline.h"
-#include "quality/image.h"
 #include "io/atomic_file.h"
 #include "io/read_file.h"
+#include "pipeline/frame.h"
+#include "quality/image.h"
 #include "util/fingerprint.h"
 
 namespace skinsim::driver {
@@ -103,8 +103,7 @@ void compute(const fs::path& dir, const Job& job) {
   if (const std::string bad = non_finite_figure(stored.row); !bad.empty()) throw SweepError(bad);
   stored.heatmap = pass_heatmap(frame, kHeatmapPass, id);
   add_sensitivity(frame, *job.device, stored);
-  io::write_file_atomically((dir / config_json_path(id)).string(),
-                                 to_json(stored).dump(1) + "\n");
+  io::write_file_atomically((dir / config_json_path(id)).string(), to_json(stored).dump(1) + "\n");
 }
 
 }  // namespace
@@ -134,8 +133,8 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
       const gpu_model::DeviceProfile& device =
           devices.emplace(c.device, gpu_model::load_device_profile(c.device, options.data_dir))
               .first->second;
-      device_fingerprints[c.device] = content_fingerprint(
-          io::read_regular_file(device.source_path, "device profile"));
+      device_fingerprints[c.device] =
+          content_fingerprint(io::read_regular_file(device.source_path, "device profile"));
     }
   }
   fs::create_directories(dir / "configs");

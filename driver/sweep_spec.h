@@ -12,6 +12,7 @@
 
 #include "driver/scene_source.h"
 #include "pipeline/config.h"
+#include "pipeline/technique.h"
 #include "util/user_error.h"
 
 namespace skinsim::driver {

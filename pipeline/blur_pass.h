@@ -14,7 +14,7 @@ namespace skinsim::pipeline {
 // Blurs `source` along `axis` ((1,0) or (0,1)) with standard deviation `sigma_texels` into
 // `target`, rendering only the tiles of `rect` (the skin's bounding rectangle).
 sim::PassCounters blur_pass(const std::string& name, const sim::RenderTarget& source,
-                            sim::RenderTarget& target, const sim::PixelRect& rect,
-                            glm::vec2 axis, float sigma_texels, sim::Gpu& gpu);
+                            sim::RenderTarget& target, const sim::PixelRect& rect, glm::vec2 axis,
+                            float sigma_texels, sim::Gpu& gpu);
 
 }  // namespace skinsim::pipeline

@@ -2,14 +2,12 @@
 // files, validated with messages that name the field.
 #pragma once
 
+#include <glm/vec3.hpp>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include <glm/vec3.hpp>
-
-#include "pipeline/technique.h"
 #include "sim/texture.h"
 #include "util/user_error.h"
 
@@ -42,7 +40,7 @@ struct SpecularLobe {
 inline constexpr int kMaxBurleySamples = 64;
 
 struct PipelineConfig {
-  Technique technique = Technique::kMobile;
+  std::string technique = "mobile";  // a name from the registry (technique.h)
   // Integration (irradiance) buffer size per axis, as a fraction of the render resolution.
   float buffer_scale = 0.5f;
   int lut_width = 32;    // BRDF LUT: N.H axis
@@ -59,7 +57,7 @@ struct PipelineConfig {
   SpecularLobe lobe1{0.3f, 0.85f};
   SpecularLobe lobe2{0.6f, 0.15f};
   float specular_intensity = 0.18f;  // rho_s, d'Eon & Luebke
-  int width = 0;   // render resolution; 0 = the device's display
+  int width = 0;                     // render resolution; 0 = the device's display
   int height = 0;
   float lod_distance_m = 2.0f;  // beyond this camera distance the single-pass shader runs
 
@@ -76,18 +74,15 @@ struct PipelineConfig {
   std::optional<glm::vec3> burley_distance_mm;
   int texture_space_size = 1024;  // texture-space diffusion buffers, texels per axis
 
-  // Throws ConfigError naming the field when a value is out of range.
+  // Throws ConfigError naming the knob when a value is out of range (each row of the knob
+  // table checks its own; knobs.cpp).
   void validate() const;
 };
 
-// Sets one knob by name from text, the single entry point for the CLI, sweep files and
-// budget files. Keys: technique, scale, lut, lut_format, blur_iterations, blur_width_mm,
-// normal_offset_mm, gamma, lobe1, lobe2 ("roughness,weight"), specular_intensity,
-// resolution ("WxH"), lod_distance_m, specular (ks_lut|ks|ggx|dual_ggx), preintegrated_lut
-// ("WxH"), curvature (vertex|derivatives), wrap, burley_samples, burley_distance_mm
-// ("r,g,b" or auto), texture_space_size. Throws ConfigError naming the key.
+// Sets one knob by name from text (a row of the knob table, knob.h), the single entry point
+// for the CLI, sweep files and budget files. Throws ConfigError naming the key.
 void set_config_field(PipelineConfig& config, const std::string& key, const std::string& value);
-// The knob names set_config_field accepts, and the current value of each as text.
+// The knob names set_config_field accepts (all_knobs() in order), and the value of each as text.
 const std::vector<std::string>& config_field_names();
 std::string get_config_field(const PipelineConfig& config, const std::string& key);
 

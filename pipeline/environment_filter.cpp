@@ -29,7 +29,8 @@ std::vector<Sample> gather_samples(const scene::CubeMap& src) {
         glm::vec3 sum(0.0f);
         for (int j = 0; j < step; ++j) {
           for (int i = 0; i < step; ++i) {
-            sum += glm::vec3(src.faces[f][static_cast<size_t>(y * step + j) * src.size + x * step + i]);
+            sum += glm::vec3(
+                src.faces[f][static_cast<size_t>(y * step + j) * src.size + x * step + i]);
           }
         }
         const float s = 2.0f * (x + 0.5f) / n - 1.0f, t = 2.0f * (y + 0.5f) / n - 1.0f;
@@ -54,7 +55,8 @@ scene::CubeMap cosine_filter(const scene::CubeMap& src, int out_size) {
     out.faces[f].resize(static_cast<size_t>(out_size) * out_size);
     tbb::parallel_for(0, out_size, [&](int y) {
       for (int x = 0; x < out_size; ++x) {
-        const float s = 2.0f * (x + 0.5f) / out_size - 1.0f, t = 2.0f * (y + 0.5f) / out_size - 1.0f;
+        const float s = 2.0f * (x + 0.5f) / out_size - 1.0f,
+                    t = 2.0f * (y + 0.5f) / out_size - 1.0f;
         const glm::vec3 n = glm::normalize(scene::cube_face_direction(f, s, t));
         glm::vec3 e(0.0f);
         for (const Sample& smp : samples) {

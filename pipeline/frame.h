@@ -35,4 +35,8 @@ struct FrameOutput {
 // Renders one frame of `config.technique` (config validated, resolution resolved).
 FrameOutput render_frame(const GpuScene& scene, const PipelineConfig& config, sim::Gpu& gpu);
 
+// Render resolution for a config: its own, or the given default (the device's display).
+std::pair<int, int> render_size(const PipelineConfig& config, int default_width,
+                                int default_height);
+
 }  // namespace skinsim::pipeline

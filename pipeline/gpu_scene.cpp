@@ -26,7 +26,8 @@ sim::Texture2D solid_texture(const std::string& name, glm::vec4 value) {
 
 GpuScene::GpuScene(const scene::Scene& scene) : scene_(scene) {
   std::vector<const sim::Texture2D*> images;
-  for (const scene::Image& image : scene.images) images.push_back(add_texture(image_texture(image)));
+  for (const scene::Image& image : scene.images)
+    images.push_back(add_texture(image_texture(image)));
   const sim::Texture2D* white = add_texture(solid_texture("white", glm::vec4(1.0f)));
   const sim::Texture2D* flat = add_texture(solid_texture("flat_normal", {0.5f, 0.5f, 1.0f, 1.0f}));
 
@@ -60,10 +61,9 @@ GpuScene::GpuScene(const scene::Scene& scene) : scene_(scene) {
   environment_ = sim::TextureCube("environment", env.size, env.faces, sim::TexelFormat::kRGBA16F,
                                   {sim::Filter::kTrilinear, sim::Wrap::kClamp}, true);
   const scene::CubeMap diffuse = cosine_filter(env, 16);
-  environment_diffuse_ =
-      sim::TextureCube("environment_diffuse", diffuse.size, diffuse.faces,
-                       sim::TexelFormat::kRGBA16F, {sim::Filter::kBilinear, sim::Wrap::kClamp},
-                       false);
+  environment_diffuse_ = sim::TextureCube("environment_diffuse", diffuse.size, diffuse.faces,
+                                          sim::TexelFormat::kRGBA16F,
+                                          {sim::Filter::kBilinear, sim::Wrap::kClamp}, false);
 }
 
 const sim::Texture2D* GpuScene::add_texture(sim::Texture2D texture) {

@@ -68,8 +68,8 @@ struct View {
   // Perspective: pixels per unit of world size at distance 1. Orthographic: pixels per
   // unit of world size at any distance.
   float focal_pixels = 0.0f;
-  float skin_distance = 0.0f;      // camera to the skin bounding-box centre (world units)
-  sim::PixelRect skin_rect;        // screen bounding rectangle of all skin (pixels)
+  float skin_distance = 0.0f;  // camera to the skin bounding-box centre (world units)
+  sim::PixelRect skin_rect;    // screen bounding rectangle of all skin (pixels)
   bool skin_visible = false;
   // Pixels per world unit on a surface `distance` units from the camera.
   float pixels_per_unit(float distance) const {

@@ -9,93 +9,48 @@
 
 namespace skinsim::pipeline {
 
-const char* technique_name(Technique t) {
-  switch (t) {
-    case Technique::kMobile:
-      return "mobile";
-    case Technique::kLod:
-      return "lod";
-    case Technique::kPreintegrated:
-      return "preintegrated";
-    case Technique::kWrap:
-      return "wrap";
-    case Technique::kBurley:
-      return "burley";
-    case Technique::kSsss:
-      return "ssss";
-    case Technique::kTextureSpace:
-      return "texture-space";
-  }
-  return "?";
-}
-
-const std::vector<Technique>& all_techniques() {
-  static const std::vector<Technique> all = {
-      Technique::kMobile, Technique::kLod,  Technique::kPreintegrated, Technique::kWrap,
-      Technique::kBurley, Technique::kSsss, Technique::kTextureSpace};
-  return all;
-}
-
 std::vector<std::string> technique_names() {
   std::vector<std::string> names;
-  for (const Technique t : all_techniques()) names.emplace_back(technique_name(t));
+  for (const TechniqueSpec* t : all_techniques()) names.push_back(t->name);
   return names;
 }
 
-const std::vector<std::string>& technique_knobs(Technique t) {
-  // Every skin shader takes the specular model; the BRDF LUT knobs matter only when it is
-  // ks_lut, the one model that reads the LUT (knob_applies).
-  static const std::vector<std::string> mobile = {"scale",          "lut",
-                                                  "lut_format",     "blur_iterations",
-                                                  "blur_width_mm",  "normal_offset_mm",
-                                                  "lod_distance_m", "specular"};
-  static const std::vector<std::string> lod = {"specular", "lut", "lut_format"};
-  static const std::vector<std::string> preintegrated = {"preintegrated_lut", "curvature",
-                                                         "specular", "lut", "lut_format"};
-  static const std::vector<std::string> wrap = {"wrap", "specular", "lut", "lut_format"};
-  static const std::vector<std::string> burley = {"burley_samples", "burley_distance_mm",
-                                                  "specular", "lut", "lut_format"};
-  static const std::vector<std::string> ssss = {"specular", "lut", "lut_format"};
-  static const std::vector<std::string> texture_space = {"texture_space_size", "specular", "lut",
-                                                         "lut_format"};
-  switch (t) {
-    case Technique::kMobile:
-      return mobile;
-    case Technique::kLod:
-      return lod;
-    case Technique::kPreintegrated:
-      return preintegrated;
-    case Technique::kWrap:
-      return wrap;
-    case Technique::kBurley:
-      return burley;
-    case Technique::kSsss:
-      return ssss;
-    case Technique::kTextureSpace:
-      return texture_space;
-  }
-  return ssss;
-}
-
-bool knob_applies(const PipelineConfig& config, const std::string& knob) {
-  static const std::vector<std::string> common = {"technique", "resolution", "gamma",
-                                                  "lobe1",     "lobe2",      "specular_intensity"};
-  const auto has = [&](const std::vector<std::string>& knobs) {
-    return std::find(knobs.begin(), knobs.end(), knob) != knobs.end();
-  };
-  if (has(common)) return true;
-  if ((knob == "lut" || knob == "lut_format") && config.specular != SpecularModel::kKsLut) {
-    return false;
-  }
-  return has(technique_knobs(config.technique));
-}
-
-Technique parse_technique(const std::string& name) {
-  for (const Technique t : all_techniques()) {
-    if (name == technique_name(t)) return t;
+const TechniqueSpec& find_technique(const std::string& name) {
+  for (const TechniqueSpec* t : all_techniques()) {
+    if (t->name == name) return *t;
   }
   throw ConfigError(
       fmt::format("technique: unknown '{}' (known: {})", name, fmt::join(technique_names(), ", ")));
+}
+
+std::vector<std::string> technique_knobs(const std::string& technique) {
+  std::vector<std::string> names;
+  for (const KnobSpec& k : find_technique(technique).knobs) names.push_back(k.name);
+  return names;
+}
+
+bool knob_applies(const PipelineConfig& config, const std::string& knob) {
+  const auto named = [&](const KnobSpec& k) { return k.name == knob; };
+  const std::vector<KnobSpec>& common = common_knobs();
+  const std::vector<KnobSpec>& own = find_technique(config.technique).knobs;
+  auto it = std::find_if(common.begin(), common.end(), named);
+  if (it == common.end()) {
+    it = std::find_if(own.begin(), own.end(), named);
+    if (it == own.end()) return false;
+  }
+  return !it->applies || it->applies(config);
+}
+
+std::vector<std::string> summary_knobs(const PipelineConfig& config) {
+  std::vector<std::string> names = technique_knobs(config.technique);
+  for (const char* shading : {"specular", "lut", "lut_format"}) {
+    if (knob_applies(config, shading)) names.emplace_back(shading);
+  }
+  return names;
+}
+
+bool reads_brdf_lut(const PipelineConfig& config) {
+  return config.specular == SpecularModel::kKsLut;
 }
 
 }  // namespace skinsim::pipeline

@@ -1,39 +1,56 @@
-// The skin-rendering techniques skinsim compares. Each is a frame of render passes on the
-// emulated GPU (frame.h dispatches); all are judged against the same reference.
-// docs/techniques.md describes each one's passes, shaders and knobs.
+// The skin-rendering techniques skinsim compares, as a registry. Each technique is one folder,
+// pipeline/techniques/<name>/: its passes, the shader programs it instantiates, its own knobs
+// and a TechniqueSpec, listed once in pipeline/techniques/registry.cpp. The CLI, sweeps, the
+// shader report, result.json and the report read the registry; docs/techniques.md describes
+// each one.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "pipeline/knob.h"
+#include "sim/op_profile.h"
+
+namespace skinsim::sim {
+class Gpu;
+}
+
 namespace skinsim::pipeline {
 
-struct PipelineConfig;
+class GpuScene;
+struct FrameOutput;
 
-enum class Technique {
-  kMobile,         // GPU Pro 5 screen-space irradiance pipeline (the primary one)
-  kLod,            // its single-pass distant-skin shader, at any distance
-  kPreintegrated,  // Penner & Borshukov pre-integrated skin, single pass
-  kWrap,           // light wrapping, single pass: the cheapest baseline
-  kBurley,         // screen-space Burley normalized diffusion, importance-sampled taps
-  kSsss,           // Jimenez separable screen-space SSS at full resolution
-  kTextureSpace,   // d'Eon & Luebke texture-space diffusion: the expensive baseline
+struct TechniqueSpec {
+  std::string name;     // --technique, sweep axes, result.json, golden data folder
+  std::string passes;   // its render passes in order, e.g. "irradiance, blur_h, blur_v, skin"
+  std::string summary;  // what it is, one line
+  // Knobs only this technique uses (rows of the knob table); every technique also uses
+  // common_knobs().
+  std::vector<KnobSpec> knobs;
+  // Renders one frame (config validated, resolution resolved).
+  FrameOutput (*render)(const GpuScene& scene, const PipelineConfig& config, sim::Gpu& gpu);
+  // The programs it can run, with default uniforms, for `skinsim shaders`.
+  std::vector<sim::NamedProfile> (*shaders)();
 };
 
-const char* technique_name(Technique technique);
-// Parses a name from technique_names(); throws ConfigError listing the known ones.
-Technique parse_technique(const std::string& name);
-const std::vector<Technique>& all_techniques();
+// Every technique, in registry order (the first is the default).
+const std::vector<const TechniqueSpec*>& all_techniques();
 std::vector<std::string> technique_names();
+// The technique called `name`; throws ConfigError listing the known ones.
+const TechniqueSpec& find_technique(const std::string& name);
 
-// The knobs (set_config_field keys) a technique's frame depends on besides the ones every
-// technique uses (technique, resolution, gamma, lobe1, lobe2, specular_intensity). A sweep
-// that varies any other knob renders the same frame again for this technique.
-const std::vector<std::string>& technique_knobs(Technique technique);
+// The knob names a technique's frame depends on besides the common ones: its own knobs.
+std::vector<std::string> technique_knobs(const std::string& technique);
 
-// Whether a frame rendered with `config` depends on `knob` (a set_config_field key): a knob
-// every technique uses, or one of technique_knobs(config.technique) — lut and lut_format
-// only with the ks_lut specular model, the one that reads the BRDF LUT.
+// Whether a frame rendered with `config` depends on `knob`: a common knob or one of the
+// technique's own, and the knob's own condition (KnobSpec::applies) holds.
 bool knob_applies(const PipelineConfig& config, const std::string& knob);
+
+// The knobs a one-line summary of a frame names: the technique's own, then the specular model
+// and, when it reads it, the BRDF LUT's (the common knobs that tell techniques' frames apart).
+std::vector<std::string> summary_knobs(const PipelineConfig& config);
+
+// Whether the config's specular model reads the BRDF LUT (ks_lut; the others evaluate in ALU).
+bool reads_brdf_lut(const PipelineConfig& config);
 
 }  // namespace skinsim::pipeline

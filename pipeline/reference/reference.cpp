@@ -26,9 +26,9 @@ struct GBuffer {
 };
 
 template <class FS>
-sim::PassCounters gbuffer_pass(const GpuScene& gs, const View& view, sim::RenderTarget& target,
-                               sim::Gpu& gpu,
-                               const std::function<typename FS::Uniforms(const GpuMaterial&)>& uniforms) {
+sim::PassCounters gbuffer_pass(
+    const GpuScene& gs, const View& view, sim::RenderTarget& target, sim::Gpu& gpu,
+    const std::function<typename FS::Uniforms(const GpuMaterial&)>& uniforms) {
   auto vs = sim::make_vertex_program<shaders::SurfaceVS>({view.view_proj, 0.0f});
   sim::RenderPassDesc pass;
   pass.name = target.name;
@@ -67,18 +67,18 @@ GBuffer render_gbuffer(const GpuScene& gs, const View& view, int w, int h, int t
             {"ref_albedo", w, h, sim::TexelFormat::kRGBA32F},
             {"ref_vertex_normal", w, h, sim::TexelFormat::kRGBA32F},
             {"ref_nonskin", w, h, sim::TexelFormat::kRGBA32F}};
-  gbuffer_pass<reference::PositionFS>(
-      gs, view, g.position, gpu, [](const GpuMaterial& m) { return reference::PositionFS::Uniforms{kind_code(m.kind)}; });
-  gbuffer_pass<reference::ShadingNormalFS>(
-      gs, view, g.normal, gpu,
-      [](const GpuMaterial& m) {
-        return reference::ShadingNormalFS::Uniforms{m.reflectivity, m.kind == MaterialKind::kSkin};
-      });
-  gbuffer_pass<reference::AlbedoFS>(
-      gs, view, g.albedo, gpu,
-      [](const GpuMaterial& m) { return reference::AlbedoFS::Uniforms{glm::vec3(m.base_color_factor)}; });
-  gbuffer_pass<reference::VertexNormalFS>(
-      gs, view, g.vertex_normal, gpu, [](const GpuMaterial&) { return reference::VertexNormalFS::Uniforms{}; });
+  gbuffer_pass<reference::PositionFS>(gs, view, g.position, gpu, [](const GpuMaterial& m) {
+    return reference::PositionFS::Uniforms{kind_code(m.kind)};
+  });
+  gbuffer_pass<reference::ShadingNormalFS>(gs, view, g.normal, gpu, [](const GpuMaterial& m) {
+    return reference::ShadingNormalFS::Uniforms{m.reflectivity, m.kind == MaterialKind::kSkin};
+  });
+  gbuffer_pass<reference::AlbedoFS>(gs, view, g.albedo, gpu, [](const GpuMaterial& m) {
+    return reference::AlbedoFS::Uniforms{glm::vec3(m.base_color_factor)};
+  });
+  gbuffer_pass<reference::VertexNormalFS>(gs, view, g.vertex_normal, gpu, [](const GpuMaterial&) {
+    return reference::VertexNormalFS::Uniforms{};
+  });
 
   // Eyes and background: the same shaders as the pipelines (not what is studied), in float.
   const scene::Scene& sc = gs.scene();
@@ -291,7 +291,8 @@ ReferenceFrame render_reference(const GpuScene& gs, const PipelineConfig& config
       const glm::vec3 env =
           sample_cube(gs.environment_diffuse(), glm::vec3(g.vertex_normal.at(x, y)));
       const glm::vec3 color = diffuse + specular + env * fresnel * reflectivity;
-      out.frame.at(x, y) = glm::vec4(srgb_encode(color.r), srgb_encode(color.g), srgb_encode(color.b), 1.0f);
+      out.frame.at(x, y) =
+          glm::vec4(srgb_encode(color.r), srgb_encode(color.g), srgb_encode(color.b), 1.0f);
     }
   });
   return out;

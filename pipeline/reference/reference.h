@@ -19,7 +19,7 @@
 namespace skinsim::pipeline {
 
 struct ReferenceFrame {
-  sim::RenderTarget frame;  // display-encoded RGBA32F, alpha 1
+  sim::RenderTarget frame;              // display-encoded RGBA32F, alpha 1
   std::vector<std::uint8_t> skin_mask;  // 1 where skin is the visible surface
 };
 

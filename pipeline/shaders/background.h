@@ -22,7 +22,8 @@ struct BackgroundFS {
     const vec4 base = tex.sample(0, in.texcoord(SurfaceSlots::kUv));
     const vec3 n = sl::normalize(in.v3(SurfaceSlots::kNormal));
     const vec3 albedo = decode_gamma<GammaMode::kSquare>(sl::xyz(base)) * u.albedo_factor;
-    const vec3 light = vec3(u.light_radiance) * sl::saturate(sl::dot(n, vec3(u.light_dir))) + vec3(u.ambient);
+    const vec3 light =
+        vec3(u.light_radiance) * sl::saturate(sl::dot(n, vec3(u.light_dir))) + vec3(u.ambient);
     return vec4(encode_gamma<GammaMode::kSquare>(albedo * light), 1.0f);
   }
 };

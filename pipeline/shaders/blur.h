@@ -1,8 +1,9 @@
 // Pass 2 of the GPU Pro 5 pipeline: one axis of a separable Gaussian over the integration
 // buffer, normalised by the taps' alpha (skin coverage) so light does not leak between skin
 // and background. The buffer is premultiplied (rgb = light x coverage; the background is
-// cleared to 0), which keeps the normalisation exact under bilinear filtering at the edge. Tap coordinates are computed in the vertex shader and
-// interpolated, so every tap is an independent read (PowerVR performance guidelines).
+// cleared to 0), which keeps the normalisation exact under bilinear filtering at the edge. Tap
+// coordinates are computed in the vertex shader and interpolated, so every tap is an independent
+// read (PowerVR performance guidelines).
 #pragma once
 
 #include <array>
@@ -51,8 +52,8 @@ struct BlurFS {
     for (int i = 0; i < kBlurTaps; ++i) {
       const vec4 t = tex.sample(0, in.texcoord(2 * i));
       if (i == kBlurTaps / 2) centre = t;
-      sum = sum + sl::xyz(t) * u.weights[i];                  // premultiplied light
-      weight_sum = weight_sum + sl::w(t) * u.weights[i];       // skin coverage of the taps
+      sum = sum + sl::xyz(t) * u.weights[i];              // premultiplied light
+      weight_sum = weight_sum + sl::w(t) * u.weights[i];  // skin coverage of the taps
     }
     // Normalised light where there is skin, premultiplied again by the centre's coverage.
     const vec3 blurred = sum * (sl::w(centre) / sl::max(weight_sum, 1e-4f));

@@ -15,7 +15,7 @@ struct EyeFS {
     glm::vec3 light_radiance{1.0f};
     glm::vec3 ambient{0.0f};
     glm::vec3 albedo_factor{1.0f};
-    float cornea_f0 = 0.04f;   // water-like cornea, IOR ~1.38
+    float cornea_f0 = 0.04f;  // water-like cornea, IOR ~1.38
     float highlight_power = 256.0f;
   };
   static constexpr int kAlbedo = 0;
@@ -38,7 +38,8 @@ struct EyeFS {
     const auto fresnel = u.cornea_f0 + (1.0f - u.cornea_f0) * (one_minus2 * one_minus2 * one_minus);
     const auto highlight = sl::pow(sl::saturate(sl::dot(n, h)), u.highlight_power);
     const vec3 albedo = decode_gamma<GammaMode::kSquare>(sl::xyz(base)) * u.albedo_factor;
-    const vec3 diffuse = albedo * (vec3(u.light_radiance) * sl::saturate(sl::dot(n, l)) + vec3(u.ambient));
+    const vec3 diffuse =
+        albedo * (vec3(u.light_radiance) * sl::saturate(sl::dot(n, l)) + vec3(u.ambient));
     const vec3 color = diffuse + vec3(u.light_radiance) * highlight + sl::xyz(env) * fresnel;
     return vec4(encode_gamma<GammaMode::kSquare>(color), 1.0f);
   }

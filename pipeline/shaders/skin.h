@@ -34,8 +34,8 @@ struct SkinFS {
     // The buffer holds blurred light premultiplied by coverage a; where a < 1 (silhouettes)
     // the sharp light fills in: mix(sharp, blurred / a, layer_mix * a).
     const vec3 wide = vec3(u.layer_mix);
-    const vec3 diffuse_light = sharp * (1.0f - wide * sl::w(buffer)) +
-                               sl::xyz(buffer) * (wide * kIrradianceRange);
+    const vec3 diffuse_light =
+        sharp * (1.0f - wide * sl::w(buffer)) + sl::xyz(buffer) * (wide * kIrradianceRange);
     const Reflection<L> r = skin_specular<kSpec, L>(s, tex, u);
     const vec3 color = s.albedo * diffuse_light * r.diffuse_energy + r.light;
     return vec4(encode_gamma<kGamma>(color), 1.0f);

@@ -10,8 +10,7 @@
 namespace skinsim::pipeline {
 
 sim::PassCounters diffused_skin_pass(const GpuScene& scene, const View& view,
-                                     const PipelineConfig& config,
-                                     shaders::DiffusionSource source,
+                                     const PipelineConfig& config, shaders::DiffusionSource source,
                                      const sim::RenderTarget& diffused, sim::RenderTarget& frame,
                                      sim::Gpu& gpu);
 

@@ -7,6 +7,7 @@
 #include "pipeline/brdf_lut_texture.h"
 #include "pipeline/frame.h"
 #include "pipeline/shaders/technique_bindings.h"
+#include "pipeline/technique.h"
 
 namespace skinsim::pipeline {
 
@@ -19,7 +20,7 @@ inline FrameOutput start_frame(const GpuScene& scene, const PipelineConfig& conf
 
 // The BRDF LUT, only for the ks_lut specular model (the others evaluate in ALU).
 inline std::shared_ptr<const BrdfLutTexture> brdf_lut_for(const PipelineConfig& config) {
-  if (config.specular != SpecularModel::kKsLut) return nullptr;
+  if (!reads_brdf_lut(config)) return nullptr;
   return BrdfLutTexture::shared(config);
 }
 

@@ -11,7 +11,6 @@ On a mismatch the new frame and a difference image are written to OUT_DIR/TECHNI
 """
 import json
 import os
-import re
 import struct
 import subprocess
 import sys
@@ -193,15 +192,16 @@ def check_technique(skinsim, data_dir, out_dir, technique, update):
 
 
 def check_coverage(skinsim, data_dir):
-    """Every technique `skinsim run --help` lists has a golden, and every golden a technique."""
-    help_text = subprocess.run([skinsim, "run", "--help"], check=True, capture_output=True,
-                               text=True).stdout
-    listed = re.search(r"--technique\s+\S+\s+Skin technique: ([^\n]+)", help_text)
-    techniques = {t.strip() for t in listed.group(1).split(",")}
+    """Every technique of the registry (`skinsim techniques --json`) has a golden, and every
+    golden a technique."""
+    listed = subprocess.run([skinsim, "techniques", "--json"], check=True, capture_output=True,
+                            text=True).stdout
+    techniques = {t["name"] for t in json.loads(listed)}
     stored = {d for d in os.listdir(data_dir) if os.path.isdir(os.path.join(data_dir, d))}
     for missing in sorted(techniques - stored):
-        print(f"golden: technique '{missing}' has no golden in {data_dir}; add it to "
-              f"tests/golden/CMakeLists.txt and run SKINSIM_UPDATE_GOLDEN=1 ctest -R golden")
+        print(f"golden: technique '{missing}' has no golden in {data_dir}; record it with "
+              f"tests/golden/golden_test.py SKINSIM {data_dir} OUT {missing} --update, "
+              f"review the frame, and re-run cmake so that golden.{missing} exists")
     for stale in sorted(stored - techniques):
         print(f"golden: {data_dir}/{stale} belongs to no technique; remove it")
     return techniques == stored

@@ -2,6 +2,9 @@
 // round trips, defaults, and errors that name the key.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <set>
+
 #include "pipeline/config.h"
 #include "pipeline/technique.h"
 
@@ -46,22 +49,32 @@ TEST(TechniqueConfig, KnobsRoundTrip) {
   }
 }
 
-TEST(TechniqueConfig, TechniqueKnobsAreKnownKeys) {
+TEST(TechniqueConfig, TechniqueKnobsAreKnownKeysOwnedByOneTechnique) {
   const auto& names = config_field_names();
-  for (const Technique t : all_techniques()) {
-    for (const std::string& knob : technique_knobs(t)) {
+  std::set<std::string> owned;
+  for (const TechniqueSpec* t : all_techniques()) {
+    for (const std::string& knob : technique_knobs(t->name)) {
       EXPECT_NE(std::find(names.begin(), names.end(), knob), names.end())
-          << technique_name(t) << ": " << knob;
+          << t->name << ": " << knob;
+      EXPECT_TRUE(owned.insert(knob).second) << knob << " is owned by two techniques";
     }
   }
-  const auto& mobile = technique_knobs(Technique::kMobile);
+  const auto mobile = technique_knobs("mobile");
   EXPECT_NE(std::find(mobile.begin(), mobile.end(), "scale"), mobile.end());
-  for (const Technique t : all_techniques()) {
-    const auto& knobs = technique_knobs(t);
-    EXPECT_NE(std::find(knobs.begin(), knobs.end(), "specular"), knobs.end()) << technique_name(t);
-  }
-  const auto& burley = technique_knobs(Technique::kBurley);
+  const auto burley = technique_knobs("burley");
   EXPECT_EQ(std::find(burley.begin(), burley.end(), "scale"), burley.end());
+  // Every name appears once in the table: common knobs and each technique's own.
+  EXPECT_EQ(std::set<std::string>(names.begin(), names.end()).size(), names.size());
+}
+
+TEST(TechniqueConfig, EveryTechniqueRendersThroughItsSpec) {
+  for (const TechniqueSpec* t : all_techniques()) {
+    EXPECT_NE(t->render, nullptr) << t->name;
+    EXPECT_FALSE(t->shaders().empty()) << t->name;
+    EXPECT_FALSE(t->summary.empty()) << t->name;
+    EXPECT_EQ(&find_technique(t->name), t);
+  }
+  EXPECT_THROW(find_technique("sss"), ConfigError);
 }
 
 TEST(TechniqueConfig, KnobAppliesFollowsTheTechniqueAndTheSpecularModel) {
@@ -88,9 +101,9 @@ TEST(TechniqueConfig, KnobAppliesFollowsTheTechniqueAndTheSpecularModel) {
 TEST(TechniqueConfig, EveryKnobAppliesToSomeTechnique) {
   for (const std::string& knob : config_field_names()) {
     bool used = false;
-    for (const Technique t : all_techniques()) {
+    for (const TechniqueSpec* t : all_techniques()) {
       PipelineConfig c;
-      c.technique = t;
+      c.technique = t->name;
       used = used || knob_applies(c, knob);
     }
     EXPECT_TRUE(used) << knob;

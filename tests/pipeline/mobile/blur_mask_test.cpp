@@ -13,7 +13,8 @@ TEST(BlurMask, SkinNextToBackgroundStaysUnchangedAtTheBorder) {
   sim::RenderTarget buffer("irradiance", w, h, sim::TexelFormat::kRGBA8);
   const glm::vec4 skin(0.2f, 0.3f, 0.4f, 1.0f), background(0.0f);
   for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) buffer.at(x, y) = sim::quantize(x < w / 2 ? skin : background, buffer.format);
+    for (int x = 0; x < w; ++x)
+      buffer.at(x, y) = sim::quantize(x < w / 2 ? skin : background, buffer.format);
   }
   sim::RenderTarget out("blurred", w, h, sim::TexelFormat::kRGBA8);
   sim::Gpu gpu(sim::GpuConfig{});

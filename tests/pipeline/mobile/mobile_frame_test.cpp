@@ -27,7 +27,7 @@ FrameOutput render(const GpuScene& gs, float scale, int blur_iterations = 1) {
 
 TEST(MobilePipeline, SkinShaderReadsFourIndependentAndOneDependentTexture) {
   bool found = false;
-  for (const sim::NamedProfile& s : shader_catalog()) {
+  for (const auto& [s, techniques] : shader_catalog()) {
     if (s.name != "skin_fs") continue;
     found = true;
     EXPECT_EQ(s.profile.texture_reads_independent, 4u);
@@ -43,13 +43,14 @@ TEST(MobilePipeline, PassesInOrderWithTheirTargets) {
   const FrameOutput f = render(gs, 0.5f, 2);
   std::vector<std::string> names;
   for (const auto& p : f.passes) names.push_back(p.name);
-  EXPECT_EQ(names, (std::vector<std::string>{"irradiance", "blur_h", "blur_v", "blur_h2",
-                                             "blur_v2", "skin"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"irradiance", "blur_h", "blur_v", "blur_h2", "blur_v2",
+                                             "skin"}));
   EXPECT_EQ(pass(f, "irradiance").width, 256);
   EXPECT_EQ(pass(f, "skin").width, 512);
   EXPECT_FALSE(f.lod);
   // Eyes are not in the irradiance buffer: only skin draws.
-  for (const auto& d : pass(f, "irradiance").draws) EXPECT_EQ(d.fragment_program, "skin_irradiance_fs");
+  for (const auto& d : pass(f, "irradiance").draws)
+    EXPECT_EQ(d.fragment_program, "skin_irradiance_fs");
   // The blur touches only the skin's bounding rectangle, not every tile of the buffer.
   EXPECT_LE(pass(f, "blur_h").tiles_rendered, static_cast<std::uint64_t>(8 * 6));
   ASSERT_EQ(f.intermediates.size(), 2u);
@@ -75,7 +76,7 @@ TEST(MobilePipeline, LodTechniqueIsOneSkinPass) {
   PipelineConfig c;
   c.width = 256;
   c.height = 192;
-  c.technique = Technique::kLod;
+  c.technique = "lod";
   sim::Gpu gpu(sim::GpuConfig{});
   const FrameOutput f = render_frame(gs, c, gpu);
   ASSERT_EQ(f.passes.size(), 1u);

@@ -18,8 +18,4 @@ enum class MobileMode {
 FrameOutput render_mobile_frame(const GpuScene& gpu_scene, const PipelineConfig& config,
                                 sim::Gpu& gpu, MobileMode mode);
 
-// Render resolution for a config: its own, or the given default (the device's display).
-std::pair<int, int> render_size(const PipelineConfig& config, int default_width,
-                                int default_height);
-
 }  // namespace skinsim::pipeline

@@ -1,17 +1,22 @@
-// Texture-space diffusion (d'Eon & Luebke, GPU Gems 3 ch. 14): irradiance in the skin's UV
-// layout, one incremental Gaussian blur per profile term, a weighted combine, and the
+// `texture-space`: texture-space diffusion (d'Eon & Luebke, GPU Gems 3 ch. 14): irradiance in the
+// skin's UV layout, one incremental Gaussian blur per profile term, a weighted combine, and the
 // `skin` render reading the result with the mesh UV (shaders/texture_space.h).
 #include "pipeline/shaders/texture_space.h"
 
 #include <fmt/format.h>
 
 #include "pipeline/blur_pass.h"
+#include "pipeline/knob_types.h"
+#include "pipeline/shader_variants.h"
+#include "pipeline/shaders/blur.h"
+#include "pipeline/shaders/diffused_skin.h"
+#include "pipeline/shaders/screen_diffusion.h"
+#include "pipeline/technique.h"
 #include "pipeline/techniques/diffused_skin_pass.h"
 #include "pipeline/techniques/frame_setup.h"
 #include "pipeline/techniques/kernels.h"
 #include "pipeline/techniques/screen_quad.h"
 #include "pipeline/techniques/skin_pass.h"
-#include "pipeline/techniques/techniques.h"
 #include "pipeline/techniques/uv_layout.h"
 
 namespace skinsim::pipeline {
@@ -51,10 +56,7 @@ sim::PassCounters uv_irradiance_pass(const GpuScene& gs, sim::RenderTarget& targ
   return gpu.execute(pass);
 }
 
-}  // namespace
-
-FrameOutput render_texture_space_frame(const GpuScene& gs, const PipelineConfig& cfg,
-                                       sim::Gpu& gpu) {
+FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, sim::Gpu& gpu) {
   require_skin_uvs(gs, "texture-space");
   FrameOutput out = start_frame(gs, cfg);
   const int size = cfg.texture_space_size;
@@ -96,6 +98,33 @@ FrameOutput render_texture_space_frame(const GpuScene& gs, const PipelineConfig&
   out.intermediates.push_back({"uv_irradiance", std::move(terms[0]), 0.5f});
   out.intermediates.push_back({"uv_diffused", std::move(combined), 0.5f});
   return out;
+}
+
+std::vector<sim::NamedProfile> programs() {
+  return {vertex_entry<shaders::UvSpaceVS>(),
+          fragment_entry<shaders::UvIrradianceFS>(),
+          vertex_entry<shaders::BlurVS>(),
+          fragment_entry<shaders::BlurFS>(),
+          vertex_entry<shaders::QuadVS>(),
+          fragment_entry<shaders::UvCombineFS>(),
+          fragment_entry<shaders::DiffusedSkinFS<GammaMode::kSquare, SpecularModel::kKsLut,
+                                                 shaders::DiffusionSource::kUv>>()};
+}
+
+}  // namespace
+
+const TechniqueSpec& texture_space_technique() {
+  static const TechniqueSpec spec{
+      .name = "texture-space",
+      .passes = "uv_irradiance, uv_blur_{1..5}_{h,v}, uv_combine, skin",
+      .summary = "d'Eon & Luebke texture-space diffusion (GPU Gems 3 ch. 14)",
+      .knobs = {integer_knob("texture_space_size", "--texture-space-size",
+                             "Texture-space diffusion buffer size per axis",
+                             &PipelineConfig::texture_space_size, 64, 4096, true)},
+      .render = render,
+      .shaders = programs,
+  };
+  return spec;
 }
 
 }  // namespace skinsim::pipeline

@@ -1,4 +1,4 @@
-#include "pipeline/skin_pipeline.h"
+#include "pipeline/techniques/mobile/mobile_frame.h"
 
 #include <fmt/format.h>
 
@@ -65,12 +65,6 @@ sim::PassCounters framebuffer_pass(const GpuScene& gs, const View& view, const P
 }
 
 }  // namespace
-
-std::pair<int, int> render_size(const PipelineConfig& config, int default_width,
-                                int default_height) {
-  if (config.width > 0) return {config.width, config.height};
-  return {default_width, default_height};
-}
 
 FrameOutput render_mobile_frame(const GpuScene& gs, const PipelineConfig& cfg, sim::Gpu& gpu,
                                 MobileMode mode) {

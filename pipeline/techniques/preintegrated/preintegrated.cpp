@@ -1,12 +1,13 @@
-// The one-pass techniques: pre-integrated skin and wrap lighting.
-#include <fmt/format.h>
+// `preintegrated`: Penner & Borshukov pre-integrated skin (GPU Pro 2, 2011), one pass: diffuse
+// from a (N.L, curvature) LUT, curvature baked per vertex or from screen-space derivatives.
+#include "pipeline/shaders/preintegrated.h"
 
 #include "pipeline/bake/preintegrated_lut.h"
-#include "pipeline/shaders/preintegrated.h"
-#include "pipeline/shaders/wrap.h"
+#include "pipeline/knob_types.h"
+#include "pipeline/shader_variants.h"
+#include "pipeline/technique.h"
 #include "pipeline/techniques/frame_setup.h"
 #include "pipeline/techniques/skin_pass.h"
-#include "pipeline/techniques/techniques.h"
 #include "pipeline/techniques/uv_layout.h"
 
 namespace skinsim::pipeline {
@@ -31,10 +32,7 @@ sim::RenderTarget preintegrated_lut_target(const PipelineConfig& cfg) {
   return t;
 }
 
-}  // namespace
-
-FrameOutput render_preintegrated_frame(const GpuScene& gs, const PipelineConfig& cfg,
-                                       sim::Gpu& gpu) {
+FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, sim::Gpu& gpu) {
   FrameOutput out = start_frame(gs, cfg);
   const auto brdf_lut = brdf_lut_for(cfg);
   sim::RenderTarget lut_target = preintegrated_lut_target(cfg);
@@ -67,18 +65,37 @@ FrameOutput render_preintegrated_frame(const GpuScene& gs, const PipelineConfig&
   return out;
 }
 
-FrameOutput render_wrap_frame(const GpuScene& gs, const PipelineConfig& cfg, sim::Gpu& gpu) {
-  FrameOutput out = start_frame(gs, cfg);
-  const auto brdf_lut = brdf_lut_for(cfg);
-  const auto shading = [&](const GpuMaterial& mat, sim::DrawCall& d) {
-    const shaders::TechniqueUniforms u = technique_uniforms(gs, out.view, cfg, mat);
-    d.fragment_program = with_gamma_and_specular(cfg, [&](auto gamma, auto spec) {
-      return sim::make_fragment_program<shaders::WrapFS<gamma(), spec()>>(u);
-    });
-    bind_brdf_lut(brdf_lut, d);
+std::vector<sim::NamedProfile> programs() {
+  constexpr GammaMode kSquare = GammaMode::kSquare;
+  constexpr SpecularModel kKsLut = SpecularModel::kKsLut;
+  return {
+      fragment_entry<shaders::PreintegratedFS<kSquare, kKsLut, CurvatureSource::kVertex>>(),
+      fragment_entry<shaders::PreintegratedFS<kSquare, kKsLut, CurvatureSource::kDerivatives>>()};
+}
+
+}  // namespace
+
+const TechniqueSpec& preintegrated_technique() {
+  static const TechniqueSpec spec{
+      .name = "preintegrated",
+      .passes = "skin",
+      .summary = "Penner & Borshukov pre-integrated skin (GPU Pro 2, 2011)",
+      .knobs =
+          {
+              size_knob("preintegrated_lut", "--preintegrated-lut",
+                        "Pre-integrated diffusion LUT size (N.L x curvature)",
+                        &PipelineConfig::preintegrated_lut_width,
+                        &PipelineConfig::preintegrated_lut_height, 4, 1024),
+              choice_knob("curvature", "--curvature",
+                          "Curvature source: baked per vertex and smoothed, or screen-space "
+                          "derivatives (constant per triangle on low-poly meshes)",
+                          "vertex or derivatives", &PipelineConfig::curvature, parse_curvature,
+                          curvature_name),
+          },
+      .render = render,
+      .shaders = programs,
   };
-  out.passes.push_back(skin_framebuffer_pass(gs, out.view, shading, out.frame, gpu));
-  return out;
+  return spec;
 }
 
 }  // namespace skinsim::pipeline

@@ -1,0 +1,38 @@
+// One knob of a frame as a row of a table: every interface reads the rows (the `run` options,
+// sweep axes, --set, budget files, validation messages, whether a knob applies to a technique,
+// `skinsim knobs` and docs/knobs.md), so a knob is added in one place. The way pbrt-v4 builds
+// objects from a parameter set, with the parameters described once.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace skinsim::pipeline {
+
+struct PipelineConfig;
+
+struct KnobSpec {
+  std::string name;    // the key: --set NAME=VALUE, sweep axes, budget [pipeline], result.json
+  std::string flag;    // the `run` / `sweep` option, e.g. "--lod-distance"
+  std::string values;  // what it accepts, e.g. "number in (0, 1]"
+  std::string help;    // one sentence
+  // Parses text into the config; throws ConfigError naming the knob on a syntax error.
+  std::function<void(PipelineConfig&, const std::string&)> set;
+  std::function<std::string(const PipelineConfig&)> get;
+  // Why the config's value is out of range ("" when it is in range): validate() throws it.
+  std::function<std::string(const PipelineConfig&)> invalid;
+  // Whether the frame depends on the knob given the rest of the config, for a technique that
+  // uses it (the BRDF LUT knobs only with the ks_lut specular model); empty: always.
+  std::function<bool(const PipelineConfig&)> applies;
+};
+
+// Every knob: the ones all techniques use, then each technique's own (technique.h), in
+// registry order.
+const std::vector<KnobSpec>& all_knobs();
+// The knob called `name`; throws ConfigError listing the known names.
+const KnobSpec& find_knob(const std::string& name);
+// The knobs every technique uses (technique, resolution, gamma, the specular knobs).
+const std::vector<KnobSpec>& common_knobs();
+
+}  // namespace skinsim::pipeline

@@ -1,0 +1,136 @@
+#include "pipeline/knob_types.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <tuple>
+
+#include "util/parse_number.h"
+
+namespace skinsim::pipeline {
+
+namespace {
+
+bool power_of_two(int v) {
+  return v > 0 && (v & (v - 1)) == 0;
+}
+
+std::string power_of_two_range(int lo, int hi) {
+  return fmt::format("power of two in [{}, {}]", lo, hi);
+}
+
+}  // namespace
+
+bool Interval::contains(double v) const {
+  const bool above = lo_open ? v > lo : v >= lo;
+  const bool below = hi_open ? v < hi : v <= hi;
+  return above && below;  // NaN fails both
+}
+
+std::string Interval::text() const {
+  return fmt::format("{}{:g}, {:g}{}", lo_open ? '(' : '[', lo, hi, hi_open ? ')' : ']');
+}
+
+float parse_knob_float(const std::string& key, const std::string& text) {
+  if (const auto v = parse_real<float>(text)) return *v;
+  throw ConfigError(fmt::format("{}: expected a finite decimal number, got '{}'", key, text));
+}
+
+int parse_knob_int(const std::string& key, const std::string& text) {
+  if (const auto v = parse_integer<int>(text)) return *v;
+  throw ConfigError(fmt::format("{}: expected a decimal integer, got '{}'", key, text));
+}
+
+glm::vec3 parse_knob_rgb(const std::string& key, const std::string& text) {
+  const auto c1 = text.find(',');
+  const auto c2 = c1 == std::string::npos ? c1 : text.find(',', c1 + 1);
+  if (c2 == std::string::npos) {
+    throw ConfigError(fmt::format("{}: expected 'r,g,b', got '{}'", key, text));
+  }
+  return {parse_knob_float(key, text.substr(0, c1)),
+          parse_knob_float(key, text.substr(c1 + 1, c2 - c1 - 1)),
+          parse_knob_float(key, text.substr(c2 + 1))};
+}
+
+KnobSpec real_knob(std::string name, std::string flag, std::string help,
+                   float PipelineConfig::*field, Interval range) {
+  KnobSpec k;
+  k.name = std::move(name);
+  k.flag = std::move(flag);
+  k.values = "number in " + range.text();
+  k.help = std::move(help);
+  k.set = [field, key = k.name](PipelineConfig& c, const std::string& text) {
+    c.*field = parse_knob_float(key, text);
+  };
+  k.get = [field](const PipelineConfig& c) { return fmt::format("{}", c.*field); };
+  k.invalid = [field, range, key = k.name](const PipelineConfig& c) -> std::string {
+    if (range.contains(c.*field)) return "";
+    return fmt::format("{} must be in {}, got {:g}", key, range.text(), c.*field);
+  };
+  return k;
+}
+
+KnobSpec optional_real_knob(std::string name, std::string flag, std::string help,
+                            std::optional<float> PipelineConfig::*field, Interval range) {
+  KnobSpec k;
+  k.name = std::move(name);
+  k.flag = std::move(flag);
+  k.values = "number in " + range.text() + " or auto";
+  k.help = std::move(help);
+  k.set = [field, key = k.name](PipelineConfig& c, const std::string& text) {
+    c.*field = text == "auto" ? std::nullopt : std::optional(parse_knob_float(key, text));
+  };
+  k.get = [field](const PipelineConfig& c) {
+    return c.*field ? fmt::format("{}", *(c.*field)) : std::string("auto");
+  };
+  k.invalid = [field, range, key = k.name](const PipelineConfig& c) -> std::string {
+    if (!(c.*field) || range.contains(*(c.*field))) return "";
+    return fmt::format("{} must be in {}, got {:g}", key, range.text(), *(c.*field));
+  };
+  return k;
+}
+
+KnobSpec integer_knob(std::string name, std::string flag, std::string help,
+                      int PipelineConfig::*field, int lo, int hi, bool power_of_two_only) {
+  KnobSpec k;
+  k.name = std::move(name);
+  k.flag = std::move(flag);
+  k.values =
+      power_of_two_only ? power_of_two_range(lo, hi) : fmt::format("integer in [{}, {}]", lo, hi);
+  k.help = std::move(help);
+  k.set = [field, key = k.name](PipelineConfig& c, const std::string& text) {
+    c.*field = parse_knob_int(key, text);
+  };
+  k.get = [field](const PipelineConfig& c) { return std::to_string(c.*field); };
+  k.invalid = [=, key = k.name](const PipelineConfig& c) -> std::string {
+    const int v = c.*field;
+    if (v >= lo && v <= hi && (!power_of_two_only || power_of_two(v))) return "";
+    return fmt::format(
+        "{} must be {}, got {}", key,
+        power_of_two_only ? "a " + power_of_two_range(lo, hi) : fmt::format("in [{}, {}]", lo, hi),
+        v);
+  };
+  return k;
+}
+
+KnobSpec size_knob(std::string name, std::string flag, std::string help, int PipelineConfig::*width,
+                   int PipelineConfig::*height, int lo, int hi) {
+  KnobSpec k;
+  k.name = std::move(name);
+  k.flag = std::move(flag);
+  k.values = fmt::format("WxH, powers of two in [{}, {}]", lo, hi);
+  k.help = std::move(help);
+  k.set = [=, key = k.name](PipelineConfig& c, const std::string& text) {
+    std::tie(c.*width, c.*height) = parse_size(text, key);
+  };
+  k.get = [=](const PipelineConfig& c) { return fmt::format("{}x{}", c.*width, c.*height); };
+  k.invalid = [=, key = k.name](const PipelineConfig& c) -> std::string {
+    const auto ok = [&](int v) { return v >= lo && v <= hi && power_of_two(v); };
+    if (ok(c.*width) && ok(c.*height)) return "";
+    return fmt::format("{} must be powers of two in [{}, {}] per axis, got {}x{}", key, lo, hi,
+                       c.*width, c.*height);
+  };
+  return k;
+}
+
+}  // namespace skinsim::pipeline

@@ -1,0 +1,191 @@
+// The knob table: the knobs every technique uses, then each technique's own, and the
+// functions every interface reaches them through.
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <cmath>
+#include <tuple>
+
+#include "pipeline/config.h"
+#include "pipeline/knob_types.h"
+#include "pipeline/technique.h"
+
+namespace skinsim::pipeline {
+
+namespace {
+
+KnobSpec technique_knob() {
+  KnobSpec k;
+  k.name = "technique";
+  k.flag = "--technique";
+  k.values = fmt::format("{}", fmt::join(technique_names(), ", "));
+  k.help = "Skin technique (docs/techniques.md)";
+  k.set = [](PipelineConfig& c, const std::string& text) {
+    c.technique = find_technique(text).name;
+  };
+  k.get = [](const PipelineConfig& c) { return c.technique; };
+  k.invalid = [](const PipelineConfig& c) -> std::string {
+    try {
+      find_technique(c.technique);
+    } catch (const ConfigError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  return k;
+}
+
+KnobSpec resolution_knob() {
+  KnobSpec k;
+  k.name = "resolution";
+  k.flag = "--resolution";
+  k.values = "WxH within 16..8192 per axis, or display";
+  k.help = "Render resolution (default: the device's display)";
+  k.set = [](PipelineConfig& c, const std::string& text) {
+    std::tie(c.width, c.height) =
+        text == "display" ? std::pair{0, 0} : parse_size(text, "resolution");
+  };
+  k.get = [](const PipelineConfig& c) {
+    return c.width == 0 ? std::string("display") : fmt::format("{}x{}", c.width, c.height);
+  };
+  k.invalid = [](const PipelineConfig& c) -> std::string {
+    if ((c.width == 0) != (c.height == 0)) return "resolution needs both width and height";
+    if (c.width == 0 || (c.width >= 16 && c.width <= 8192 && c.height >= 16 && c.height <= 8192)) {
+      return "";
+    }
+    return fmt::format("resolution must be within 16..8192 per axis, got {}x{}", c.width, c.height);
+  };
+  return k;
+}
+
+KnobSpec lobe_knob(const std::string& name, SpecularLobe PipelineConfig::*field,
+                   const std::string& help) {
+  KnobSpec k;
+  k.name = name;
+  k.flag = "--" + name;
+  k.values = "roughness,weight: roughness in [0.05, 1], weight in [0, 1]";
+  k.help = help;
+  k.set = [field, name](PipelineConfig& c, const std::string& text) {
+    const auto comma = text.find(',');
+    if (comma == std::string::npos) {
+      throw ConfigError(fmt::format("{}: expected 'roughness,weight', got '{}'", name, text));
+    }
+    c.*field = {parse_knob_float(name, text.substr(0, comma)),
+                parse_knob_float(name, text.substr(comma + 1))};
+  };
+  k.get = [field](const PipelineConfig& c) {
+    return fmt::format("{},{}", (c.*field).roughness, (c.*field).weight);
+  };
+  k.invalid = [field, name](const PipelineConfig& c) -> std::string {
+    const SpecularLobe& lobe = c.*field;
+    if (!(lobe.roughness >= 0.05f && lobe.roughness <= 1.0f)) {
+      return fmt::format("{}.roughness must be in [0.05, 1], got {:g}", name, lobe.roughness);
+    }
+    if (!(lobe.weight >= 0.0f && lobe.weight <= 1.0f)) {
+      return fmt::format("{}.weight must be in [0, 1], got {:g}", name, lobe.weight);
+    }
+    return "";
+  };
+  return k;
+}
+
+KnobSpec lut_format_knob() {
+  KnobSpec k;
+  k.name = "lut_format";
+  k.flag = "--lut-format";
+  k.values = "rgba8 or rgba16f";
+  k.help = "BRDF LUT texel format (the paper's mobile formats); read only with specular ks_lut";
+  k.set = [](PipelineConfig& c, const std::string& text) {
+    try {
+      c.lut_format = sim::parse_format(text);
+    } catch (const std::invalid_argument& e) {
+      throw ConfigError(std::string("lut_format: ") + e.what());
+    }
+  };
+  k.get = [](const PipelineConfig& c) { return std::string(sim::format_name(c.lut_format)); };
+  k.invalid = [](const PipelineConfig& c) -> std::string {
+    if (c.lut_format != sim::TexelFormat::kRGBA32F) return "";
+    return "lut_format must be rgba8 or rgba16f (the paper's mobile formats)";
+  };
+  k.applies = reads_brdf_lut;
+  return k;
+}
+
+}  // namespace
+
+const std::vector<KnobSpec>& common_knobs() {
+  static const std::vector<KnobSpec> knobs = [] {
+    KnobSpec lut =
+        size_knob("lut", "--lut", "BRDF LUT size (N.H x N.V); read only with specular ks_lut",
+                  &PipelineConfig::lut_width, &PipelineConfig::lut_height, 2, 1024);
+    lut.applies = reads_brdf_lut;
+    return std::vector<KnobSpec>{
+        technique_knob(),
+        resolution_knob(),
+        choice_knob("gamma", "--gamma", "Skin gamma: gamma 2.0 as in GPU Pro 5, or exact sRGB",
+                    "square or srgb", &PipelineConfig::gamma, parse_gamma, gamma_name),
+        lobe_knob("lobe1", &PipelineConfig::lobe1,
+                  "First specular lobe (Beckmann m and weight; the weights sum to 1)"),
+        lobe_knob("lobe2", &PipelineConfig::lobe2, "Second specular lobe"),
+        real_knob("specular_intensity", "--specular-intensity",
+                  "Specular intensity rho_s (d'Eon & Luebke)", &PipelineConfig::specular_intensity,
+                  {0.0, 1.0}),
+        choice_knob("specular", "--specular",
+                    "Specular model of the skin shaders; only ks_lut reads the BRDF LUT",
+                    "ks_lut, ks, ggx or dual_ggx", &PipelineConfig::specular, parse_specular,
+                    specular_name),
+        std::move(lut),
+        lut_format_knob(),
+    };
+  }();
+  return knobs;
+}
+
+const std::vector<KnobSpec>& all_knobs() {
+  static const std::vector<KnobSpec> knobs = [] {
+    std::vector<KnobSpec> all = common_knobs();
+    for (const TechniqueSpec* t : all_techniques()) {
+      all.insert(all.end(), t->knobs.begin(), t->knobs.end());
+    }
+    return all;
+  }();
+  return knobs;
+}
+
+const KnobSpec& find_knob(const std::string& name) {
+  for (const KnobSpec& k : all_knobs()) {
+    if (k.name == name) return k;
+  }
+  throw ConfigError(fmt::format("unknown pipeline setting '{}' (known: {})", name,
+                                fmt::join(config_field_names(), ", ")));
+}
+
+void set_config_field(PipelineConfig& config, const std::string& key, const std::string& value) {
+  find_knob(key).set(config, value);
+}
+
+std::string get_config_field(const PipelineConfig& config, const std::string& key) {
+  return find_knob(key).get(config);
+}
+
+const std::vector<std::string>& config_field_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> v;
+    for (const KnobSpec& k : all_knobs()) v.push_back(k.name);
+    return v;
+  }();
+  return names;
+}
+
+void PipelineConfig::validate() const {
+  for (const KnobSpec& k : all_knobs()) {
+    if (std::string why = k.invalid(*this); !why.empty()) throw ConfigError(why);
+  }
+  // Between knobs: the two specular lobes split one energy.
+  if (!(std::fabs(lobe1.weight + lobe2.weight - 1.0f) < 1e-3f)) {
+    throw ConfigError(
+        fmt::format("lobe weights must sum to 1, got {:g} + {:g}", lobe1.weight, lobe2.weight));
+  }
+}
+
+}  // namespace skinsim::pipeline

@@ -1,0 +1,61 @@
+// `mobile`: the GPU Pro 5 screen-space irradiance pipeline (docs/pipeline.md), the primary
+// technique; beyond lod_distance_m its single-pass shader takes over.
+#include "pipeline/knob_types.h"
+#include "pipeline/shader_variants.h"
+#include "pipeline/shaders/blur.h"
+#include "pipeline/shaders/irradiance.h"
+#include "pipeline/shaders/skin.h"
+#include "pipeline/shaders/surface_vs.h"
+#include "pipeline/technique.h"
+#include "pipeline/techniques/mobile/mobile_frame.h"
+
+namespace skinsim::pipeline {
+
+namespace {
+
+FrameOutput render(const GpuScene& scene, const PipelineConfig& config, sim::Gpu& gpu) {
+  return render_mobile_frame(scene, config, gpu, MobileMode::kAuto);
+}
+
+std::vector<sim::NamedProfile> programs() {
+  using namespace pipeline::shaders;
+  std::vector<sim::NamedProfile> s = {vertex_entry<PositionNormalVS>(), vertex_entry<BlurVS>(),
+                                      fragment_entry<IrradianceFS>(), fragment_entry<BlurFS>()};
+  for (const auto& v : specular_variants<SkinFS>()) s.push_back(v);
+  s.push_back(fragment_entry<SkinFS<GammaMode::kSrgb, SpecularModel::kKsLut>>());
+  for (const auto& v : specular_variants<SkinLodFS>()) s.push_back(v);  // at LOD distance
+  return s;
+}
+
+}  // namespace
+
+const TechniqueSpec& mobile_technique() {
+  static const TechniqueSpec spec{
+      .name = "mobile",
+      .passes = "irradiance, blur_h, blur_v, skin",
+      .summary = "GPU Pro 5 screen-space irradiance pipeline (docs/pipeline.md)",
+      .knobs =
+          {
+              real_knob("scale", "--scale",
+                        "Integration-buffer size per axis as a fraction of the frame",
+                        &PipelineConfig::buffer_scale, {0.0, 1.0, true, false}),
+              integer_knob("blur_iterations", "--blur-iterations", "Separable blur iterations",
+                           &PipelineConfig::blur_iterations, 1, 8),
+              optional_real_knob("blur_width_mm", "--blur-width-mm",
+                                 "Blur standard deviation on the skin in mm (auto: from the "
+                                 "six-Gaussian profile)",
+                                 &PipelineConfig::blur_width_mm, {0.0, 50.0, true, false}),
+              real_knob("normal_offset_mm", "--normal-offset-mm",
+                        "Irradiance-pass vertex push along the normal, mm",
+                        &PipelineConfig::normal_offset_mm, {0.0, 20.0}),
+              real_knob("lod_distance_m", "--lod-distance",
+                        "Camera distance in metres beyond which the single-pass LOD shader runs",
+                        &PipelineConfig::lod_distance_m, {0.0, 10000.0, true, false}),
+          },
+      .render = render,
+      .shaders = programs,
+  };
+  return spec;
+}
+
+}  // namespace skinsim::pipeline

@@ -1,0 +1,41 @@
+// The passes the full-resolution screen-space diffusion techniques (burley, ssss) share: a
+// `diffuse` pass that stores irradiance and view distance in mm (shaders/screen_diffusion.h),
+// and kernel passes over the skin's screen rectangle.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "pipeline/config.h"
+#include "pipeline/gpu_scene.h"
+#include "pipeline/shaders/screen_diffusion.h"
+#include "sim/gpu.h"
+
+namespace skinsim::pipeline {
+
+// Irradiance values reach ~2x the key light: halve them to view the buffers.
+inline constexpr float kScreenBufferDisplayScale = 0.5f;
+
+// Screen-space buffers are RGBA16F: irradiance above 1 and view distance in mm
+// (EXT_color_buffer_half_float, available on the SGX under iOS).
+sim::RenderTarget screen_buffer(const char* name, const PipelineConfig& cfg);
+
+sim::PassCounters diffuse_pass(const GpuScene& gs, const View& view, sim::RenderTarget& target,
+                               sim::Gpu& gpu);
+
+shaders::ScreenKernelUniforms kernel_uniforms(const View& view, float units_per_mm);
+
+// The perspective or orthographic program of a kernel (shaders/screen_diffusion.h).
+template <template <bool> class Kernel, class Uniforms>
+std::shared_ptr<const sim::FragmentProgram> kernel_program(const View& view, const Uniforms& u) {
+  if (view.orthographic) return sim::make_fragment_program<Kernel<true>>(u);
+  return sim::make_fragment_program<Kernel<false>>(u);
+}
+
+// A kernel pass over the skin's screen rectangle reading `source`.
+sim::PassCounters kernel_pass(const std::string& name,
+                              std::shared_ptr<const sim::FragmentProgram> program,
+                              const sim::RenderTarget& source, sim::RenderTarget& target,
+                              const View& view, sim::Gpu& gpu);
+
+}  // namespace skinsim::pipeline

@@ -1,0 +1,66 @@
+// `ssss`: Jimenez's separable screen-space subsurface scattering (2015) at full resolution:
+// diffuse -> sss_h -> sss_v -> skin.
+#include "pipeline/shader_variants.h"
+#include "pipeline/shaders/diffused_skin.h"
+#include "pipeline/technique.h"
+#include "pipeline/techniques/diffused_skin_pass.h"
+#include "pipeline/techniques/frame_setup.h"
+#include "pipeline/techniques/kernels.h"
+#include "pipeline/techniques/screen_diffusion_passes.h"
+
+namespace skinsim::pipeline {
+
+namespace {
+
+FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, sim::Gpu& gpu) {
+  FrameOutput out = start_frame(gs, cfg);
+  sim::RenderTarget diffuse = screen_buffer("diffuse", cfg);
+  sim::RenderTarget horizontal = screen_buffer("sss_h", cfg);
+  sim::RenderTarget diffused = screen_buffer("diffused", cfg);
+  out.passes.push_back(diffuse_pass(gs, out.view, diffuse, gpu));
+  if (out.view.skin_visible) {
+    const SeparableKernel kernel = separable_kernel();
+    shaders::SsssBlurFS::Uniforms u;
+    static_cast<shaders::ScreenKernelUniforms&>(u) =
+        kernel_uniforms(out.view, gs.scene().units_per_mm);
+    u.offsets_mm = kernel.offsets_mm;
+    u.weights = kernel.weights;
+    u.axis = {1.0f, 0.0f};
+    out.passes.push_back(kernel_pass("sss_h", kernel_program<shaders::SsssBlurFSFor>(out.view, u),
+                                     diffuse, horizontal, out.view, gpu));
+    u.axis = {0.0f, 1.0f};
+    out.passes.push_back(kernel_pass("sss_v", kernel_program<shaders::SsssBlurFSFor>(out.view, u),
+                                     horizontal, diffused, out.view, gpu));
+  }
+  out.passes.push_back(diffused_skin_pass(gs, out.view, cfg, shaders::DiffusionSource::kScreen,
+                                          diffused, out.frame, gpu));
+  out.intermediates.push_back({"diffuse", std::move(diffuse), kScreenBufferDisplayScale});
+  out.intermediates.push_back({"diffused", std::move(diffused), kScreenBufferDisplayScale});
+  return out;
+}
+
+std::vector<sim::NamedProfile> programs() {
+  return {fragment_entry<shaders::DiffuseDepthFS>(),
+          fragment_entry<shaders::DiffuseDepthOrthoFS>(),
+          vertex_entry<shaders::QuadVS>(),
+          fragment_entry<shaders::SsssBlurFS>(),
+          fragment_entry<shaders::SsssBlurOrthoFS>(),
+          fragment_entry<shaders::DiffusedSkinFS<GammaMode::kSquare, SpecularModel::kKsLut,
+                                                 shaders::DiffusionSource::kScreen>>()};
+}
+
+}  // namespace
+
+const TechniqueSpec& ssss_technique() {
+  static const TechniqueSpec spec{
+      .name = "ssss",
+      .passes = "diffuse, sss_h, sss_v, skin",
+      .summary = "Jimenez separable SSS (2015) at full resolution",
+      .knobs = {},
+      .render = render,
+      .shaders = programs,
+  };
+  return spec;
+}
+
+}  // namespace skinsim::pipeline
