@@ -3,6 +3,9 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
+#include <vector>
+
 #include "budget/device_fingerprint.h"
 
 namespace skinsim::budget {
@@ -23,7 +26,10 @@ std::string definition_fingerprint(const Budget& budget, const std::filesystem::
       relative_to(budget.device, budget_file), relative_to(budget.scene.path, budget_file),
       budget.scene.head_triangles, budget.scene.texture_size,
       fmt::join(budget.scene.skin_materials, ","), budget.scene.units_per_mm);
-  for (const std::string& knob : pipeline::config_field_names()) {
+  // By name, so that reordering the knob table changes no fingerprint.
+  std::vector<std::string> knobs = pipeline::config_field_names();
+  std::sort(knobs.begin(), knobs.end());
+  for (const std::string& knob : knobs) {
     text += fmt::format("{}={}\n", knob, pipeline::get_config_field(budget.config, knob));
   }
   return fingerprint(text);

@@ -9,19 +9,10 @@ quality::Image to_image(const sim::RenderTarget& target, float scale) {
   img.width = target.width;
   img.height = target.height;
   img.rgb.resize(target.pixels.size());
-  std::transform(target.pixels.begin(), target.pixels.end(), img.rgb.begin(),
-                 [scale](const glm::vec4& p) { return glm::clamp(glm::vec3(p) * scale, 0.0f, 1.0f); });
+  std::transform(
+      target.pixels.begin(), target.pixels.end(), img.rgb.begin(),
+      [scale](const glm::vec4& p) { return glm::clamp(glm::vec3(p) * scale, 0.0f, 1.0f); });
   return img;
-}
-
-quality::Mask alpha_mask(const sim::RenderTarget& target) {
-  quality::Mask m;
-  m.width = target.width;
-  m.height = target.height;
-  m.values.resize(target.pixels.size());
-  std::transform(target.pixels.begin(), target.pixels.end(), m.values.begin(),
-                 [](const glm::vec4& p) { return static_cast<std::uint8_t>(p.a > 0.5f ? 1 : 0); });
-  return m;
 }
 
 void write_png(const sim::RenderTarget& target, const std::filesystem::path& path, float scale) {

@@ -10,8 +10,6 @@ namespace skinsim::driver {
 
 // RGB of a render target as stored (display-encoded for the frame), clamped to [0,1].
 quality::Image to_image(const sim::RenderTarget& target, float scale = 1.0f);
-// Alpha of a render target as a mask (alpha > 0.5 counts).
-quality::Mask alpha_mask(const sim::RenderTarget& target);
 // Writes the target's RGB x scale as an 8-bit PNG, atomically.
 void write_png(const sim::RenderTarget& target, const std::filesystem::path& path,
                float scale = 1.0f);

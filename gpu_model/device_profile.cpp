@@ -63,17 +63,15 @@ const std::vector<FigureSpec>& figure_specs() {
       // every core, so the size stays at plausible per-core caches (up to 1 MiB) and lines
       // at 16 B..1 KiB.
       {"texture.cache_bytes", &P::texture_cache_bytes, integer(64, 1 << 20), "B", true},
-      {"texture.cache_line_bytes", &P::texture_cache_line_bytes, power_of_two(16, 1024), "B",
-       true},
+      {"texture.cache_line_bytes", &P::texture_cache_line_bytes, power_of_two(16, 1024), "B", true},
       {"texture.cache_ways", &P::texture_cache_ways, integer(1, 64), "ways", true},
       {"texture.cache_set_hash", &P::texture_cache_set_hash, integer(0, 1), "", true},
       // sim::Gpu renders square tiles of 4..256 pixels (the loader checks width == height).
       {"tile.width", &P::tile_width, integer(4, 256), "px", true},
       {"tile.height", &P::tile_height, integer(4, 256), "px", true},
       // Up to RGBA32F (16 B) per pixel.
-      {"tile.color_bytes_per_pixel", &P::tile_color_bytes_per_pixel, integer(1, 16), "B", false},
-      {"tile.depth_stencil_bytes_per_pixel", &P::tile_depth_stencil_bytes_per_pixel,
-       integer(1, 16), "B", false},
+      {"tile.depth_stencil_bytes_per_pixel", &P::tile_depth_stencil_bytes_per_pixel, integer(1, 16),
+       "B", false},
       // 10 MB/s .. 10 TB/s.
       {"memory.peak_gb_per_s", &P::dram_peak_gb_per_s, real(0.01, 1e4), "GB/s", false},
       // A share of the peak; below 1 % the bus would be idle, not busy.
@@ -110,7 +108,6 @@ SimParameters sim_parameters(const DeviceProfile& profile) {
   s.texture_cache_line_bytes = static_cast<int>(profile.texture_cache_line_bytes.value);
   s.texture_cache_ways = static_cast<int>(profile.texture_cache_ways.value);
   s.texture_cache_set_hash = profile.texture_cache_set_hash.value != 0.0;
-  s.tile_color_bytes_per_pixel = static_cast<int>(profile.tile_color_bytes_per_pixel.value);
   s.tile_depth_stencil_bytes_per_pixel =
       static_cast<int>(profile.tile_depth_stencil_bytes_per_pixel.value);
   return s;

@@ -59,7 +59,6 @@ struct DeviceProfile {
   // [tile]
   Figure tile_width;
   Figure tile_height;
-  Figure tile_color_bytes_per_pixel;  // on-chip storage
   Figure tile_depth_stencil_bytes_per_pixel;
 
   // [memory]
@@ -117,7 +116,6 @@ struct SimParameters {
   int texture_cache_line_bytes = 0;
   int texture_cache_ways = 0;
   bool texture_cache_set_hash = false;  // XOR-fold the set index
-  int tile_color_bytes_per_pixel = 0;
   int tile_depth_stencil_bytes_per_pixel = 0;
 };
 

@@ -12,7 +12,6 @@
 
 #include "pipeline/bake/error.h"
 #include "pipeline/bake/skin_profile.h"
-#include "quality/image.h"
 
 namespace skinsim::bake {
 namespace {
@@ -114,17 +113,6 @@ PreintegratedLut bake_preintegrated_lut(const PreintegratedLutParams& params) {
         }
       });
   return lut;
-}
-
-void write_preintegrated_png(const PreintegratedLut& lut, const std::filesystem::path& path) {
-  std::vector<std::uint8_t> bytes(lut.rgb.size() * 3);
-  for (std::size_t i = 0; i < lut.rgb.size(); ++i) {
-    for (int c = 0; c < 3; ++c) {
-      bytes[i * 3 + c] =
-          static_cast<std::uint8_t>(std::lround(std::clamp(lut.rgb[i][c], 0.0f, 1.0f) * 255.0f));
-    }
-  }
-  quality::write_png_u8(path, lut.width, lut.height, 3, bytes);
 }
 
 }  // namespace skinsim::bake

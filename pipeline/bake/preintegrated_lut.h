@@ -6,7 +6,6 @@
 // curvature 1/r) lit at angle theta, scattered around the ring.
 #pragma once
 
-#include <filesystem>
 #include <glm/vec3.hpp>
 #include <vector>
 
@@ -36,8 +35,5 @@ glm::vec3 preintegrated_diffuse(float n_dot_l, float radius_mm, int samples = 25
 
 // Multithreaded (TBB), bitwise deterministic for any thread count.
 PreintegratedLut bake_preintegrated_lut(const PreintegratedLutParams& params);
-
-// Writes the linear values as an 8-bit RGB PNG (row 0, flat skin, at the top of the image).
-void write_preintegrated_png(const PreintegratedLut& lut, const std::filesystem::path& path);
 
 }  // namespace skinsim::bake
