@@ -35,8 +35,8 @@ void BM_SkinFrame(benchmark::State& state) {
     benchmark::DoNotOptimize(r.timing.frame_ms);
   }
   state.counters["fragments"] = static_cast<double>(fragments);
-  state.counters["fragments/s"] =
-      benchmark::Counter(static_cast<double>(fragments) * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["fragments/s"] = benchmark::Counter(
+      static_cast<double>(fragments) * state.iterations(), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_SkinFrame)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3.0);
 

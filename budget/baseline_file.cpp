@@ -7,9 +7,9 @@
 #include <sstream>
 
 #include "budget/budget_error.h"
+#include "io/atomic_file.h"
 #include "io/read_file.h"
 #include "quality/json_value.h"
-#include "io/atomic_file.h"
 
 namespace skinsim::budget {
 

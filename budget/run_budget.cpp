@@ -56,8 +56,9 @@ BudgetRun run_budget(const std::string& file, const Budget& budget, const std::s
     if (!quality.has_skin_metrics()) {
       for (const Limit& limit : budget.limits) {
         if (limit.metric.ends_with("_skin")) {
-          throw BudgetError(fmt::format("{}, limit '{}': {}", where, limit.metric,
-                                        driver::no_skin_reason(scene, budget.scene.skin_materials)));
+          throw BudgetError(
+              fmt::format("{}, limit '{}': {}", where, limit.metric,
+                          driver::no_skin_reason(scene, budget.scene.skin_materials)));
         }
       }
     }

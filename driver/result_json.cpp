@@ -20,17 +20,18 @@ json to_json(const sim::OpProfile& p) {
 namespace {
 
 json texture_json(const sim::TextureCounters& t) {
-  return {{"samples_nearest", t.samples_by_filter[0]},
-          {"samples_bilinear", t.samples_by_filter[1]},
-          {"samples_trilinear", t.samples_by_filter[2]},
-          {"samples_dependent", t.samples_dependent},
-          {"samples_wide_format", t.samples_wide_format},
-          {"texels_touched", t.texels_touched},
-          {"cache_line_accesses", t.cache_line_accesses},
-          {"cache_misses", t.cache_misses},
-          {"cache_miss_rate",
-           t.cache_line_accesses ? static_cast<double>(t.cache_misses) / t.cache_line_accesses : 0.0},
-          {"dram_bytes", t.dram_bytes}};
+  return {
+      {"samples_nearest", t.samples_by_filter[0]},
+      {"samples_bilinear", t.samples_by_filter[1]},
+      {"samples_trilinear", t.samples_by_filter[2]},
+      {"samples_dependent", t.samples_dependent},
+      {"samples_wide_format", t.samples_wide_format},
+      {"texels_touched", t.texels_touched},
+      {"cache_line_accesses", t.cache_line_accesses},
+      {"cache_misses", t.cache_misses},
+      {"cache_miss_rate",
+       t.cache_line_accesses ? static_cast<double>(t.cache_misses) / t.cache_line_accesses : 0.0},
+      {"dram_bytes", t.dram_bytes}};
 }
 
 }  // namespace

@@ -7,8 +7,8 @@
 #include <fstream>
 
 #include "gpu_model/sensitivity.h"
-#include "io/read_file.h"
 #include "gpu_model/timing.h"
+#include "io/read_file.h"
 
 namespace skinsim::driver {
 

@@ -185,7 +185,8 @@ SweepSpec parse_sweep_text(const std::string& text, const std::string& name,
 }
 
 SweepSpec parse_sweep_file(const std::string& path) {
-  return parse_sweep_text(io::read_regular_file(path, "sweep file"), path, std::filesystem::path(path).parent_path().string());
+  return parse_sweep_text(io::read_regular_file(path, "sweep file"), path,
+                          std::filesystem::path(path).parent_path().string());
 }
 
 }  // namespace skinsim::driver

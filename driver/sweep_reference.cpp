@@ -7,10 +7,10 @@
 #include <nlohmann/json.hpp>
 
 #include "driver/sweep_spec.h"
+#include "io/atomic_file.h"
 #include "io/read_file.h"
 #include "pipeline/reference/reference.h"
 #include "quality/image.h"
-#include "io/atomic_file.h"
 
 namespace skinsim::driver {
 
@@ -83,7 +83,7 @@ ReferenceImages cached_reference(const pipeline::GpuScene& scene,
   quality::save_png(images.image, image_path);
   quality::save_mask_png(images.skin, mask_path);
   io::write_file_atomically(marker.string(),
-                                 nlohmann::json{{"fingerprint", fingerprint}}.dump(2) + "\n");
+                            nlohmann::json{{"fingerprint", fingerprint}}.dump(2) + "\n");
   if (rendered) *rendered = true;
   return images;
 }

@@ -167,9 +167,10 @@ Figure parse_figure(const Reporter& r, const toml::table& fig, const FigureSpec&
 // one axis would ask for a non-square tile.
 void check_square_tiles(const Reporter& r, const toml::table& root, const DeviceProfile& p) {
   if (p.tile_height.value != p.tile_width.value) {
-    r.fail("tile.height.value", root.at_path("tile.height.value").node(),
-           fmt::format("must equal tile.width.value ({}), got {}: the emulator renders square tiles",
-                       p.tile_width.value, p.tile_height.value));
+    r.fail(
+        "tile.height.value", root.at_path("tile.height.value").node(),
+        fmt::format("must equal tile.width.value ({}), got {}: the emulator renders square tiles",
+                    p.tile_width.value, p.tile_height.value));
   }
   for (const char* path : {"tile.width", "tile.height"}) {
     const std::string range_path = std::string(path) + ".range";
@@ -193,18 +194,20 @@ CacheProblem cache_problem(const std::array<double, 4>& v) {
   // The emulator builds a set-associative cache: whole lines in whole sets.
   const double set_bytes = v[1] * v[2];
   if (std::fmod(v[0], set_bytes) != 0.0) {
-    return {"texture.cache_bytes",
-            fmt::format("cache_bytes {} is not a multiple of cache_line_bytes x cache_ways = {} x {}",
-                        v[0], v[1], v[2])};
+    return {
+        "texture.cache_bytes",
+        fmt::format("cache_bytes {} is not a multiple of cache_line_bytes x cache_ways = {} x {}",
+                    v[0], v[1], v[2])};
   }
   // XOR folding works on the index bit field, so it needs a power-of-two set count
   // (sim::SetIndex::kXorFold).
   const auto sets = static_cast<std::uint64_t>(v[0] / set_bytes);
   if (v[3] != 0.0 && !std::has_single_bit(sets)) {
-    return {"texture.cache_set_hash",
-            fmt::format("XOR-folded set index (cache_set_hash 1) needs a power-of-two set count, "
-                        "but cache_bytes / (cache_line_bytes x cache_ways) = {} / ({} x {}) = {} sets",
-                        v[0], v[1], v[2], sets)};
+    return {
+        "texture.cache_set_hash",
+        fmt::format("XOR-folded set index (cache_set_hash 1) needs a power-of-two set count, "
+                    "but cache_bytes / (cache_line_bytes x cache_ways) = {} / ({} x {}) = {} sets",
+                    v[0], v[1], v[2], sets)};
   }
   return {};
 }

@@ -1,13 +1,12 @@
 #include "io/read_file.h"
 
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
-
-#include <fmt/format.h>
 
 namespace skinsim::io {
 
@@ -33,7 +32,8 @@ void check_stat(const struct stat& st, const std::filesystem::path& path, std::s
   if (static_cast<std::uintmax_t>(st.st_size) > max_bytes) {
     fail(what, path,
          fmt::format("is {}, larger than the {} this input may be",
-                     format_bytes(static_cast<std::uintmax_t>(st.st_size)), format_bytes(max_bytes)));
+                     format_bytes(static_cast<std::uintmax_t>(st.st_size)),
+                     format_bytes(max_bytes)));
   }
 }
 
@@ -79,7 +79,8 @@ std::string read_regular_file(const std::filesystem::path& path, std::string_vie
         char probe;
         const ssize_t n = ::read(file.fd, &probe, 1);
         if (n == 0) break;
-        fail(what, path, fmt::format("grew past the {} this input may be", format_bytes(max_bytes)));
+        fail(what, path,
+             fmt::format("grew past the {} this input may be", format_bytes(max_bytes)));
       }
       content.resize(std::min<std::uintmax_t>(max_bytes, content.size() * 2 + 4096));
     }

@@ -122,9 +122,9 @@ void write_png(vtkRenderWindow* window, const std::string& path) {
   if (writer->GetErrorCode() != 0 || png == nullptr || png->GetNumberOfValues() == 0) {
     throw ReportError("cannot write chart " + path + ": PNG encoding failed");
   }
-  io::write_file_atomically(
-      path, std::string_view(reinterpret_cast<const char*>(png->GetPointer(0)),
-                             static_cast<std::size_t>(png->GetNumberOfValues())));
+  io::write_file_atomically(path,
+                            std::string_view(reinterpret_cast<const char*>(png->GetPointer(0)),
+                                             static_cast<std::size_t>(png->GetNumberOfValues())));
 }
 
 void write_svg(vtkRenderWindow* window, const std::string& path) {

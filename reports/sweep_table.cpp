@@ -8,8 +8,8 @@
 #include <set>
 #include <sstream>
 
-#include "io/read_file.h"
 #include "io/atomic_file.h"
+#include "io/read_file.h"
 #include "reports/report_error.h"
 
 namespace skinsim::reports {

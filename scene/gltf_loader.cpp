@@ -79,8 +79,8 @@ void apply_projection(const tinygltf::Camera& c, int index, const std::string& p
     zfar = o.zfar;
     return;
   }
-  throw SceneError(fmt::format(
-      "{}: cameras[{}].type '{}': need 'perspective' or 'orthographic'", path, index, c.type));
+  throw SceneError(fmt::format("{}: cameras[{}].type '{}': need 'perspective' or 'orthographic'",
+                               path, index, c.type));
 }
 
 // The camera of the first node (pre-order) that has one.

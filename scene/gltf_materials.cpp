@@ -26,7 +26,7 @@ bool within_size_limit(const unsigned char* bytes, int size, int index, std::str
   // stb_image's own header reader refuses PNGs over 1 GiB decoded without saying why, so
   // read a PNG's IHDR (signature, length, "IHDR", big-endian width and height) directly.
   static constexpr unsigned char kPngIhdr[16] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n',
-                                                  0,    0,   0,   13,  'I',  'H',  'D',  'R'};
+                                                 0,    0,   0,   13,  'I',  'H',  'D',  'R'};
   if (size >= 24 && std::memcmp(bytes, kPngIhdr, sizeof kPngIhdr) == 0) {
     auto big_endian = [&](int at) {
       return (std::uint32_t{bytes[at]} << 24) | (std::uint32_t{bytes[at + 1]} << 16) |

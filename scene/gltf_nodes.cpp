@@ -69,8 +69,8 @@ int checked_node(const tinygltf::Model& model, int node, const std::string& wher
 std::vector<PlacedNode> flatten_scene(const tinygltf::Model& model, int scene_index,
                                       const std::string& file) {
   if (model.nodes.size() > kMaxNodes) {
-    throw SceneError(fmt::format("{}: {} nodes; skinsim reads at most {}", file,
-                                 model.nodes.size(), kMaxNodes));
+    throw SceneError(
+        fmt::format("{}: {} nodes; skinsim reads at most {}", file, model.nodes.size(), kMaxNodes));
   }
   enum State : unsigned char { kUnseen, kOnPath, kDone };
   std::vector<State> state(model.nodes.size(), kUnseen);

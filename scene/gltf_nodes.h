@@ -25,7 +25,8 @@ inline constexpr std::size_t kMaxNodes = 4096;
 // Nodes of scenes[scene_index] in depth-first pre-order (document order), each with its
 // world matrix. The glTF spec (3.5.3) requires the nodes to form disjoint trees: a node
 // reached twice (a cycle or a second parent) throws SceneError, as do out-of-range
-// indices, malformed TRS/matrix values and more than kMaxNodes nodes. Iterative, so deep trees cannot overflow the stack.
+// indices, malformed TRS/matrix values and more than kMaxNodes nodes. Iterative, so deep trees
+// cannot overflow the stack.
 std::vector<PlacedNode> flatten_scene(const tinygltf::Model& model, int scene_index,
                                       const std::string& file);
 

@@ -46,9 +46,9 @@ struct Mesh {
   std::string name;
   int material = -1;
   std::vector<glm::vec3> positions;
-  std::vector<glm::vec3> normals;   // unit length
-  std::vector<glm::vec2> uvs;       // TEXCOORD_0, (0,0) = top-left of the image
-  std::vector<glm::vec4> tangents;  // xyz unit tangent, w = bitangent sign (MikkTSpace)
+  std::vector<glm::vec3> normals;      // unit length
+  std::vector<glm::vec2> uvs;          // TEXCOORD_0, (0,0) = top-left of the image
+  std::vector<glm::vec4> tangents;     // xyz unit tangent, w = bitangent sign (MikkTSpace)
   std::vector<std::uint32_t> indices;  // 3 per triangle
   std::size_t triangle_count() const { return indices.size() / 3; }
 };

@@ -32,8 +32,7 @@ void edge_range(const TriangleSetup& t, int e, const PixelRect& r, std::int64_t&
 
 }  // namespace
 
-TileBins bin_triangles(const SetupTriangles& setup, const TileGrid& grid,
-                       PassCounters& counters) {
+TileBins bin_triangles(const SetupTriangles& setup, const TileGrid& grid, PassCounters& counters) {
   TileBins bins;
   const size_t tile_count = static_cast<size_t>(grid.tiles_x) * grid.tiles_y;
   bins.lists.resize(tile_count);

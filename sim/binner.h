@@ -15,8 +15,8 @@ struct TileGrid {
   int tile_size = 32;
   int tiles_x = 0;
   int tiles_y = 0;
-  PixelRect area;   // tile-aligned render area
-  int width = 0;    // target size
+  PixelRect area;  // tile-aligned render area
+  int width = 0;   // target size
   int height = 0;
   // Pixel rectangle of tile (tx, ty), clipped to the target.
   PixelRect tile_rect(int tx, int ty) const;
@@ -28,7 +28,6 @@ struct TileBins {
   std::vector<TileCoverage> coverage;
 };
 
-TileBins bin_triangles(const SetupTriangles& setup, const TileGrid& grid,
-                       PassCounters& counters);
+TileBins bin_triangles(const SetupTriangles& setup, const TileGrid& grid, PassCounters& counters);
 
 }  // namespace skinsim::sim

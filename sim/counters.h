@@ -24,7 +24,7 @@ struct TextureCounters {
   std::uint64_t texels_touched = 0;       // texel reads before caching
   std::uint64_t cache_line_accesses = 0;  // distinct cache lines looked up per sample
   std::uint64_t cache_misses = 0;
-  std::uint64_t dram_bytes = 0;           // cache misses x line size
+  std::uint64_t dram_bytes = 0;  // cache misses x line size
 
   std::uint64_t samples() const {
     return samples_by_filter[0] + samples_by_filter[1] + samples_by_filter[2];
@@ -56,8 +56,8 @@ struct TileCounters {
   std::uint32_t triangle_refs = 0;           // triangles in this tile's list
   std::uint64_t fragments_depth_tested = 0;  // ISP work
   std::uint64_t fragments_shaded = 0;
-  std::uint64_t fragments_blended = 0;       // of shaded: read-modify-write in tile memory
-  std::uint32_t hsr_flushes = 0;             // tag-buffer flushes forced by blended draws
+  std::uint64_t fragments_blended = 0;        // of shaded: read-modify-write in tile memory
+  std::uint32_t hsr_flushes = 0;              // tag-buffer flushes forced by blended draws
   std::vector<DrawFragments> shaded_by_draw;  // sorted by draw index
   TextureCounters texture;
   std::uint64_t color_load_bytes = 0;   // DRAM -> tile memory at tile start (LoadOp::kLoad)
@@ -91,12 +91,12 @@ struct PassCounters {
   std::uint64_t vertices_shaded = 0;
   std::uint64_t triangles_in = 0;
   std::uint64_t triangles_culled_backface = 0;
-  std::uint64_t triangles_culled_frustum = 0;  // entirely outside a clip plane
+  std::uint64_t triangles_culled_frustum = 0;     // entirely outside a clip plane
   std::uint64_t triangles_culled_degenerate = 0;  // zero area or no pixel centre covered box
-  std::uint64_t triangles_clipped = 0;         // crossed the near plane and were clipped
-  std::uint64_t triangles_binned = 0;          // after clipping (a clipped one may yield 2)
-  std::uint64_t tile_refs = 0;                 // sum over tiles of triangle_refs
-  std::uint64_t varying_floats_per_vertex = 0; // max over draws: parameter-buffer vertex size
+  std::uint64_t triangles_clipped = 0;            // crossed the near plane and were clipped
+  std::uint64_t triangles_binned = 0;             // after clipping (a clipped one may yield 2)
+  std::uint64_t tile_refs = 0;                    // sum over tiles of triangle_refs
+  std::uint64_t varying_floats_per_vertex = 0;    // max over draws: parameter-buffer vertex size
   std::uint64_t tiles_empty = 0;
   std::uint64_t tiles_partial = 0;
   std::uint64_t tiles_full = 0;

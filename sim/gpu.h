@@ -8,7 +8,6 @@
 #include "sim/counters.h"
 #include "sim/render_pass.h"
 
-
 namespace skinsim::sim {
 
 class Gpu {

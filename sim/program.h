@@ -69,8 +69,7 @@ class VertexProgramOf final : public VertexProgram {
 template <class Shader>
 class FragmentProgramOf final : public FragmentProgram {
  public:
-  explicit FragmentProgramOf(typename Shader::Uniforms uniforms)
-      : uniforms_(std::move(uniforms)) {
+  explicit FragmentProgramOf(typename Shader::Uniforms uniforms) : uniforms_(std::move(uniforms)) {
     name_ = Shader::kName;
     CountFragIn in;
     CountTexUnit tex;

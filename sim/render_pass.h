@@ -49,8 +49,8 @@ struct RenderPassDesc {
   LoadOp color_load = LoadOp::kClear;
   glm::vec4 clear_color{0.0f};
   bool store_color = true;
-  LoadOp depth_load = LoadOp::kClear;  // depth lives in tile memory; kLoad is not supported
-  bool store_depth = false;            // depth is discarded at the end of the render
+  LoadOp depth_load = LoadOp::kClear;    // depth lives in tile memory; kLoad is not supported
+  bool store_depth = false;              // depth is discarded at the end of the render
   std::optional<PixelRect> render_area;  // default: the whole target
   std::vector<DrawCall> draws;
 };

@@ -72,7 +72,9 @@ class OpRecorder {
 // Vector construction from parts: a vector is constant only if all its parts are.
 template <int N>
 struct CVec;
-inline float raw(float f) { return f; }
+inline float raw(float f) {
+  return f;
+}
 template <int N>
 inline glm::vec<N, float> raw(const glm::vec<N, float>& v) {
   return v;
@@ -96,11 +98,10 @@ struct CVec {
   CVec(float s) requires(N == 1) : v(s) {}     // NOLINT
   explicit CVec(float s) requires(N > 1) : v(s) {}
   template <int M>
-    requires(M == 1 && N > 1)
-  explicit CVec(const CVec<M>& s) : v(s.v.x), constant(s.constant) {}
+  requires(M == 1 && N > 1) explicit CVec(const CVec<M>& s) : v(s.v.x), constant(s.constant) {}
   template <typename... Parts>
-    requires(sizeof...(Parts) >= 2)
-  CVec(const Parts&... parts) : v(raw(parts)...), constant(all_constant(parts...)) {}
+  requires(sizeof...(Parts) >= 2) CVec(const Parts&... parts)
+      : v(raw(parts)...), constant(all_constant(parts...)) {}
   static CVec computed(const value_type& value, bool is_product = false) {
     CVec c(value);
     c.constant = false;
@@ -149,41 +150,39 @@ inline glm::vec<N, float> widen(const glm::vec<N, float>& v) requires(N > 1) {
 }  // namespace detail
 
 // Binary arithmetic between recorded values; a scalar operand broadcasts.
-#define SKINSIM_SL_BINOP(op, is_mul, is_div)                                               \
-  template <int N, int M>                                                                  \
-  inline CVec<detail::result_lanes<N, M>()> operator op(const CVec<N>& a, const CVec<M>& b) \
-    requires(N == M || N == 1 || M == 1) {                                                 \
-    constexpr int R = detail::result_lanes<N, M>();                                        \
-    using V = glm::vec<R, float>;                                                          \
-    const V av = detail::widen<R>(a.v), bv = detail::widen<R>(b.v);                        \
-    const V r = av op bv;                                                                  \
-    if (a.constant && b.constant) return CVec<R>(r);                                       \
-    if (is_div) {                                                                          \
-      OpRecorder::transcendental(M); /* reciprocal per divisor lane, then a multiply */    \
-      OpRecorder::alu(R);                                                                  \
-      return CVec<R>::computed(r, true);                                                   \
-    }                                                                                      \
-    if (!is_mul && (a.product || b.product)) return CVec<R>::computed(r); /* fused MAD */  \
-    OpRecorder::alu(R);                                                                    \
-    return CVec<R>::computed(r, is_mul);                                                   \
-  }                                                                                        \
-  template <int N>                                                                         \
-  inline CVec<N> operator op(const CVec<N>& a, float b) {                                  \
-    return a op CFloat(glm::vec1(b));                                                      \
-  }                                                                                        \
-  template <int N>                                                                         \
-  inline CVec<N> operator op(float a, const CVec<N>& b) {                                  \
-    return CFloat(glm::vec1(a)) op b;                                                      \
-  }                                                                                        \
-  template <int N>                                                                         \
-  inline CVec<N> operator op(const CVec<N>& a, const glm::vec<N, float>& b) requires(N > 1) \
-  {                                                                                        \
-    return a op CVec<N>(b);                                                                \
-  }                                                                                        \
-  template <int N>                                                                         \
-  inline CVec<N> operator op(const glm::vec<N, float>& a, const CVec<N>& b) requires(N > 1) \
-  {                                                                                        \
-    return CVec<N>(a) op b;                                                                \
+#define SKINSIM_SL_BINOP(op, is_mul, is_div)                                                  \
+  template <int N, int M>                                                                     \
+  inline CVec<detail::result_lanes<N, M>()> operator op(                                      \
+      const CVec<N>& a, const CVec<M>& b) requires(N == M || N == 1 || M == 1) {              \
+    constexpr int R = detail::result_lanes<N, M>();                                           \
+    using V = glm::vec<R, float>;                                                             \
+    const V av = detail::widen<R>(a.v), bv = detail::widen<R>(b.v);                           \
+    const V r = av op bv;                                                                     \
+    if (a.constant && b.constant) return CVec<R>(r);                                          \
+    if (is_div) {                                                                             \
+      OpRecorder::transcendental(M); /* reciprocal per divisor lane, then a multiply */       \
+      OpRecorder::alu(R);                                                                     \
+      return CVec<R>::computed(r, true);                                                      \
+    }                                                                                         \
+    if (!is_mul && (a.product || b.product)) return CVec<R>::computed(r); /* fused MAD */     \
+    OpRecorder::alu(R);                                                                       \
+    return CVec<R>::computed(r, is_mul);                                                      \
+  }                                                                                           \
+  template <int N>                                                                            \
+  inline CVec<N> operator op(const CVec<N>& a, float b) {                                     \
+    return a op CFloat(glm::vec1(b));                                                         \
+  }                                                                                           \
+  template <int N>                                                                            \
+  inline CVec<N> operator op(float a, const CVec<N>& b) {                                     \
+    return CFloat(glm::vec1(a)) op b;                                                         \
+  }                                                                                           \
+  template <int N>                                                                            \
+  inline CVec<N> operator op(const CVec<N>& a, const glm::vec<N, float>& b) requires(N > 1) { \
+    return a op CVec<N>(b);                                                                   \
+  }                                                                                           \
+  template <int N>                                                                            \
+  inline CVec<N> operator op(const glm::vec<N, float>& a, const CVec<N>& b) requires(N > 1) { \
+    return CVec<N>(a) op b;                                                                   \
   }
 
 SKINSIM_SL_BINOP(+, false, false)
@@ -202,15 +201,25 @@ inline CVec<N> operator-(const CVec<N>& a) {  // source negation modifier: free
 
 // ---------------------------------------------------------------------------------------
 // Component access and construction. Free in both modes (register swizzles).
-inline float x(float v) { return v; }
+inline float x(float v) {
+  return v;
+}
 template <int N>
-inline float x(const glm::vec<N, float>& v) { return v.x; }
+inline float x(const glm::vec<N, float>& v) {
+  return v.x;
+}
 template <int N>
-inline float y(const glm::vec<N, float>& v) { return v.y; }
+inline float y(const glm::vec<N, float>& v) {
+  return v.y;
+}
 template <int N>
-inline float z(const glm::vec<N, float>& v) { return v.z; }
+inline float z(const glm::vec<N, float>& v) {
+  return v.z;
+}
 template <int N>
-inline float w(const glm::vec<N, float>& v) { return v.w; }
+inline float w(const glm::vec<N, float>& v) {
+  return v.w;
+}
 
 template <int N>
 inline CFloat component(const CVec<N>& v, int i) {
@@ -219,17 +228,31 @@ inline CFloat component(const CVec<N>& v, int i) {
   return r;
 }
 template <int N>
-inline CFloat x(const CVec<N>& v) { return component(v, 0); }
+inline CFloat x(const CVec<N>& v) {
+  return component(v, 0);
+}
 template <int N>
-inline CFloat y(const CVec<N>& v) { return component(v, 1); }
+inline CFloat y(const CVec<N>& v) {
+  return component(v, 1);
+}
 template <int N>
-inline CFloat z(const CVec<N>& v) { return component(v, 2); }
+inline CFloat z(const CVec<N>& v) {
+  return component(v, 2);
+}
 template <int N>
-inline CFloat w(const CVec<N>& v) { return component(v, 3); }
+inline CFloat w(const CVec<N>& v) {
+  return component(v, 3);
+}
 
-inline glm::vec2 xy(const glm::vec3& v) { return {v.x, v.y}; }
-inline glm::vec2 xy(const glm::vec4& v) { return {v.x, v.y}; }
-inline glm::vec3 xyz(const glm::vec4& v) { return {v.x, v.y, v.z}; }
+inline glm::vec2 xy(const glm::vec3& v) {
+  return {v.x, v.y};
+}
+inline glm::vec2 xy(const glm::vec4& v) {
+  return {v.x, v.y};
+}
+inline glm::vec3 xyz(const glm::vec4& v) {
+  return {v.x, v.y, v.z};
+}
 template <int N>
 inline CVec<2> xy(const CVec<N>& v) {
   CVec<2> r(glm::vec2(v.v.x, v.v.y));
@@ -241,7 +264,6 @@ inline CVec<3> xyz(const CVec<4>& v) {
   r.constant = v.constant;
   return r;
 }
-
 
 // ---------------------------------------------------------------------------------------
 // Built-in functions. Exec overloads forward to glm; Count overloads record.
@@ -266,21 +288,23 @@ inline CFloat dot(const glm::vec<N, float>& a, const CVec<N>& b) {
 }
 
 // Transcendentals: one special-function op per lane.
-#define SKINSIM_SL_TRANSCENDENTAL(name, expr)                                   \
-  inline float name(float v) { return expr; }                                   \
-  template <int N>                                                              \
-  inline glm::vec<N, float> name(const glm::vec<N, float>& v) {                 \
-    glm::vec<N, float> r;                                                       \
-    for (int i = 0; i < N; ++i) r[i] = name(v[i]);                              \
-    return r;                                                                   \
-  }                                                                             \
-  template <int N>                                                              \
-  inline CVec<N> name(const CVec<N>& a) {                                       \
-    glm::vec<N, float> r;                                                       \
-    for (int i = 0; i < N; ++i) r[i] = name(a.v[i]);                            \
-    if (a.constant) return CVec<N>(r);                                          \
-    OpRecorder::transcendental(N);                                              \
-    return CVec<N>::computed(r);                                                \
+#define SKINSIM_SL_TRANSCENDENTAL(name, expr)                   \
+  inline float name(float v) {                                  \
+    return expr;                                                \
+  }                                                             \
+  template <int N>                                              \
+  inline glm::vec<N, float> name(const glm::vec<N, float>& v) { \
+    glm::vec<N, float> r;                                       \
+    for (int i = 0; i < N; ++i) r[i] = name(v[i]);              \
+    return r;                                                   \
+  }                                                             \
+  template <int N>                                              \
+  inline CVec<N> name(const CVec<N>& a) {                       \
+    glm::vec<N, float> r;                                       \
+    for (int i = 0; i < N; ++i) r[i] = name(a.v[i]);            \
+    if (a.constant) return CVec<N>(r);                          \
+    OpRecorder::transcendental(N);                              \
+    return CVec<N>::computed(r);                                \
   }
 
 SKINSIM_SL_TRANSCENDENTAL(exp2, std::exp2(v))
@@ -293,21 +317,23 @@ SKINSIM_SL_TRANSCENDENTAL(cos, std::cos(v))
 #undef SKINSIM_SL_TRANSCENDENTAL
 
 // One-instruction ALU functions (min, max, clamp, saturate, step, floor, fract).
-#define SKINSIM_SL_UNARY_ALU(name, expr)                                        \
-  inline float name(float v) { return expr; }                                   \
-  template <int N>                                                              \
-  inline glm::vec<N, float> name(const glm::vec<N, float>& v) {                 \
-    glm::vec<N, float> r;                                                       \
-    for (int i = 0; i < N; ++i) r[i] = name(v[i]);                              \
-    return r;                                                                   \
-  }                                                                             \
-  template <int N>                                                              \
-  inline CVec<N> name(const CVec<N>& a) {                                       \
-    glm::vec<N, float> r;                                                       \
-    for (int i = 0; i < N; ++i) r[i] = name(a.v[i]);                            \
-    if (a.constant) return CVec<N>(r);                                          \
-    OpRecorder::alu(N);                                                         \
-    return CVec<N>::computed(r);                                                \
+#define SKINSIM_SL_UNARY_ALU(name, expr)                        \
+  inline float name(float v) {                                  \
+    return expr;                                                \
+  }                                                             \
+  template <int N>                                              \
+  inline glm::vec<N, float> name(const glm::vec<N, float>& v) { \
+    glm::vec<N, float> r;                                       \
+    for (int i = 0; i < N; ++i) r[i] = name(v[i]);              \
+    return r;                                                   \
+  }                                                             \
+  template <int N>                                              \
+  inline CVec<N> name(const CVec<N>& a) {                       \
+    glm::vec<N, float> r;                                       \
+    for (int i = 0; i < N; ++i) r[i] = name(a.v[i]);            \
+    if (a.constant) return CVec<N>(r);                          \
+    OpRecorder::alu(N);                                         \
+    return CVec<N>::computed(r);                                \
   }
 
 SKINSIM_SL_UNARY_ALU(saturate, glm::clamp(v, 0.0f, 1.0f))
@@ -315,7 +341,9 @@ SKINSIM_SL_UNARY_ALU(floor, std::floor(v))
 SKINSIM_SL_UNARY_ALU(fract, v - std::floor(v))
 #undef SKINSIM_SL_UNARY_ALU
 
-inline float abs(float v) { return std::fabs(v); }
+inline float abs(float v) {
+  return std::fabs(v);
+}
 template <int N>
 inline glm::vec<N, float> abs(const glm::vec<N, float>& v) {
   return glm::abs(v);
@@ -328,36 +356,38 @@ inline CVec<N> abs(const CVec<N>& a) {  // source modifier: free
   return r;
 }
 
-#define SKINSIM_SL_BINARY_ALU(name, fn)                                                  \
-  inline float name(float a, float b) { return fn(a, b); }                               \
-  template <int N>                                                                       \
-  inline glm::vec<N, float> name(const glm::vec<N, float>& a, const glm::vec<N, float>& b) { \
-    return fn(a, b);                                                                     \
-  }                                                                                      \
-  template <int N>                                                                       \
-  inline glm::vec<N, float> name(const glm::vec<N, float>& a, float b) {                 \
-    return fn(a, glm::vec<N, float>(b));                                                 \
-  }                                                                                      \
-  template <int N, int M>                                                                \
-  inline CVec<detail::result_lanes<N, M>()> name(const CVec<N>& a, const CVec<M>& b)     \
-    requires(N == M || M == 1) {                                                         \
-    constexpr int R = detail::result_lanes<N, M>();                                      \
-    const glm::vec<R, float> r = fn(detail::widen<R>(a.v), detail::widen<R>(b.v));       \
-    if (a.constant && b.constant) return CVec<R>(r);                                     \
-    OpRecorder::alu(R);                                                                  \
-    return CVec<R>::computed(r);                                                         \
-  }                                                                                      \
-  template <int N>                                                                       \
-  inline CVec<N> name(const CVec<N>& a, float b) {                                       \
-    return name(a, CFloat(glm::vec1(b)));                                                \
-  }                                                                                      \
-  template <int N>                                                                       \
-  inline CVec<N> name(float a, const CVec<N>& b) requires(N == 1) {                      \
-    return name(CFloat(glm::vec1(a)), b);                                                \
-  }                                                                                      \
-  template <int N>                                                                       \
-  inline CVec<N> name(const CVec<N>& a, const glm::vec<N, float>& b) requires(N > 1) {   \
-    return name(a, CVec<N>(b));                                                          \
+#define SKINSIM_SL_BINARY_ALU(name, fn)                                                         \
+  inline float name(float a, float b) {                                                         \
+    return fn(a, b);                                                                            \
+  }                                                                                             \
+  template <int N>                                                                              \
+  inline glm::vec<N, float> name(const glm::vec<N, float>& a, const glm::vec<N, float>& b) {    \
+    return fn(a, b);                                                                            \
+  }                                                                                             \
+  template <int N>                                                                              \
+  inline glm::vec<N, float> name(const glm::vec<N, float>& a, float b) {                        \
+    return fn(a, glm::vec<N, float>(b));                                                        \
+  }                                                                                             \
+  template <int N, int M>                                                                       \
+  inline CVec<detail::result_lanes<N, M>()> name(const CVec<N>& a,                              \
+                                                 const CVec<M>& b) requires(N == M || M == 1) { \
+    constexpr int R = detail::result_lanes<N, M>();                                             \
+    const glm::vec<R, float> r = fn(detail::widen<R>(a.v), detail::widen<R>(b.v));              \
+    if (a.constant && b.constant) return CVec<R>(r);                                            \
+    OpRecorder::alu(R);                                                                         \
+    return CVec<R>::computed(r);                                                                \
+  }                                                                                             \
+  template <int N>                                                                              \
+  inline CVec<N> name(const CVec<N>& a, float b) {                                              \
+    return name(a, CFloat(glm::vec1(b)));                                                       \
+  }                                                                                             \
+  template <int N>                                                                              \
+  inline CVec<N> name(float a, const CVec<N>& b) requires(N == 1) {                             \
+    return name(CFloat(glm::vec1(a)), b);                                                       \
+  }                                                                                             \
+  template <int N>                                                                              \
+  inline CVec<N> name(const CVec<N>& a, const glm::vec<N, float>& b) requires(N > 1) {          \
+    return name(a, CVec<N>(b));                                                                 \
   }
 
 namespace detail {
@@ -410,7 +440,9 @@ template <typename T>
 inline T reflect(const T& i, const T& n) {
   return i - n * (dot(n, i) * 2.0f);
 }
-inline glm::vec3 cross(const glm::vec3& a, const glm::vec3& b) { return glm::cross(a, b); }
+inline glm::vec3 cross(const glm::vec3& a, const glm::vec3& b) {
+  return glm::cross(a, b);
+}
 inline CVec<3> cross(const CVec<3>& a, const CVec<3>& b) {
   const glm::vec3 r = glm::cross(a.v, b.v);
   if (a.constant && b.constant) return CVec<3>(r);
@@ -418,7 +450,9 @@ inline CVec<3> cross(const CVec<3>& a, const CVec<3>& b) {
   return CVec<3>::computed(r);
 }
 // select(c, a, b): c > 0 ? a : b, one conditional-move instruction.
-inline float select(float c, float a, float b) { return c > 0.0f ? a : b; }
+inline float select(float c, float a, float b) {
+  return c > 0.0f ? a : b;
+}
 template <int N>
 inline glm::vec<N, float> select(float c, const glm::vec<N, float>& a,
                                  const glm::vec<N, float>& b) {

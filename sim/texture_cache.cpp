@@ -8,7 +8,9 @@ namespace skinsim::sim {
 namespace {
 constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
 
-bool is_pow2(std::uint32_t v) { return v != 0 && (v & (v - 1)) == 0; }
+bool is_pow2(std::uint32_t v) {
+  return v != 0 && (v & (v - 1)) == 0;
+}
 }  // namespace
 
 TextureCache::TextureCache(const TextureCacheConfig& config)
@@ -34,8 +36,10 @@ TextureCache::TextureCache(const TextureCacheConfig& config)
     // Folding index-wide bit chunks is only defined for a power-of-two set count (as in
     // hardware, where the index is a bit field).
     if (set_mask_ == 0) {
-      throw std::invalid_argument("texture cache: XOR-folded set index needs a power-of-two set "
-                                  "count, got " + std::to_string(sets_) + " sets");
+      throw std::invalid_argument(
+          "texture cache: XOR-folded set index needs a power-of-two set "
+          "count, got " +
+          std::to_string(sets_) + " sets");
     }
     while ((1u << index_bits_) < sets_) ++index_bits_;
     // Enough doubling steps that 2^steps chunks cover all 64 bits of a line number.
@@ -44,6 +48,8 @@ TextureCache::TextureCache(const TextureCacheConfig& config)
   tags_.assign(static_cast<size_t>(sets_) * ways_, kEmpty);
 }
 
-void TextureCache::clear() { std::fill(tags_.begin(), tags_.end(), kEmpty); }
+void TextureCache::clear() {
+  std::fill(tags_.begin(), tags_.end(), kEmpty);
+}
 
 }  // namespace skinsim::sim

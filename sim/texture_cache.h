@@ -42,7 +42,7 @@ class TextureCache {
   std::uint32_t line_bytes_;
   std::uint32_t line_shift_;
   std::uint32_t sets_;
-  std::uint64_t set_mask_;  // sets_ - 1 when sets_ is a power of two, else 0 (use modulo)
+  std::uint64_t set_mask_;    // sets_ - 1 when sets_ is a power of two, else 0 (use modulo)
   std::uint32_t index_bits_;  // log2(sets_) when folding
   // XOR-fold steps; 0 means no folding. Step k XORs in the value shifted by index_bits_ << k,
   // so after n steps the low index_bits_ hold the XOR of 2^n index-wide chunks of the line.

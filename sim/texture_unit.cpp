@@ -27,15 +27,15 @@ glm::vec4 ExecTexUnit::sample_cube(int binding, const Varying<3>& direction) {
   const float len = std::max(glm::length(direction.value), 1e-6f);
   const float scale = 0.5f * static_cast<float>(c.size()) / len;
   const float dx = glm::length(direction.ddx) * scale, dy = glm::length(direction.ddy) * scale;
-  return filtered(c.face(cc.face), binding * kBindingAddressStride + c.face_offset(cc.face),
-                  cc.uv, LodInput::from_rho2(footprint_rho2(dx, 0.0f, dy, 0.0f)), false);
+  return filtered(c.face(cc.face), binding * kBindingAddressStride + c.face_offset(cc.face), cc.uv,
+                  LodInput::from_rho2(footprint_rho2(dx, 0.0f, dy, 0.0f)), false);
 }
 
 glm::vec4 ExecTexUnit::sample_cube_lod(int binding, const glm::vec3& direction, float lod) {
   const TextureCube& c = cube(binding);
   const CubeCoord cc = cube_coord(direction);
-  return filtered(c.face(cc.face), binding * kBindingAddressStride + c.face_offset(cc.face),
-                  cc.uv, LodInput::explicit_lod(lod), true);
+  return filtered(c.face(cc.face), binding * kBindingAddressStride + c.face_offset(cc.face), cc.uv,
+                  LodInput::explicit_lod(lod), true);
 }
 
 }  // namespace skinsim::sim

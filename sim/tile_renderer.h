@@ -20,8 +20,7 @@ class TileRenderer {
                const GpuConfig& config, TextureCache& cache);
 
   // Renders tile (tx, ty) with the given triangle list; fills `counters`.
-  void render(int tx, int ty, const std::vector<std::uint32_t>& triangles,
-              TileCounters& counters);
+  void render(int tx, int ty, const std::vector<std::uint32_t>& triangles, TileCounters& counters);
 
  private:
   // Shades every tagged pixel; returns whether there was any.

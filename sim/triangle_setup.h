@@ -29,9 +29,9 @@ struct TriangleSetup {
   std::int64_t edge_c[3];
   // Pixel bounding box, inclusive, clamped to the render area.
   int min_x, min_y, max_x, max_y;
-  float origin_x, origin_y;  // pixel-space origin of the planes
-  Plane depth;               // z/w in [0,1]
-  Plane inv_w;               // 1/w
+  float origin_x, origin_y;      // pixel-space origin of the planes
+  Plane depth;                   // z/w in [0,1]
+  Plane inv_w;                   // 1/w
   std::uint32_t varying_offset;  // first plane in the pass's varying-plane pool
   std::uint32_t draw;            // index of the draw call it came from
 };

@@ -27,20 +27,20 @@ std::string check_operands(const char* a_text, const A& a, const char* b_text, c
 
 }  // namespace skinsim::detail
 
-#define SKINSIM_CHECK(condition)                                                      \
-  do {                                                                                \
+#define SKINSIM_CHECK(condition)                                                           \
+  do {                                                                                     \
     if (!(condition)) ::skinsim::detail::check_failed(__FILE__, __LINE__, #condition, ""); \
   } while (false)
 
-#define SKINSIM_CHECK_OP(a, op, b)                                                       \
-  do {                                                                                   \
-    const auto& skinsim_check_a = (a);                                                   \
-    const auto& skinsim_check_b = (b);                                                   \
-    if (!(skinsim_check_a op skinsim_check_b)) {                                         \
-      ::skinsim::detail::check_failed(                                                   \
-          __FILE__, __LINE__, #a " " #op " " #b,                                         \
+#define SKINSIM_CHECK_OP(a, op, b)                                                      \
+  do {                                                                                  \
+    const auto& skinsim_check_a = (a);                                                  \
+    const auto& skinsim_check_b = (b);                                                  \
+    if (!(skinsim_check_a op skinsim_check_b)) {                                        \
+      ::skinsim::detail::check_failed(                                                  \
+          __FILE__, __LINE__, #a " " #op " " #b,                                        \
           ::skinsim::detail::check_operands(#a, skinsim_check_a, #b, skinsim_check_b)); \
-    }                                                                                    \
+    }                                                                                   \
   } while (false)
 
 #define SKINSIM_CHECK_EQ(a, b) SKINSIM_CHECK_OP(a, ==, b)

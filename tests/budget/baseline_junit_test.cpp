@@ -22,8 +22,10 @@ std::filesystem::path temp_path(const std::string& name) {
 TEST(Baseline, RoundTripsExactlyIncludingInfinity) {
   Baseline b;
   b.skinsim_version = "9.9.9";
-  b.budgets["a"] = {
-      "ipad4", "fnv1a64:0123", "fnv1a64:4567", {{"frame.ms", 5.356606482303355}, {"quality.psnr_skin", HUGE_VAL}}};
+  b.budgets["a"] = {"ipad4",
+                    "fnv1a64:0123",
+                    "fnv1a64:4567",
+                    {{"frame.ms", 5.356606482303355}, {"quality.psnr_skin", HUGE_VAL}}};
   const auto path = temp_path("roundtrip.json");
   save_baseline(b, path);
   const Baseline back = load_baseline(path);

@@ -114,8 +114,7 @@ TEST(Evaluate, CostBelowItsLowerLimitFailsAsMissingWork) {
     EXPECT_NE(r[i].message.find("dropped unexpectedly: did work go missing?"), std::string::npos)
         << r[i].message;
   }
-  EXPECT_NE(r[0].message.find("frame.ms fell from 6.000 ms to 5.000 ms (-16.7%"),
-            std::string::npos)
+  EXPECT_NE(r[0].message.find("frame.ms fell from 6.000 ms to 5.000 ms (-16.7%"), std::string::npos)
       << r[0].message;
   EXPECT_TRUE(r[3].passed) << "the upper limit alone cannot catch a drop";
 }

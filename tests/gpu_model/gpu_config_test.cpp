@@ -1,7 +1,8 @@
+#include "gpu_model/gpu_config.h"
+
 #include <gtest/gtest.h>
 
 #include "gpu_model/errors.h"
-#include "gpu_model/gpu_config.h"
 #include "gpu_model/profile_loader.h"
 #include "test_support.h"
 

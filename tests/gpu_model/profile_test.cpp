@@ -193,18 +193,19 @@ TEST(Profile, CacheSizeMustHoldWholeSets) {
 TEST(Profile, CacheSetHashMustBeGivenAndZeroOrOne) {
   const std::string hash_block = "[texture.cache_set_hash]\nvalue = 0\n";
   const std::string text = shipped_text("ipad4");
-  const std::string block = text.substr(text.find(hash_block),
-                                        text.find("[tile.width]") - text.find(hash_block));
+  const std::string block =
+      text.substr(text.find(hash_block), text.find("[tile.width]") - text.find(hash_block));
   const std::string missing = parse_error(replace_once(text, block, ""));
-  EXPECT_NE(missing.find("edited.toml: field 'texture.cache_set_hash': missing"),
-            std::string::npos)
+  EXPECT_NE(missing.find("edited.toml: field 'texture.cache_set_hash': missing"), std::string::npos)
       << missing;
 
   for (const char* bad : {"0.5", "2"}) {
-    const std::string m = parse_error(
-        replace_once(text, hash_block, "[texture.cache_set_hash]\nvalue = " + std::string(bad) + "\n"));
+    const std::string m = parse_error(replace_once(
+        text, hash_block, "[texture.cache_set_hash]\nvalue = " + std::string(bad) + "\n"));
     EXPECT_NE(m.find("edited.toml:"), std::string::npos) << m;
-    EXPECT_NE(m.find("'texture.cache_set_hash.value': must be an integer in [0, 1]"), std::string::npos) << m;
+    EXPECT_NE(m.find("'texture.cache_set_hash.value': must be an integer in [0, 1]"),
+              std::string::npos)
+        << m;
   }
 
   const DeviceProfile hashed = parse_device_profile(
@@ -214,13 +215,15 @@ TEST(Profile, CacheSetHashMustBeGivenAndZeroOrOne) {
 
 TEST(Profile, CacheSetHashNeedsPowerOfTwoSets) {
   // 12288 B / (64 B x 4 ways) = 48 sets: fine for modulo, but the range sweeps hashing too.
-  const std::string text = replace_once(shipped_text("ipad4"), "[texture.cache_bytes]\nvalue = 8192",
-                                        "[texture.cache_bytes]\nvalue = 12288");
+  const std::string text =
+      replace_once(shipped_text("ipad4"), "[texture.cache_bytes]\nvalue = 8192",
+                   "[texture.cache_bytes]\nvalue = 12288");
   const std::string m = parse_error(text);
   EXPECT_NE(m.find("'texture.cache_set_hash.range[1]'"), std::string::npos) << m;
   EXPECT_NE(m.find("48 sets"), std::string::npos) << m;
-  EXPECT_EQ(parse_error(replace_once(text, "value = 0\nrange = [0, 1]", "value = 0\nrange = [0, 0]")),
-            "");
+  EXPECT_EQ(
+      parse_error(replace_once(text, "value = 0\nrange = [0, 1]", "value = 0\nrange = [0, 0]")),
+      "");
 }
 
 TEST(Profile, BadConfidenceAndSyntaxAreReported) {

@@ -53,10 +53,10 @@ TEST(TempFiles, NamesFollowOnePattern) {
   EXPECT_FALSE(is_temporary_name("result.json"));
   EXPECT_FALSE(is_temporary_name("result.tmp123.json"));
   EXPECT_TRUE(is_temporary_name(".frame.png.skinsim-tmp.host.42.7.png"));  // writer's extension
-  EXPECT_FALSE(is_temporary_name("frame.png.skinsim-tmp.host.42.7"));       // not hidden
-  EXPECT_FALSE(is_temporary_name(".frame.png.skinsim-tmp.host.42"));        // no counter
-  EXPECT_FALSE(is_temporary_name(".frame.png.skinsim-tmp..42.7"));          // no host
-  EXPECT_FALSE(is_temporary_name(".frame.png.skinsim-tmp.host.4x2.7"));     // pid not a number
+  EXPECT_FALSE(is_temporary_name("frame.png.skinsim-tmp.host.42.7"));      // not hidden
+  EXPECT_FALSE(is_temporary_name(".frame.png.skinsim-tmp.host.42"));       // no counter
+  EXPECT_FALSE(is_temporary_name(".frame.png.skinsim-tmp..42.7"));         // no host
+  EXPECT_FALSE(is_temporary_name(".frame.png.skinsim-tmp.host.4x2.7"));    // pid not a number
 }
 
 TEST(TempFiles, StaleTemporaryOfADeadProcessIsRemovedLiveOneKept) {

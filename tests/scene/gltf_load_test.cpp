@@ -163,10 +163,10 @@ TEST_P(HeadSizeWarning, WarnsOutsidePlausibleHeadHeights) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Units, HeadSizeWarning,
-                         ::testing::Values(SizeCase{0.0f, true},      // metres: 1000 mm
-                                           SizeCase{0.02f, true},     // 50 mm
-                                           SizeCase{0.0044f, false},  // 227 mm
-                                           SizeCase{0.008f, false})); // 125 mm
+                         ::testing::Values(SizeCase{0.0f, true},       // metres: 1000 mm
+                                           SizeCase{0.02f, true},      // 50 mm
+                                           SizeCase{0.0044f, false},   // 227 mm
+                                           SizeCase{0.008f, false}));  // 125 mm
 
 TEST(GltfLoad, SparseAccessorOverridesValues) {
   GltfFixture f("sparse");
@@ -221,9 +221,9 @@ TEST(GltfLoad, CameraFromFirstCameraNode) {
 TEST(GltfLoad, OrthographicCameraKeepsYmag) {
   GltfFixture f("ortho_camera");
   f.add_quad_mesh(true, true);
-  f.json()["cameras"] = {{{"type", "orthographic"},
-                          {"orthographic",
-                           {{"xmag", 3.0}, {"ymag", 0.75}, {"znear", 0.0}, {"zfar", 9.0}}}}};
+  f.json()["cameras"] = {
+      {{"type", "orthographic"},
+       {"orthographic", {{"xmag", 3.0}, {"ymag", 0.75}, {"znear", 0.0}, {"zfar", 9.0}}}}};
   f.json()["nodes"].push_back({{"camera", 0}, {"translation", {0.5, 0.5, 4}}});
   f.json()["scenes"][0]["nodes"].push_back(1);
   std::vector<std::string> warnings;

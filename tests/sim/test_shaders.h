@@ -50,11 +50,11 @@ struct ProfileProbeFS {
   static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
                                    const Uniforms& u) {
     using vec3 = typename L::vec3;
-    const auto base = tex.sample(0, in.texcoord(0));          // independent
-    const vec3 n = sl::normalize(in.v3(2));                   // dot + rsqrt + mul
-    const auto ndotl = sl::saturate(sl::dot(n, vec3(u.light)));  // dot + sat
+    const auto base = tex.sample(0, in.texcoord(0));              // independent
+    const vec3 n = sl::normalize(in.v3(2));                       // dot + rsqrt + mul
+    const auto ndotl = sl::saturate(sl::dot(n, vec3(u.light)));   // dot + sat
     const auto lut = tex.sample(1, sl::xy(base) * 0.5f + 0.25f);  // mad (fused), dependent
-    return base * ndotl + lut;                                // mad (fused)
+    return base * ndotl + lut;                                    // mad (fused)
   }
 };
 
