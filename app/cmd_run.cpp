@@ -12,7 +12,6 @@
 #include "driver/frame_quality.h"
 #include "driver/images.h"
 #include "driver/result_json.h"
-#include "driver/skin_diagnosis.h"
 #include "gpu_model/profile_loader.h"
 #include "gpu_model/sensitivity.h"
 #include "gpu_model/timing_json.h"
@@ -39,27 +38,24 @@ struct RunOptions {
 int run(const RunOptions& o) {
   const std::string data_dir = o.device.data_dir.empty() ? default_data_dir() : o.device.data_dir;
   const gpu_model::DeviceProfile device = gpu_model::load_device_profile(o.device.device, data_dir);
-  pipeline::PipelineConfig config = o.config;
-  std::tie(config.width, config.height) =
-      pipeline::render_size(config, static_cast<int>(device.display_width.value),
-                            static_cast<int>(device.display_height.value));
-  config.validate();
+  const pipeline::PipelineConfig config = driver::resolve_config(o.config, device);
   // Checked before any work, so a bad --out fails fast; swapped in only if the run succeeds.
   io::RunDirectory run_directory(o.out);
 
   // Printed as they arise and kept for result.json's "warnings".
   std::vector<std::string> warnings;
-  const auto warn = [&warnings](const std::string& message) {
+  driver::FrameJob job;
+  job.device = &device;
+  job.config = config;
+  job.scene = o.scene;
+  job.scene.warn = [&warnings](const std::string& message) {
     fmt::print(stderr, "skinsim run: warning: {}\n", message);
     warnings.push_back(message);
   };
-  driver::SceneSource source = o.scene;
-  source.warn = warn;
-  const scene::Scene scene = driver::load_scene(
-      source, static_cast<float>(config.width) / static_cast<float>(config.height));
-  const pipeline::GpuScene gpu_scene(scene);
-  const driver::FrameResult result = driver::run_frame(gpu_scene, config, device, o.device.threads);
-  if (!result.output.lod_notice.empty()) warn(result.output.lod_notice);
+  job.threads = o.device.threads;
+  job.reference = o.reference;
+  const driver::FrameJobResult frame_job = driver::run_frame_job(job);
+  const driver::FrameResult& result = frame_job.frame;
 
   const std::filesystem::path& out = run_directory.staging();
   std::vector<std::string> written = {"frame.png"};
@@ -75,12 +71,9 @@ int run(const RunOptions& o) {
 
   nlohmann::json json = driver::frame_result_json(result, o.scene.label());
   json["device"] = device.name;
-  if (o.reference) {
-    const pipeline::ReferenceFrame reference =
-        pipeline::render_reference(gpu_scene, config, o.device.threads);
-    const driver::ReferenceImages ref = driver::reference_images(reference);
-    quality::save_png(ref.image, out / "reference.png");
-    const driver::FrameQuality q = driver::evaluate_quality(result.output.frame, ref);
+  if (frame_job.quality) {
+    quality::save_png(frame_job.reference->image, out / "reference.png");
+    const driver::FrameQuality& q = *frame_job.quality;
     quality::save_png(q.error_map, out / "error_flip.png");
     written.insert(written.end(), {"reference.png", "error_flip.png"});
     nlohmann::json metrics = nlohmann::json::object();
@@ -88,11 +81,8 @@ int run(const RunOptions& o) {
     if (q.has_skin_metrics()) {
       fmt::print("quality vs reference: skin PSNR {:.2f} dB, SSIM {:.4f}, FLIP {:.4f}\n",
                  q.metrics.at("psnr_skin"), q.metrics.at("ssim_skin"), q.metrics.at("flip_skin"));
-    } else {
-      // The frame is still rendered and measured; only the skin metrics do not exist.
-      const std::string why = driver::no_skin_reason(scene, o.scene.skin_materials);
-      warn(why + " (skin metrics not available)");
-      metrics["skin_metrics_unavailable"] = why;
+    } else {  // the frame is still measured; only the skin metrics do not exist
+      metrics["skin_metrics_unavailable"] = frame_job.no_skin;
       fmt::print(
           "quality vs reference: skin metrics not available; frame PSNR {:.2f} dB, SSIM "
           "{:.4f}, FLIP {:.4f}\n",
@@ -102,7 +92,8 @@ int run(const RunOptions& o) {
   }
   if (o.sensitivity) {
     const auto recount = [&](const gpu_model::DeviceProfile& varied) {
-      return driver::run_frame(gpu_scene, config, varied, o.device.threads).output.passes;
+      return driver::run_frame(*frame_job.gpu_scene, config, varied, o.device.threads)
+          .output.passes;
     };
     const auto rows = gpu_model::sensitivity(result.output.passes, device, recount);
     json["sensitivity"] = gpu_model::to_json(rows);
@@ -120,9 +111,9 @@ int run(const RunOptions& o) {
     if (!pipeline::knob_applies(config, knob)) continue;
     knobs.push_back(knob + " " + pipeline::get_config_field(config, knob));
   }
-  fmt::print("skinsim run: {} with {} on {} ({}), {}x{}{}{}{}\n", o.scene.label(), config.technique,
+  fmt::print("skinsim run: {} with {} on {} ({}), {}x{}{}{}\n", o.scene.label(), config.technique,
              device.name, device.gpu, config.width, config.height, knobs.empty() ? "" : ", ",
-             fmt::join(knobs, ", "), result.output.lod ? ", LOD shader" : "");
+             fmt::join(knobs, ", "));
   fmt::print("{}", gpu_model::format_frame_table(result.timing));
   written.push_back("result.json");
   run_directory.commit();

@@ -17,6 +17,7 @@ struct Fixture {
   gpu_model::DeviceProfile device = gpu_model::load_device_profile("ipad4", SKINSIM_BENCH_DATA_DIR);
   scene::Scene scene = driver::load_scene(driver::SceneSource{}, 4.0f / 3.0f);
   pipeline::GpuScene gpu_scene{scene};
+  pipeline::PipelineConfig config = driver::resolve_config({}, device);  // the display size
 };
 
 Fixture& fixture() {
@@ -29,7 +30,7 @@ void BM_SkinFrame(benchmark::State& state) {
   const int threads = static_cast<int>(state.range(0));
   std::uint64_t fragments = 0;
   for (auto _ : state) {
-    const driver::FrameResult r = driver::run_frame(f.gpu_scene, {}, f.device, threads);
+    const driver::FrameResult r = driver::run_frame(f.gpu_scene, f.config, f.device, threads);
     fragments = 0;
     for (const auto& p : r.output.passes) fragments += p.fragments_shaded;
     benchmark::DoNotOptimize(r.timing.frame_ms);

@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "budget/budget_error.h"
+#include "budget/error.h"
 #include "io/atomic_file.h"
 #include "io/read_file.h"
 #include "quality/json_value.h"

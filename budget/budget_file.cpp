@@ -10,7 +10,7 @@
 #include <set>
 #include <sstream>
 
-#include "budget/budget_error.h"
+#include "budget/error.h"
 #include "budget/metrics.h"
 #include "io/read_file.h"
 

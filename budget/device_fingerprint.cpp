@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "budget/budget_error.h"
+#include "budget/error.h"
 #include "io/read_file.h"
 
 namespace skinsim::budget {

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "budget/budget_error.h"
+#include "budget/error.h"
 #include "budget/explain.h"
 
 namespace skinsim::budget {

@@ -8,7 +8,7 @@
 #include <optional>
 #include <string_view>
 
-#include "budget/budget_error.h"
+#include "budget/error.h"
 
 namespace skinsim::budget {
 

@@ -2,16 +2,13 @@
 
 #include <fmt/format.h>
 
-#include "budget/budget_error.h"
 #include "budget/device_fingerprint.h"
+#include "budget/error.h"
 #include "driver/frame_job.h"
 #include "driver/frame_quality.h"
-#include "driver/skin_diagnosis.h"
-#include "gpu_model/errors.h"
+#include "gpu_model/error.h"
 #include "gpu_model/profile_loader.h"
-#include "pipeline/gpu_scene.h"
-#include "pipeline/reference/reference.h"
-#include "scene/scene_error.h"
+#include "scene/error.h"
 
 namespace skinsim::budget {
 
@@ -29,40 +26,33 @@ BudgetRun run_budget(const std::string& file, const Budget& budget, const std::s
                      int threads, bool with_quality) {
   const gpu_model::DeviceProfile device = load_budget_device(file, budget, data_dir);
   const std::string where = fmt::format("{}:{}: budget '{}'", file, budget.line, budget.name);
-  pipeline::PipelineConfig config = budget.config;
-  std::tie(config.width, config.height) =
-      pipeline::render_size(config, static_cast<int>(device.display_width.value),
-                            static_cast<int>(device.display_height.value));
+  driver::FrameJob job;
+  job.device = &device;
   try {
-    config.validate();
+    job.config = driver::resolve_config(budget.config, device);
   } catch (const pipeline::ConfigError& e) {
     throw BudgetError(fmt::format("{}: {}", where, e.what()));
   }
-  scene::Scene scene;
+  job.scene = budget.scene;
+  job.threads = threads;
+  job.reference = with_quality;
+  driver::FrameJobResult frame;
   try {
-    scene = driver::load_scene(
-        budget.scene, static_cast<float>(config.width) / static_cast<float>(config.height));
+    frame = driver::run_frame_job(job);
   } catch (const scene::SceneError& e) {
     throw BudgetError(fmt::format("{}, scene: {}", where, e.what()));
   }
-  const pipeline::GpuScene gpu_scene(scene);
-  const driver::FrameResult frame = driver::run_frame(gpu_scene, config, device, threads);
   BudgetRun run;
-  run.measurement = measure_frame(frame);
-  if (with_quality) {
-    const driver::ReferenceImages reference =
-        driver::reference_images(pipeline::render_reference(gpu_scene, frame.config, threads));
-    const driver::FrameQuality quality = driver::evaluate_quality(frame.output.frame, reference);
-    if (!quality.has_skin_metrics()) {
+  run.measurement = measure_frame(frame.frame);
+  if (frame.quality) {
+    if (!frame.no_skin.empty()) {
       for (const Limit& limit : budget.limits) {
         if (limit.metric.ends_with("_skin")) {
-          throw BudgetError(
-              fmt::format("{}, limit '{}': {}", where, limit.metric,
-                          driver::no_skin_reason(scene, budget.scene.skin_materials)));
+          throw BudgetError(fmt::format("{}, limit '{}': {}", where, limit.metric, frame.no_skin));
         }
       }
     }
-    add_quality_metrics(run.measurement, quality.metrics);
+    add_quality_metrics(run.measurement, frame.quality->metrics);
   }
   run.device = device.name;
   run.device_hash = file_fingerprint(device.source_path);

@@ -1,7 +1,17 @@
-// One frame, end to end: the pipeline on the emulated GPU configured from a device
-// profile, then the cost model's timing of its passes.
+// One frame, end to end, as `run` and `check` do it: the config resolved for the device and
+// checked once, the scene loaded for its aspect, the technique rendered on the emulated GPU
+// configured from the device profile, the cost model's timing, and optionally the reference
+// and the image quality against it. A sweep shares scenes and references between its
+// configurations, so it calls the steps (resolve_config, run_frame, reference_images,
+// evaluate_quality) itself.
 #pragma once
 
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "driver/frame_quality.h"
+#include "driver/scene_source.h"
 #include "gpu_model/device_profile.h"
 #include "gpu_model/timing.h"
 #include "pipeline/config.h"
@@ -16,9 +26,34 @@ struct FrameResult {
   gpu_model::FrameTiming timing;
 };
 
-// Resolves the config's resolution (default: the device display), renders and times the
-// frame.
-FrameResult run_frame(const pipeline::GpuScene& scene, pipeline::PipelineConfig config,
+// The config with its resolution resolved (default: the device's display), validated: throws
+// pipeline::ConfigError naming the knob.
+pipeline::PipelineConfig resolve_config(pipeline::PipelineConfig config,
+                                        const gpu_model::DeviceProfile& device);
+
+// Renders and times a frame of a resolved config (resolve_config).
+FrameResult run_frame(const pipeline::GpuScene& scene, const pipeline::PipelineConfig& config,
                       const gpu_model::DeviceProfile& device, int threads);
+
+struct FrameJob {
+  const gpu_model::DeviceProfile* device = nullptr;
+  pipeline::PipelineConfig config;  // resolved (resolve_config)
+  SceneSource scene;                // its `warn` receives the scene's and the frame's warnings
+  int threads = 0;
+  bool reference = true;  // render the reference and measure the quality against it
+};
+
+struct FrameJobResult {
+  std::unique_ptr<scene::Scene> scene;
+  std::unique_ptr<pipeline::GpuScene> gpu_scene;  // refers to *scene
+  FrameResult frame;
+  std::optional<ReferenceImages> reference;  // with FrameJob::reference
+  std::optional<FrameQuality> quality;       // with FrameJob::reference
+  // Set when the reference shows no skin (so there are no skin metrics): which rule found
+  // none and what to pass (skin_diagnosis.h); also sent to `warn`.
+  std::string no_skin;
+};
+
+FrameJobResult run_frame_job(const FrameJob& job);
 
 }  // namespace skinsim::driver

@@ -90,13 +90,9 @@ json frame_result_json(const FrameResult& r, const std::string& scene_label) {
   json counters = json::array();
   for (const sim::PassCounters& p : r.output.passes) counters.push_back(to_json(p));
   json timing = gpu_model::to_json(r.timing);
-  return {{"tool", "skinsim"},
-          {"scene", scene_label},
-          {"config", config},
-          {"lod", r.output.lod},
-          {"blur_sigma_texels", r.output.blur_sigma_pixels},
-          {"counters", counters},
-          {"timing", timing}};
+  return {{"tool", "skinsim"},    {"scene", scene_label},
+          {"config", config},     {"technique", r.output.decisions},
+          {"counters", counters}, {"timing", timing}};
 }
 
 }  // namespace skinsim::driver

@@ -147,11 +147,7 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
     Job job;
     job.config = &c;
     job.device = &devices.at(c.device);
-    job.resolved = c.config;
-    std::tie(job.resolved.width, job.resolved.height) =
-        pipeline::render_size(c.config, static_cast<int>(job.device->display_width.value),
-                              static_cast<int>(job.device->display_height.value));
-    job.resolved.validate();
+    job.resolved = resolve_config(c.config, *job.device);
     job.fingerprint = config_fingerprint(c, spec.scene, job.resolved.width, job.resolved.height);
     job.fingerprint["device_profile"] = device_fingerprints.at(c.device);
     summary.fingerprints[c.id] = job.fingerprint;

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "gpu_model/errors.h"
+#include "gpu_model/error.h"
 
 namespace skinsim::gpu_model {
 

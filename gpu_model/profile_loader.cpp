@@ -13,7 +13,7 @@
 #include <set>
 #include <sstream>
 
-#include "gpu_model/errors.h"
+#include "gpu_model/error.h"
 #include "io/read_file.h"
 
 namespace skinsim::gpu_model {

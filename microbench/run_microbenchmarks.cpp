@@ -4,8 +4,8 @@
 #include <algorithm>
 
 #include "microbench/benchmarks.h"
+#include "microbench/error.h"
 #include "microbench/microbench.h"
-#include "microbench/microbench_error.h"
 
 namespace skinsim::microbench {
 namespace {

@@ -42,7 +42,7 @@ inline constexpr int kMaxBurleySamples = 64;
 struct PipelineConfig {
   std::string technique = "mobile";  // a name from the registry (technique.h)
   // Integration (irradiance) buffer size per axis, as a fraction of the render resolution.
-  float buffer_scale = 0.5f;
+  float scale = 0.5f;
   int lut_width = 32;    // BRDF LUT: N.H axis
   int lut_height = 128;  // BRDF LUT: N.V axis
   sim::TexelFormat lut_format = sim::TexelFormat::kRGBA8;

@@ -1,6 +1,7 @@
 // One frame of a skin technique on the emulated GPU: what every technique produces.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -22,14 +23,15 @@ struct NamedTarget {
 
 struct FrameOutput {
   View view;
-  bool lod = false;  // the single-pass distant-skin shader ran
-  // Set when the automatic choice took the single-pass shader for distance: says the camera
-  // distance, lod_distance_m and the units that related them.
-  std::string lod_notice;
   std::vector<sim::PassCounters> passes;
   sim::RenderTarget frame;  // the final image (display-encoded RGBA8)
   std::vector<NamedTarget> intermediates;
-  float blur_sigma_pixels = 0.0f;  // screen-space blur width per iteration, buffer texels
+  // What the technique decided for this frame, by name, for result.json's "technique"
+  // object (mobile: lod_shader 0 or 1, blur_sigma_texels).
+  std::map<std::string, double> decisions;
+  // Said to the user as warnings: a choice the technique made that the user may not expect
+  // (mobile: the LOD shader taken for distance, with the distance, threshold and units).
+  std::vector<std::string> notices;
 };
 
 // Renders one frame of `config.technique` (config validated, resolution resolved).

@@ -25,7 +25,7 @@
 #include "io/read_file.h"
 #include "io/temp_files.h"
 #include "reports/display_check.h"
-#include "reports/report_error.h"
+#include "reports/error.h"
 
 namespace skinsim::reports {
 

@@ -6,7 +6,7 @@
 #include <set>
 
 #include "io/atomic_file.h"
-#include "reports/report_error.h"
+#include "reports/error.h"
 
 namespace skinsim::reports {
 

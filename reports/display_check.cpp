@@ -4,7 +4,7 @@
 
 #include <cstdlib>
 
-#include "reports/report_error.h"
+#include "reports/error.h"
 
 namespace skinsim::reports {
 

@@ -15,7 +15,7 @@
 
 #include "reports/chart_canvas.h"
 #include "reports/charts.h"
-#include "reports/report_error.h"
+#include "reports/error.h"
 
 namespace skinsim::reports {
 

@@ -9,9 +9,9 @@
 
 #include "io/atomic_file.h"
 #include "reports/csv_writer.h"
+#include "reports/error.h"
 #include "reports/pareto.h"
 #include "reports/report_charts.h"
-#include "reports/report_error.h"
 
 namespace skinsim::reports {
 

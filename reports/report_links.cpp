@@ -6,8 +6,8 @@
 #include <sstream>
 
 #include "io/read_file.h"
+#include "reports/error.h"
 #include "reports/html_report.h"
-#include "reports/report_error.h"
 
 namespace skinsim::reports {
 

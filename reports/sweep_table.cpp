@@ -10,7 +10,7 @@
 
 #include "io/atomic_file.h"
 #include "io/read_file.h"
-#include "reports/report_error.h"
+#include "reports/error.h"
 
 namespace skinsim::reports {
 

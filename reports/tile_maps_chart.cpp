@@ -16,8 +16,8 @@
 
 #include "reports/chart_canvas.h"
 #include "reports/charts.h"
+#include "reports/error.h"
 #include "reports/knob_order.h"
-#include "reports/report_error.h"
 
 namespace skinsim::reports {
 

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cstring>
 
-#include "scene/scene_error.h"
+#include "scene/error.h"
 
 namespace skinsim::scene::gltf {
 namespace {

@@ -10,9 +10,9 @@
 #include <string_view>
 
 #include "io/read_file.h"
+#include "scene/error.h"
 #include "scene/gltf_materials.h"
 #include "scene/json_depth.h"
-#include "scene/scene_error.h"
 
 namespace skinsim::scene::gltf {
 namespace {

@@ -10,12 +10,12 @@
 
 #include "scene/bounds.h"
 #include "scene/camera_framing.h"
+#include "scene/error.h"
 #include "scene/gltf_input.h"
 #include "scene/gltf_materials.h"
 #include "scene/gltf_nodes.h"
 #include "scene/gltf_primitive.h"
 #include "scene/load_warnings.h"
-#include "scene/scene_error.h"
 #include "scene/studio_lighting.h"
 #include "scene/validate.h"
 

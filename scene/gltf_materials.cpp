@@ -13,8 +13,8 @@
 #include <map>
 #include <utility>
 
+#include "scene/error.h"
 #include "scene/gltf_accessor.h"
-#include "scene/scene_error.h"
 
 namespace skinsim::scene::gltf {
 namespace {

@@ -8,7 +8,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "scene/scene_error.h"
+#include "scene/error.h"
 
 namespace skinsim::scene::gltf {
 namespace {

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <utility>
 
+#include "scene/error.h"
 #include "scene/gltf_accessor.h"
 #include "scene/mesh_attributes.h"
-#include "scene/scene_error.h"
 
 namespace skinsim::scene::gltf {
 namespace {

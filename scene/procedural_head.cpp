@@ -4,9 +4,9 @@
 
 #include <cmath>
 
+#include "scene/error.h"
 #include "scene/head_mesh.h"
 #include "scene/head_shape.h"
-#include "scene/scene_error.h"
 #include "scene/skin_textures.h"
 #include "scene/studio_lighting.h"
 #include "scene/validate.h"

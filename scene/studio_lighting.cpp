@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "scene/scene_error.h"
+#include "scene/error.h"
 
 namespace skinsim::scene {
 namespace {

@@ -6,8 +6,8 @@
 #include <fstream>
 
 #include "budget/baseline_file.h"
-#include "budget/budget_error.h"
 #include "budget/device_fingerprint.h"
+#include "budget/error.h"
 #include "budget/junit.h"
 
 namespace skinsim::budget {

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "budget/budget_error.h"
+#include "budget/error.h"
 #include "util/user_error.h"
 
 namespace skinsim::budget {
@@ -52,7 +52,7 @@ TEST(BudgetFile, ReadsEveryField) {
   EXPECT_EQ(b.device, "ipad4");
   EXPECT_EQ(b.config.width, 640);
   EXPECT_EQ(b.config.height, 480);
-  EXPECT_FLOAT_EQ(b.config.buffer_scale, 0.25f);
+  EXPECT_FLOAT_EQ(b.config.scale, 0.25f);
   EXPECT_EQ(b.config.lut_width, 64);
   EXPECT_EQ(b.config.blur_iterations, 2);
   EXPECT_DOUBLE_EQ(b.target_fps, 30.0);

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "budget/budget_error.h"
 #include "budget/check_table.h"
+#include "budget/error.h"
 
 namespace skinsim::budget {
 namespace {

@@ -3,8 +3,8 @@
 // that names the pass and its ALU bottleneck, and bad devices and passes as bad input.
 #include <gtest/gtest.h>
 
-#include "budget/budget_error.h"
 #include "budget/budget_file.h"
+#include "budget/error.h"
 #include "budget/evaluate.h"
 #include "budget/run_budget.h"
 #include "driver/frame_job.h"
@@ -35,7 +35,8 @@ class FrameBudget : public ::testing::Test {
     device_ = new gpu_model::DeviceProfile(gpu_model::load_device_profile("ipad4", kDataDir));
     scene_ = new scene::Scene(driver::load_scene(b.scene, 320.0f / 240.0f));
     gpu_scene_ = new pipeline::GpuScene(*scene_);
-    frame_ = new driver::FrameResult(driver::run_frame(*gpu_scene_, b.config, *device_, 1));
+    frame_ = new driver::FrameResult(
+        driver::run_frame(*gpu_scene_, driver::resolve_config(b.config, *device_), *device_, 1));
   }
   static void TearDownTestSuite() {
     delete frame_;

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "budget/budget_error.h"
+#include "budget/error.h"
 
 namespace skinsim::budget {
 namespace {

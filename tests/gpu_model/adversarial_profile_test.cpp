@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "gpu_model/device_profile.h"
-#include "gpu_model/errors.h"
+#include "gpu_model/error.h"
 #include "gpu_model/profile_loader.h"
 #include "test_support.h"
 

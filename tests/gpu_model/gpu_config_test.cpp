@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gpu_model/errors.h"
+#include "gpu_model/error.h"
 #include "gpu_model/profile_loader.h"
 #include "test_support.h"
 

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gpu_model/errors.h"
+#include "gpu_model/error.h"
 #include "gpu_model/tile_schedule.h"
 #include "test_support.h"
 

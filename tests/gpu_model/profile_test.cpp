@@ -6,7 +6,7 @@
 #include <string>
 
 #include "gpu_model/device_profile.h"
-#include "gpu_model/errors.h"
+#include "gpu_model/error.h"
 #include "gpu_model/profile_loader.h"
 #include "gpu_model/timing_table.h"
 #include "test_support.h"

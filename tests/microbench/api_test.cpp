@@ -1,8 +1,8 @@
 // Options, selection, errors and the table / JSON views.
 #include <gtest/gtest.h>
 
-#include "gpu_model/errors.h"
-#include "microbench/microbench_error.h"
+#include "gpu_model/error.h"
+#include "microbench/error.h"
 #include "tests/microbench/test_support.h"
 
 namespace skinsim::microbench {

@@ -16,9 +16,9 @@
 #include <string>
 #include <vector>
 
+#include "scene/error.h"
 #include "scene/gltf_loader.h"
 #include "scene/json_depth.h"
-#include "scene/scene_error.h"
 #include "tests/scene/gltf_fixture.h"
 
 namespace skinsim::scene {

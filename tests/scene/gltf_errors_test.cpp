@@ -6,8 +6,8 @@
 #include <fstream>
 #include <limits>
 
+#include "scene/error.h"
 #include "scene/gltf_loader.h"
-#include "scene/scene_error.h"
 #include "tests/scene/gltf_fixture.h"
 
 namespace skinsim::scene {

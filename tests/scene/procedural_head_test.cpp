@@ -7,8 +7,8 @@
 #include <cmath>
 #include <map>
 
+#include "scene/error.h"
 #include "scene/head_shape.h"
-#include "scene/scene_error.h"
 #include "tests/scene/preview_raster.h"
 
 namespace skinsim::scene {

@@ -38,7 +38,7 @@ const TechniqueSpec& mobile_technique() {
           {
               real_knob("scale", "--scale",
                         "Integration-buffer size per axis as a fraction of the frame",
-                        &PipelineConfig::buffer_scale, {0.0, 1.0, true, false}),
+                        &PipelineConfig::scale, {0.0, 1.0, true, false}),
               integer_knob("blur_iterations", "--blur-iterations", "Separable blur iterations",
                            &PipelineConfig::blur_iterations, 1, 8),
               optional_real_knob("blur_width_mm", "--blur-width-mm",

@@ -73,27 +73,28 @@ FrameOutput render_mobile_frame(const GpuScene& gs, const PipelineConfig& cfg, s
   out.view = make_view(gs, cfg.width, cfg.height);
   out.frame = sim::RenderTarget("frame", cfg.width, cfg.height, sim::TexelFormat::kRGBA8);
   const float units_per_m = gs.scene().units_per_mm * 1000.0f;
-  out.lod = mode == MobileMode::kForceLod || !gs.has_skin() || !out.view.skin_visible ||
-            out.view.skin_distance > cfg.lod_distance_m * units_per_m;
-  if (out.lod && mode != MobileMode::kForceLod && !gs.has_skin()) {
-    out.lod_notice =
+  const bool lod = mode == MobileMode::kForceLod || !gs.has_skin() || !out.view.skin_visible ||
+                   out.view.skin_distance > cfg.lod_distance_m * units_per_m;
+  out.decisions["lod_shader"] = lod ? 1.0 : 0.0;
+  if (lod && mode != MobileMode::kForceLod && !gs.has_skin()) {
+    out.notices.push_back(
         "the single-pass LOD shader was chosen: no material is classified as skin (name your "
-        "skin materials with --skin-materials, or 'all')";
-  } else if (out.lod && mode != MobileMode::kForceLod && out.view.skin_visible) {
-    out.lod_notice = fmt::format(
+        "skin materials with --skin-materials, or 'all')");
+  } else if (lod && mode != MobileMode::kForceLod && out.view.skin_visible) {
+    out.notices.push_back(fmt::format(
         "the single-pass LOD shader was chosen: camera distance {:.3g} m > lod_distance_m {:.3g} "
         "m at units_per_mm {:.4g}; if the scene is not in metres pass --units-per-mm (or raise "
         "--lod-distance)",
-        out.view.skin_distance / units_per_m, cfg.lod_distance_m, gs.scene().units_per_mm);
+        out.view.skin_distance / units_per_m, cfg.lod_distance_m, gs.scene().units_per_mm));
   }
 
-  if (out.lod) {
+  if (lod) {
     out.passes.push_back(framebuffer_pass(gs, out.view, cfg, lut, nullptr, true, out.frame, gpu));
     return out;
   }
 
-  const int bw = std::max(1, static_cast<int>(std::lround(cfg.width * cfg.buffer_scale)));
-  const int bh = std::max(1, static_cast<int>(std::lround(cfg.height * cfg.buffer_scale)));
+  const int bw = std::max(1, static_cast<int>(std::lround(cfg.width * cfg.scale)));
+  const int bh = std::max(1, static_cast<int>(std::lround(cfg.height * cfg.scale)));
   sim::RenderTarget irradiance("irradiance", bw, bh, sim::TexelFormat::kRGBA8);
   out.passes.push_back(irradiance_pass(gs, out.view, cfg, irradiance, gpu));
 
@@ -101,8 +102,9 @@ FrameOutput render_mobile_frame(const GpuScene& gs, const PipelineConfig& cfg, s
   // buffer texels; k iterations of sigma/sqrt(k) compose to the same total variance.
   const float sigma_mm = cfg.blur_width_mm.value_or(skin_layer_split().wide_sigma_mm);
   const float sigma_full = sigma_mm * out.view.pixels_per_mm(gs.scene().units_per_mm);
-  out.blur_sigma_pixels = sigma_full * static_cast<float>(bw) / static_cast<float>(cfg.width) /
-                          std::sqrt(static_cast<float>(cfg.blur_iterations));
+  const float blur_sigma = sigma_full * static_cast<float>(bw) / static_cast<float>(cfg.width) /
+                           std::sqrt(static_cast<float>(cfg.blur_iterations));
+  out.decisions["blur_sigma_texels"] = blur_sigma;
   const sim::PixelRect rect = scale_rect(out.view.skin_rect, static_cast<float>(bw) / cfg.width,
                                          static_cast<float>(bh) / cfg.height, bw, bh);
   sim::RenderTarget ping("blur_h", bw, bh, sim::TexelFormat::kRGBA8);
@@ -111,9 +113,9 @@ FrameOutput render_mobile_frame(const GpuScene& gs, const PipelineConfig& cfg, s
   for (int i = 0; i < cfg.blur_iterations; ++i) {
     const std::string suffix = i == 0 ? "" : std::to_string(i + 1);  // blur_h, blur_h2, ...
     out.passes.push_back(
-        blur_pass("blur_h" + suffix, *source, ping, rect, {1, 0}, out.blur_sigma_pixels, gpu));
+        blur_pass("blur_h" + suffix, *source, ping, rect, {1, 0}, blur_sigma, gpu));
     out.passes.push_back(
-        blur_pass("blur_v" + suffix, ping, blurred, rect, {0, 1}, out.blur_sigma_pixels, gpu));
+        blur_pass("blur_v" + suffix, ping, blurred, rect, {0, 1}, blur_sigma, gpu));
     source = &blurred;
   }
   const sim::Texture2D blurred_texture =

@@ -19,7 +19,7 @@ FrameOutput render(const GpuScene& gs, float scale, int blur_iterations = 1) {
   PipelineConfig c;
   c.width = 512;
   c.height = 384;
-  c.buffer_scale = scale;
+  c.scale = scale;
   c.blur_iterations = blur_iterations;
   sim::Gpu gpu(sim::GpuConfig{});
   return render_frame(gs, c, gpu);
@@ -47,7 +47,7 @@ TEST(MobilePipeline, PassesInOrderWithTheirTargets) {
                                              "skin"}));
   EXPECT_EQ(pass(f, "irradiance").width, 256);
   EXPECT_EQ(pass(f, "skin").width, 512);
-  EXPECT_FALSE(f.lod);
+  EXPECT_EQ(f.decisions.at("lod_shader"), 0.0);
   // Eyes are not in the irradiance buffer: only skin draws.
   for (const auto& d : pass(f, "irradiance").draws)
     EXPECT_EQ(d.fragment_program, "skin_irradiance_fs");
@@ -81,7 +81,7 @@ TEST(MobilePipeline, LodTechniqueIsOneSkinPass) {
   const FrameOutput f = render_frame(gs, c, gpu);
   ASSERT_EQ(f.passes.size(), 1u);
   EXPECT_EQ(f.passes[0].name, "skin");
-  EXPECT_TRUE(f.lod);
+  EXPECT_EQ(f.decisions.at("lod_shader"), 1.0);
 }
 
 TEST(MobilePipeline, IdenticalForAnyThreadCount) {

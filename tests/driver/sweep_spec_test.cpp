@@ -1,12 +1,12 @@
 // Sweep expansion: combinations, order, canonical values, ids, validation errors.
+#include "driver/sweep_spec.h"
+
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <map>
 #include <set>
-
-#include "driver/sweep_spec.h"
 
 namespace skinsim::driver {
 namespace {
@@ -20,7 +20,7 @@ TEST(SweepSpec, DefaultSweepIsFourScalesByFourLuts) {
   EXPECT_EQ(configs[4].id, "scale0.5_lut8x32");
   EXPECT_EQ(configs[15].id, "scale0.125_lut64x256");
   EXPECT_EQ(configs[15].label, "scale 0.125, lut 64x256");
-  EXPECT_FLOAT_EQ(configs[15].config.buffer_scale, 0.125f);
+  EXPECT_FLOAT_EQ(configs[15].config.scale, 0.125f);
   EXPECT_EQ(configs[15].config.lut_width, 64);
   EXPECT_EQ(configs[15].config.lut_height, 256);
   for (const SweepConfig& c : configs) EXPECT_EQ(c.device, "ipad4");
@@ -47,7 +47,7 @@ TEST(SweepSpec, LaterAxisOfTheSameKnobReplacesTheEarlier) {
   set_axis(spec, "scale", {"0.5"}, "--scales");
   const std::vector<SweepConfig> configs = expand_sweep(spec);
   ASSERT_EQ(configs.size(), 4u);
-  for (const SweepConfig& c : configs) EXPECT_FLOAT_EQ(c.config.buffer_scale, 0.5f);
+  for (const SweepConfig& c : configs) EXPECT_FLOAT_EQ(c.config.scale, 0.5f);
 }
 
 TEST(SweepSpec, FixedKnobsApplyToEveryConfiguration) {
@@ -84,7 +84,7 @@ TEST(SweepSpec, AnAxisATechniqueDoesNotUseRunsOnceForIt) {
   const SweepConfig& wrap = configs[1];
   EXPECT_EQ(wrap.label, "technique wrap");
   EXPECT_EQ(wrap.swept, (std::vector<std::pair<std::string, std::string>>{{"technique", "wrap"}}));
-  EXPECT_FLOAT_EQ(wrap.config.buffer_scale, pipeline::PipelineConfig{}.buffer_scale);
+  EXPECT_FLOAT_EQ(wrap.config.scale, pipeline::PipelineConfig{}.scale);
   EXPECT_EQ(configs[0].label, "scale 1, technique mobile");
   // The wrap frame is the one the full cross product ran as scale0.5_wrap: same id, same
   // fingerprint, so a sweep directory written before resumes it.

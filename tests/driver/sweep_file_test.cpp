@@ -1,7 +1,8 @@
 // Sweep files: what they set, and errors that name the file, line and key.
+#include "driver/sweep_file.h"
+
 #include <gtest/gtest.h>
 
-#include "driver/sweep_file.h"
 #include "util/user_error.h"
 
 namespace skinsim::driver {

@@ -1,5 +1,7 @@
 // charts_available() says no, with a useful message, when there is no X display; chart
 // functions then throw instead of letting VTK abort the process.
+#include "reports/display_check.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -7,8 +9,7 @@
 #include <string>
 
 #include "reports/charts.h"
-#include "reports/display_check.h"
-#include "reports/report_error.h"
+#include "reports/error.h"
 
 namespace skinsim::reports {
 namespace {

@@ -1,6 +1,5 @@
-#include "tests/pipeline/mobile/test_scenes.h"
-
 #include "scene/procedural_head.h"
+#include "tests/pipeline/mobile/test_scenes.h"
 
 namespace skinsim::pipeline::testing {
 

@@ -1,3 +1,5 @@
+#include "quality/metrics.h"
+
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
@@ -7,7 +9,6 @@
 #include <utility>
 
 #include "quality/error.h"
-#include "quality/metrics.h"
 #include "tests/quality/test_image.h"
 
 namespace skinsim::quality {

@@ -76,7 +76,7 @@ TEST_P(FillingQuad, ShadesEveryPixelOnce) {
   const FillCase& c = GetParam();
   const scene::Scene s = filling_quad(c);
   const FrameOutput out = render(s, "mobile", c);
-  ASSERT_FALSE(out.lod);
+  ASSERT_EQ(out.decisions.at("lod_shader"), 0.0);
   EXPECT_EQ(out.view.orthographic, c.orthographic);
   const std::uint64_t pixels = static_cast<std::uint64_t>(c.width) * c.height;
   EXPECT_EQ(out.passes.back().fragments_shaded, pixels);

@@ -1,5 +1,7 @@
 // Tiny sweeps on the built-in scene (256x192, small mesh and texture): the files a sweep
 // writes, resume, cancellation and thread-count invariance.
+#include "driver/sweep_run.h"
+
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -12,7 +14,6 @@
 #include "driver/frame_quality.h"
 #include "driver/skin_diagnosis.h"
 #include "driver/sweep_results.h"
-#include "driver/sweep_run.h"
 #include "driver/sweep_spec.h"
 #include "reports/sweep_table.h"
 

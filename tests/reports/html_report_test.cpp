@@ -1,4 +1,6 @@
 // report.html: links resolve, strings are escaped, the recommendation is the knee.
+#include "reports/html_report.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -7,9 +9,8 @@
 
 #include "io/read_file.h"
 #include "reports/display_check.h"
-#include "reports/html_report.h"
+#include "reports/error.h"
 #include "reports/pareto.h"
-#include "reports/report_error.h"
 #include "tests/reports/synthetic_sweep.h"
 #include "tests/reports/test_output_dir.h"
 

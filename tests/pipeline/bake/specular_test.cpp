@@ -1,3 +1,5 @@
+#include "pipeline/bake/specular.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -5,7 +7,6 @@
 #include <numbers>
 
 #include "pipeline/bake/hemisphere.h"
-#include "pipeline/bake/specular.h"
 
 namespace skinsim::bake {
 namespace {

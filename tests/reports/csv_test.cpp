@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "reports/csv_writer.h"
-#include "reports/report_error.h"
+#include "reports/error.h"
 #include "tests/reports/synthetic_sweep.h"
 
 namespace skinsim::reports {

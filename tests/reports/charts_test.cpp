@@ -1,14 +1,15 @@
 // Chart functions draw real, non-blank images of the requested size (needs an X display:
 // registered under xvfb-run).
+#include "reports/charts.h"
+
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
-#include "reports/charts.h"
 #include "reports/display_check.h"
-#include "reports/report_error.h"
+#include "reports/error.h"
 #include "tests/reports/synthetic_sweep.h"
 #include "tests/reports/test_output_dir.h"
 

@@ -1,3 +1,5 @@
+#include "pipeline/bake/brdf_lut.h"
+
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 #include <unistd.h>
@@ -9,7 +11,6 @@
 #include <limits>
 #include <numbers>
 
-#include "pipeline/bake/brdf_lut.h"
 #include "pipeline/bake/error.h"
 #include "pipeline/bake/half_float.h"
 #include "pipeline/bake/specular.h"

@@ -1,7 +1,7 @@
 // Pareto front and knee on hand-made cases whose answers are worked out in the comments.
-#include <gtest/gtest.h>
-
 #include "reports/pareto.h"
+
+#include <gtest/gtest.h>
 
 namespace skinsim::reports {
 namespace {

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/read_file.h"
-#include "reports/report_error.h"
+#include "reports/error.h"
 #include "reports/sweep_table.h"
 #include "tests/reports/synthetic_sweep.h"
 
