@@ -1,5 +1,8 @@
 #include "pipeline/techniques/screen_diffusion_passes.h"
 
+#include "pipeline/shader_variants.h"
+#include "pipeline/shaders/diffused_skin.h"
+#include "pipeline/techniques/diffused_skin_pass.h"
 #include "pipeline/techniques/screen_quad.h"
 #include "pipeline/techniques/skin_pass.h"
 
@@ -74,6 +77,22 @@ sim::PassCounters kernel_pass(const std::string& name,
   d.fragment_program = std::move(program);
   d.textures.textures[0] = &src;
   return quad_pass(name, std::move(d), target, view.skin_rect, gpu);
+}
+
+void finish_screen_diffusion_frame(const GpuScene& gs, const PipelineConfig& cfg,
+                                   sim::RenderTarget diffuse, sim::RenderTarget diffused,
+                                   FrameOutput& out, sim::Gpu& gpu) {
+  out.passes.push_back(diffused_skin_pass(gs, out.view, cfg, shaders::DiffusionSource::kScreen,
+                                          diffused, out.frame, gpu));
+  out.intermediates.push_back({"diffuse", std::move(diffuse), kScreenBufferDisplayScale});
+  out.intermediates.push_back({"diffused", std::move(diffused), kScreenBufferDisplayScale});
+}
+
+std::vector<sim::NamedProfile> screen_diffusion_programs() {
+  return {fragment_entry<shaders::DiffuseDepthFS>(), fragment_entry<shaders::DiffuseDepthOrthoFS>(),
+          vertex_entry<shaders::QuadVS>(),
+          fragment_entry<shaders::DiffusedSkinFS<GammaMode::kSquare, SpecularModel::kKsLut,
+                                                 shaders::DiffusionSource::kScreen>>()};
 }
 
 }  // namespace skinsim::pipeline

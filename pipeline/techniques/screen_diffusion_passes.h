@@ -5,8 +5,10 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "pipeline/config.h"
+#include "pipeline/frame.h"
 #include "pipeline/gpu_scene.h"
 #include "pipeline/shaders/screen_diffusion.h"
 #include "sim/gpu.h"
@@ -31,6 +33,16 @@ std::shared_ptr<const sim::FragmentProgram> kernel_program(const View& view, con
   if (view.orthographic) return sim::make_fragment_program<Kernel<true>>(u);
   return sim::make_fragment_program<Kernel<false>>(u);
 }
+
+// The end of a screen-space diffusion frame: the `skin` render reading `diffused`, and both
+// buffers kept as intermediates for viewing.
+void finish_screen_diffusion_frame(const GpuScene& gs, const PipelineConfig& cfg,
+                                   sim::RenderTarget diffuse, sim::RenderTarget diffused,
+                                   FrameOutput& out, sim::Gpu& gpu);
+
+// The programs every screen-space diffusion technique runs besides its kernel: the diffuse
+// pass (perspective and orthographic), the kernel quad's vertex shader and the skin render.
+std::vector<sim::NamedProfile> screen_diffusion_programs();
 
 // A kernel pass over the skin's screen rectangle reading `source`.
 sim::PassCounters kernel_pass(const std::string& name,

@@ -6,9 +6,7 @@
 
 #include "pipeline/knob_types.h"
 #include "pipeline/shader_variants.h"
-#include "pipeline/shaders/diffused_skin.h"
 #include "pipeline/technique.h"
-#include "pipeline/techniques/diffused_skin_pass.h"
 #include "pipeline/techniques/frame_setup.h"
 #include "pipeline/techniques/kernels.h"
 #include "pipeline/techniques/screen_diffusion_passes.h"
@@ -34,23 +32,19 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, sim::Gpu& gpu)
     out.passes.push_back(kernel_pass("sss", kernel_program<shaders::BurleyFSFor>(out.view, u),
                                      diffuse, diffused, out.view, gpu));
   }
-  out.passes.push_back(diffused_skin_pass(gs, out.view, cfg, shaders::DiffusionSource::kScreen,
-                                          diffused, out.frame, gpu));
-  out.intermediates.push_back({"diffuse", std::move(diffuse), kScreenBufferDisplayScale});
-  out.intermediates.push_back({"diffused", std::move(diffused), kScreenBufferDisplayScale});
+  finish_screen_diffusion_frame(gs, cfg, std::move(diffuse), std::move(diffused), out, gpu);
   return out;
 }
 
 std::vector<sim::NamedProfile> programs() {
   shaders::BurleyFS::Uniforms taps;  // the profile counts the taps: the default count
   taps.count = PipelineConfig{}.burley_samples;
-  return {fragment_entry<shaders::DiffuseDepthFS>(),
-          fragment_entry<shaders::DiffuseDepthOrthoFS>(),
-          vertex_entry<shaders::QuadVS>(),
-          fragment_entry<shaders::BurleyFS>(taps),
-          fragment_entry<shaders::BurleyOrthoFS>(taps),
-          fragment_entry<shaders::DiffusedSkinFS<GammaMode::kSquare, SpecularModel::kKsLut,
-                                                 shaders::DiffusionSource::kScreen>>()};
+  std::vector<sim::NamedProfile> list = screen_diffusion_programs();
+  for (const sim::NamedProfile& kernel :
+       {fragment_entry<shaders::BurleyFS>(taps), fragment_entry<shaders::BurleyOrthoFS>(taps)}) {
+    list.push_back(kernel);
+  }
+  return list;
 }
 
 KnobSpec distance_knob() {

@@ -1,9 +1,7 @@
 // `ssss`: Jimenez's separable screen-space subsurface scattering (2015) at full resolution:
 // diffuse -> sss_h -> sss_v -> skin.
 #include "pipeline/shader_variants.h"
-#include "pipeline/shaders/diffused_skin.h"
 #include "pipeline/technique.h"
-#include "pipeline/techniques/diffused_skin_pass.h"
 #include "pipeline/techniques/frame_setup.h"
 #include "pipeline/techniques/kernels.h"
 #include "pipeline/techniques/screen_diffusion_passes.h"
@@ -32,21 +30,17 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, sim::Gpu& gpu)
     out.passes.push_back(kernel_pass("sss_v", kernel_program<shaders::SsssBlurFSFor>(out.view, u),
                                      horizontal, diffused, out.view, gpu));
   }
-  out.passes.push_back(diffused_skin_pass(gs, out.view, cfg, shaders::DiffusionSource::kScreen,
-                                          diffused, out.frame, gpu));
-  out.intermediates.push_back({"diffuse", std::move(diffuse), kScreenBufferDisplayScale});
-  out.intermediates.push_back({"diffused", std::move(diffused), kScreenBufferDisplayScale});
+  finish_screen_diffusion_frame(gs, cfg, std::move(diffuse), std::move(diffused), out, gpu);
   return out;
 }
 
 std::vector<sim::NamedProfile> programs() {
-  return {fragment_entry<shaders::DiffuseDepthFS>(),
-          fragment_entry<shaders::DiffuseDepthOrthoFS>(),
-          vertex_entry<shaders::QuadVS>(),
-          fragment_entry<shaders::SsssBlurFS>(),
-          fragment_entry<shaders::SsssBlurOrthoFS>(),
-          fragment_entry<shaders::DiffusedSkinFS<GammaMode::kSquare, SpecularModel::kKsLut,
-                                                 shaders::DiffusionSource::kScreen>>()};
+  std::vector<sim::NamedProfile> list = screen_diffusion_programs();
+  for (const sim::NamedProfile& kernel :
+       {fragment_entry<shaders::SsssBlurFS>(), fragment_entry<shaders::SsssBlurOrthoFS>()}) {
+    list.push_back(kernel);
+  }
+  return list;
 }
 
 }  // namespace
