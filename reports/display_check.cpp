@@ -2,13 +2,21 @@
 
 #include <X11/Xlib.h>
 
+#include <chrono>
 #include <cstdlib>
+#include <thread>
 
 #include "reports/error.h"
 
 namespace skinsim::reports {
 
 namespace {
+
+// A server that xvfb-run has just started can refuse the first connection on a loaded
+// machine (seen in CI: the first chart test of a run failed on ':99', the next ones passed),
+// so a refused display is tried again for up to 2 s before charts are declared unavailable.
+constexpr int kOpenAttempts = 20;
+constexpr auto kRetryDelay = std::chrono::milliseconds(100);
 
 constexpr const char* kHowTo =
     "charts need an X display: run under `xvfb-run -a skinsim ...` or pass --no-charts";
@@ -22,6 +30,10 @@ bool charts_available(std::string* why) {
     return false;
   }
   Display* display = XOpenDisplay(name);
+  for (int attempt = 1; display == nullptr && attempt < kOpenAttempts; ++attempt) {
+    std::this_thread::sleep_for(kRetryDelay);
+    display = XOpenDisplay(name);
+  }
   if (display == nullptr) {
     if (why) *why = std::string(kHowTo) + " (cannot open X display '" + name + "')";
     return false;
