@@ -1,12 +1,17 @@
 #include "tests/scene/gltf_fixture.h"
 
+#include <unistd.h>
+
 #include <cstring>
 #include <fstream>
 
 namespace skinsim::scene::testing {
 
 GltfFixture::GltfFixture(const std::string& test_name) {
-  dir_ = std::filesystem::temp_directory_path() / ("skinsim_scene_tests") / test_name;
+  // The process id keeps apart fixtures of the same name that CTest runs at once (each
+  // instance of a parameterised test is a process of its own).
+  dir_ = std::filesystem::temp_directory_path() / "skinsim_scene_tests" /
+         (test_name + "." + std::to_string(::getpid()));
   std::filesystem::remove_all(dir_);
   std::filesystem::create_directories(dir_);
   json_ = {{"asset", {{"version", "2.0"}}},
@@ -17,6 +22,11 @@ GltfFixture::GltfFixture(const std::string& test_name) {
            {"accessors", nlohmann::json::array()},
            {"bufferViews", nlohmann::json::array()},
            {"buffers", nlohmann::json::array({{{"byteLength", 0}}})}};
+}
+
+GltfFixture::~GltfFixture() {
+  std::error_code ignored;  // best effort: a leftover directory in /tmp harms nothing
+  std::filesystem::remove_all(dir_, ignored);
 }
 
 int GltfFixture::add_view(const void* data, std::size_t bytes) {

@@ -15,6 +15,9 @@ class GltfFixture {
  public:
   // A temp directory unique to `test_name`.
   explicit GltfFixture(const std::string& test_name);
+  ~GltfFixture();  // removes its directory
+  GltfFixture(const GltfFixture&) = delete;
+  GltfFixture& operator=(const GltfFixture&) = delete;
 
   // Appends raw bytes (4-byte aligned) as a new bufferView; returns its index.
   int add_view(const void* data, std::size_t bytes);
