@@ -7,6 +7,7 @@ packages=(
   libglm-dev libtinygltf-dev libstb-dev libopenimageio-dev libtbb-dev
   libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libembree-dev  # ray casting: the reference's shadows and the thickness bake
   libvtk9-dev xvfb xauth
   glslang-tools  # glslangValidator checks the exported GLSL ES in the tests
   python3  # the budget CLI test parses JUnit XML with its standard library

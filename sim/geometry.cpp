@@ -90,8 +90,8 @@ struct SetupChunk {
 class TriangleBuilder {
  public:
   TriangleBuilder(const RenderPassDesc& pass, const PixelRect& area, SetupChunk& out)
-      : width_(pass.color->width),
-        height_(pass.color->height),
+      : width_(pass_target(pass).width),
+        height_(pass_target(pass).height),
         area_(area),
         out_(out.setup),
         counts_(out.counts) {}
@@ -257,7 +257,7 @@ void join_chunks(const std::vector<SetupChunk>& chunks, SetupTriangles& out,
 }  // namespace
 
 PixelRect tile_aligned_area(const RenderPassDesc& pass, int tile_size) {
-  const int w = pass.color->width, h = pass.color->height;
+  const int w = pass_target(pass).width, h = pass_target(pass).height;
   PixelRect r{0, 0, w, h};
   if (pass.render_area) {
     const PixelRect& a = *pass.render_area;

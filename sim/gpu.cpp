@@ -34,14 +34,26 @@ Gpu::Gpu(GpuConfig config) : config_(config) {
 Gpu::~Gpu() = default;
 
 PassCounters Gpu::execute(const RenderPassDesc& pass) {
-  if (!pass.color || pass.color->width <= 0 || pass.color->height <= 0) {
-    throw std::invalid_argument("render pass '" + pass.name + "' has no colour target");
+  const RenderTarget* size_from = pass.color ? pass.color : pass.depth;
+  if (!size_from || size_from->width <= 0 || size_from->height <= 0) {
+    throw std::invalid_argument("render pass '" + pass.name + "' has no colour or depth target");
   }
   if (pass.depth_load == LoadOp::kLoad) {
     throw std::invalid_argument("render pass '" + pass.name + "': depth load is not supported");
   }
+  if (pass.depth) {
+    if (!is_depth_format(pass.depth->format) || !pass.store_depth) {
+      throw std::invalid_argument("render pass '" + pass.name + "': depth target '" +
+                                  pass.depth->name + "' needs a depth format and store_depth");
+    }
+    if (pass.color &&
+        (pass.color->width != pass.depth->width || pass.color->height != pass.depth->height)) {
+      throw std::invalid_argument("render pass '" + pass.name +
+                                  "': colour and depth targets differ in size");
+    }
+  }
   for (const DrawCall& d : pass.draws) {
-    if (!d.vertex_program || !d.fragment_program) {
+    if (!d.vertex_program || (pass.color && !d.fragment_program)) {
       throw std::invalid_argument("render pass '" + pass.name + "': draw without programs");
     }
     if (d.vertex_program->varying_floats() > kMaxVaryings) {
@@ -49,12 +61,14 @@ PassCounters Gpu::execute(const RenderPassDesc& pass) {
                                   "' writes more than " + std::to_string(kMaxVaryings) +
                                   " varying floats");
     }
-    // Tiles resolve while others still sample, so reading the target being rendered would
+    // Tiles resolve while others still sample, so reading a target being rendered would
     // make the image depend on tile order (undefined on the GPU too).
     for (const Texture2D* t : d.textures.textures) {
-      if (t && t->level(0).texels == pass.color->pixels.data()) {
-        throw std::invalid_argument("render pass '" + pass.name + "' samples its own target '" +
-                                    pass.color->name + "'");
+      for (const RenderTarget* own : {pass.color, pass.depth}) {
+        if (t && own && t->level(0).texels == own->pixels.data()) {
+          throw std::invalid_argument("render pass '" + pass.name + "' samples its own target '" +
+                                      own->name + "'");
+        }
       }
     }
   }
@@ -66,8 +80,8 @@ PassCounters Gpu::execute(const RenderPassDesc& pass) {
 PassCounters Gpu::execute_impl(const RenderPassDesc& pass) {
   PassCounters c;
   c.name = pass.name;
-  c.width = pass.color->width;
-  c.height = pass.color->height;
+  c.width = pass_target(pass).width;
+  c.height = pass_target(pass).height;
   c.tile_size = config_.tile_size;
   c.tiles_x = (c.width + c.tile_size - 1) / c.tile_size;
   c.tiles_y = (c.height + c.tile_size - 1) / c.tile_size;
@@ -76,9 +90,11 @@ PassCounters Gpu::execute_impl(const RenderPassDesc& pass) {
   for (size_t d = 0; d < pass.draws.size(); ++d) {
     const DrawCall& draw = pass.draws[d];
     c.draws[d].vertex_program = draw.vertex_program->name();
-    c.draws[d].fragment_program = draw.fragment_program->name();
     c.draws[d].vertex_profile = draw.vertex_program->profile();
-    c.draws[d].fragment_profile = draw.fragment_program->profile();
+    if (draw.fragment_program) {
+      c.draws[d].fragment_program = draw.fragment_program->name();
+      c.draws[d].fragment_profile = draw.fragment_program->profile();
+    }
     c.draws[d].blended = draw.blend != BlendMode::kOpaque;
   }
 

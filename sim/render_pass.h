@@ -30,6 +30,8 @@ struct Geometry {
 struct DrawCall {
   Geometry geometry;
   std::shared_ptr<const VertexProgram> vertex_program;
+  // Null in a depth-only pass (no colour target): the ISP tests and writes depth and no
+  // fragment is shaded, as for a PowerVR render with no colour attachment.
   std::shared_ptr<const FragmentProgram> fragment_program;
   TextureBindings textures;
   CullMode cull = CullMode::kBack;  // front faces are counter-clockwise, as in OpenGL
@@ -45,15 +47,24 @@ struct PixelRect {
 
 struct RenderPassDesc {
   std::string name;
-  RenderTarget* color = nullptr;
+  RenderTarget* color = nullptr;  // null: a depth-only pass into `depth`
   LoadOp color_load = LoadOp::kClear;
   glm::vec4 clear_color{0.0f};
   bool store_color = true;
-  LoadOp depth_load = LoadOp::kClear;    // depth lives in tile memory; kLoad is not supported
-  bool store_depth = false;              // depth is discarded at the end of the render
+  LoadOp depth_load = LoadOp::kClear;  // depth lives in tile memory; kLoad is not supported
+  bool store_depth = false;            // depth is discarded at the end of the render
+  // Where stored depth goes (a kDepth16/kDepth24 target of the pass's size, to be sampled
+  // by a later pass, e.g. a shadow map); without it a store is counted but not kept.
+  RenderTarget* depth = nullptr;
   std::optional<PixelRect> render_area;  // default: the whole target
   std::vector<DrawCall> draws;
 };
+
+// The target that gives a pass its size: the colour target, or the depth target of a
+// depth-only pass.
+inline const RenderTarget& pass_target(const RenderPassDesc& pass) {
+  return pass.color ? *pass.color : *pass.depth;
+}
 
 // The emulated GPU's fixed configuration (from the device profile).
 struct GpuConfig {

@@ -74,6 +74,7 @@ struct VertexAttributes {
   const glm::vec3* normals = nullptr;
   const glm::vec2* uvs = nullptr;
   const glm::vec4* tangents = nullptr;
+  const float* thickness = nullptr;  // baked per-vertex thickness (mm), for transmission
 };
 
 class ExecVertexIn {
@@ -83,6 +84,8 @@ class ExecVertexIn {
   glm::vec3 normal() const { return a_.normals ? a_.normals[i_] : glm::vec3(0, 0, 1); }
   glm::vec2 uv() const { return a_.uvs ? a_.uvs[i_] : glm::vec2(0.0f); }
   glm::vec4 tangent() const { return a_.tangents ? a_.tangents[i_] : glm::vec4(1, 0, 0, 1); }
+  // No baked thickness: thick everywhere (nothing transmitted).
+  float thickness() const { return a_.thickness ? a_.thickness[i_] : 1e3f; }
 
  private:
   const VertexAttributes& a_;
@@ -146,11 +149,17 @@ class CountTexUnit {
   sl::CVec<4> sample_cube_lod(int, const sl::CVec<3>&, const sl::CFloat&) const {
     return fetch(true);
   }
+  sl::CFloat sample_shadow(int, const CountVarying<3>&) const { return compare(false); }
+  sl::CFloat sample_shadow(int, const sl::CVec<3>&) const { return compare(true); }
 
  private:
   static sl::CVec<4> fetch(bool dependent) {
     sl::OpRecorder::texture(dependent);
     return sl::CVec<4>::computed(glm::vec4(0.5f));
+  }
+  static sl::CFloat compare(bool dependent) {
+    sl::OpRecorder::texture(dependent);
+    return sl::CFloat::computed(glm::vec<1, float>(0.5f));
   }
 };
 
@@ -160,6 +169,7 @@ class CountVertexIn {
   sl::CVec<3> normal() const { return input<3>(); }
   sl::CVec<2> uv() const { return input<2>(); }
   sl::CVec<4> tangent() const { return input<4>(); }
+  sl::CFloat thickness() const { return input<1>(); }
 
  private:
   template <int N>

@@ -14,8 +14,16 @@ int bytes_per_texel(TexelFormat format) {
       return 8;
     case TexelFormat::kRGBA32F:
       return 16;
+    case TexelFormat::kDepth16:
+      return 2;
+    case TexelFormat::kDepth24:
+      return 4;
   }
   return 4;
+}
+
+bool is_depth_format(TexelFormat format) {
+  return format == TexelFormat::kDepth16 || format == TexelFormat::kDepth24;
 }
 
 const char* format_name(TexelFormat format) {
@@ -26,6 +34,10 @@ const char* format_name(TexelFormat format) {
       return "rgba16f";
     case TexelFormat::kRGBA32F:
       return "rgba32f";
+    case TexelFormat::kDepth16:
+      return "depth16";
+    case TexelFormat::kDepth24:
+      return "depth24";
   }
   return "?";
 }
@@ -75,6 +87,12 @@ float quantize_unorm8(float v) {
   return kByteValue[whole + (x - static_cast<float>(whole) >= 0.5f ? 1 : 0)];
 }
 
+// Depth as a normalised integer of `steps` + 1 levels (NaN to 0, as UNORM conversion).
+glm::vec4 quantize_depth(float v, float steps) {
+  const float x = std::min(std::max(0.0f, v), 1.0f) * steps;
+  return {std::floor(x + 0.5f) / steps, 0.0f, 0.0f, 0.0f};
+}
+
 std::uint64_t next_pow2(std::uint64_t v) {
   std::uint64_t p = 1;
   while (p < v) p <<= 1;
@@ -115,6 +133,12 @@ void quantize_span(const glm::vec4* values, glm::vec4* stored, std::size_t count
     case TexelFormat::kRGBA32F:
       std::copy(values, values + count, stored);
       return;
+    case TexelFormat::kDepth16:
+    case TexelFormat::kDepth24: {
+      const float steps = format == TexelFormat::kDepth16 ? 65535.0f : 16777215.0f;
+      for (std::size_t i = 0; i < count; ++i) stored[i] = quantize_depth(values[i].x, steps);
+      return;
+    }
   }
 }
 

@@ -17,15 +17,20 @@
 
 namespace skinsim::sim {
 
-enum class TexelFormat : std::uint8_t { kRGBA8, kRGBA16F, kRGBA32F };
+// kDepth16 / kDepth24: depth textures (OES_depth_texture, GL_UNSIGNED_SHORT / GL_UNSIGNED_INT
+// on SGX5xx; the 24-bit one is stored in 32 bits), depth in the red channel.
+enum class TexelFormat : std::uint8_t { kRGBA8, kRGBA16F, kRGBA32F, kDepth16, kDepth24 };
 enum class Wrap : std::uint8_t { kClamp, kRepeat };
 
 int bytes_per_texel(TexelFormat format);
 const char* format_name(TexelFormat format);
-// Parses "rgba8", "rgba16f", "rgba32f" (any case); throws std::invalid_argument otherwise.
+bool is_depth_format(TexelFormat format);
+// Parses a colour format "rgba8", "rgba16f", "rgba32f" (any case); throws
+// std::invalid_argument otherwise.
 TexelFormat parse_format(const std::string& name);
 // Rounds a value to what the format stores (RGBA8: clamp to [0,1], nearest 1/255, NaN to 0;
-// RGBA16F: IEEE half, round to nearest even; RGBA32F: unchanged).
+// RGBA16F: IEEE half, round to nearest even; RGBA32F: unchanged; depth: red clamped to
+// [0,1] and rounded to the nearest of 2^16 - 1 or 2^24 - 1 steps, the rest 0).
 glm::vec4 quantize(const glm::vec4& value, TexelFormat format);
 // quantize() over `count` values (`stored` may be `values`): one format dispatch per span.
 void quantize_span(const glm::vec4* values, glm::vec4* stored, std::size_t count,

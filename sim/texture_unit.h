@@ -44,6 +44,12 @@ class ExecTexUnit {
   glm::vec4 sample_lod(int binding, const glm::vec2& uv, float lod);
   glm::vec4 sample_cube(int binding, const Varying<3>& direction);
   glm::vec4 sample_cube_lod(int binding, const glm::vec3& direction, float lod);
+  // Depth-texture comparison (EXT_shadow_samplers' shadow2DEXT, compare func LEQUAL): 1
+  // where coord.z <= the stored depth at coord.xy. A bilinear sampler compares the 2x2
+  // footprint and filters the four results (the hardware PCF of iOS shadow samplers), a
+  // nearest one compares one texel. Independent from a varying, dependent when computed.
+  float sample_shadow(int binding, const Varying<3>& coord);
+  float sample_shadow(int binding, const glm::vec3& coord);
 
  private:
   // Level of detail as the sampler receives it: an explicit lambda, or the squared footprint
@@ -57,6 +63,8 @@ class ExecTexUnit {
   glm::vec4 filtered(const Texture2D& tex, std::uint64_t base, glm::vec2 uv, const LodInput& lod,
                      bool dependent);
   glm::vec4 nearest(const Texture2D& tex, std::uint64_t base, int level, glm::vec2 uv);
+  float shadow(const Texture2D& tex, std::uint64_t base, glm::vec3 coord, bool dependent);
+  void count_sample(const Texture2D& tex, Filter filter, bool dependent);
   // `blend` false: count and cache the footprint only (its value is not needed).
   glm::vec4 bilinear(const Texture2D& tex, std::uint64_t base, int level, glm::vec2 uv, bool blend);
   void access_line(std::uint64_t address);  // one distinct cache line of a sample

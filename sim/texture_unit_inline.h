@@ -72,12 +72,47 @@ inline glm::vec4 ExecTexUnit::bilinear(const Texture2D& tex, std::uint64_t base,
   return glm::mix(glm::mix(row0[x0], row0[x1], ax), glm::mix(row1[x0], row1[x1], ax), ay);
 }
 
+inline void ExecTexUnit::count_sample(const Texture2D& tex, Filter filter, bool dependent) {
+  ++counters_->samples_by_filter[static_cast<int>(filter)];
+  if (dependent) ++counters_->samples_dependent;
+  if (tex.texel_bytes() > 4) ++counters_->samples_wide_format;
+}
+
+inline float ExecTexUnit::sample_shadow(int binding, const Varying<3>& coord) {
+  return shadow(texture(binding), binding * kBindingAddressStride, coord.value, false);
+}
+
+inline float ExecTexUnit::sample_shadow(int binding, const glm::vec3& coord) {
+  return shadow(texture(binding), binding * kBindingAddressStride, coord, true);
+}
+
+inline float ExecTexUnit::shadow(const Texture2D& tex, std::uint64_t base, glm::vec3 coord,
+                                 bool dependent) {
+  const glm::vec2 uv(coord);
+  if (tex.sampler().filter == Filter::kNearest) {
+    count_sample(tex, Filter::kNearest, dependent);
+    return coord.z <= nearest(tex, base, 0, uv).x ? 1.0f : 0.0f;
+  }
+  count_sample(tex, Filter::kBilinear, dependent);
+  bilinear(tex, base, 0, uv, false);  // the footprint's cache traffic
+  const LevelView& l = tex.level(0);
+  const Wrap wrap = tex.sampler().wrap;
+  const filtering::FloorSplit f = filtering::floor_split(
+      uv * glm::vec2(static_cast<float>(l.width), static_cast<float>(l.height)) - 0.5f);
+  const int x0 = filtering::wrap_coord(f.x, l.width, wrap);
+  const int x1 = filtering::wrap_coord(f.x + 1, l.width, wrap);
+  const int y0 = filtering::wrap_coord(f.y, l.height, wrap);
+  const int y1 = filtering::wrap_coord(f.y + 1, l.height, wrap);
+  const auto lit = [&](int x, int y) { return coord.z <= l.at(x, y).x ? 1.0f : 0.0f; };
+  const float top = lit(x0, y0) + (lit(x1, y0) - lit(x0, y0)) * f.fraction_x;
+  const float bottom = lit(x0, y1) + (lit(x1, y1) - lit(x0, y1)) * f.fraction_x;
+  return top + (bottom - top) * f.fraction_y;
+}
+
 inline glm::vec4 ExecTexUnit::filtered(const Texture2D& tex, std::uint64_t base, glm::vec2 uv,
                                        const LodInput& lod, bool dependent) {
   const Filter filter = tex.sampler().filter;
-  ++counters_->samples_by_filter[static_cast<int>(filter)];
-  if (dependent) ++counters_->samples_dependent;
-  if (tex.format() != TexelFormat::kRGBA8) ++counters_->samples_wide_format;
+  count_sample(tex, filter, dependent);
 
   const int max_level = tex.level_count() - 1;
   if (filter != Filter::kTrilinear) {

@@ -59,8 +59,8 @@ TileRenderer::TileRenderer(const RenderPassDesc& pass, const SetupTriangles& set
       grid_(grid),
       config_(config),
       tex_(&cache, nullptr),
-      inv_size_(1.0f / static_cast<float>(pass.color->width),
-                1.0f / static_cast<float>(pass.color->height)) {
+      inv_size_(1.0f / static_cast<float>(pass_target(pass).width),
+                1.0f / static_cast<float>(pass_target(pass).height)) {
   const size_t n = static_cast<size_t>(grid.tile_size) * grid.tile_size;
   color_.resize(n);
   depth_.resize(n);
@@ -99,7 +99,6 @@ void TileRenderer::render(int tx, int ty, const std::vector<std::uint32_t>& tria
                           TileCounters& counters) {
   rect_ = grid_.tile_rect(tx, ty);
   const int ts = grid_.tile_size;
-  const int bpp = bytes_per_texel(pass_.color->format);
   const std::uint64_t pixels = static_cast<std::uint64_t>(rect_.x1 - rect_.x0) *
                                static_cast<std::uint64_t>(rect_.y1 - rect_.y0);
   tex_.set_counters(&counters.texture);
@@ -107,12 +106,12 @@ void TileRenderer::render(int tx, int ty, const std::vector<std::uint32_t>& tria
   // Tile start: colour from a clear, or loaded from the target (costs DRAM reads).
   std::fill(depth_.begin(), depth_.end(), 1.0f);
   std::fill(tag_.begin(), tag_.end(), 0u);
-  if (pass_.color_load == LoadOp::kLoad) {
+  if (pass_.color && pass_.color_load == LoadOp::kLoad) {
     for (int py = rect_.y0; py < rect_.y1; ++py) {
       std::copy_n(&pass_.color->at(rect_.x0, py), rect_.x1 - rect_.x0,
                   &color_[static_cast<size_t>(py - rect_.y0) * ts]);
     }
-    counters.color_load_bytes = pixels * bpp;
+    counters.color_load_bytes = pixels * bytes_per_texel(pass_.color->format);
   } else {
     std::fill(color_.begin(), color_.end(), pass_.clear_color);
   }
@@ -123,6 +122,8 @@ void TileRenderer::render(int tx, int ty, const std::vector<std::uint32_t>& tria
     const DrawCall& draw = pass_.draws[t.draw];
     // Hidden-surface removal applies to opaque draws that write depth: their fragments
     // only tag the pixel; shading waits until the tile's visibility is final.
+    // A depth-only pass shades nothing: the ISP's depth test and write are all its work.
+    const bool depth_only = !pass_.color;
     const bool deferred = draw.blend == BlendMode::kOpaque && draw.depth_write;
     if (!deferred && flush_tags(counters, shaded)) ++counters.hsr_flushes;
     rasterize(t, rect_, [&](int px, int py, float z) {
@@ -130,6 +131,7 @@ void TileRenderer::render(int tx, int ty, const std::vector<std::uint32_t>& tria
       ++counters.fragments_depth_tested;
       if (draw.depth_test && !(z < depth_[i])) return;
       if (draw.depth_write) depth_[i] = z;
+      if (depth_only) return;
       if (deferred) {
         tag_[i] = tri + 1;
         return;
@@ -147,15 +149,23 @@ void TileRenderer::render(int tx, int ty, const std::vector<std::uint32_t>& tria
     if (shaded[d]) counters.shaded_by_draw.push_back({d, shaded[d]});
   }
   // Tile end: resolve colour to the target; depth/stencil are discarded unless stored.
-  if (pass_.store_color) {
+  if (pass_.color && pass_.store_color) {
     for (int py = rect_.y0; py < rect_.y1; ++py) {
       quantize_span(&color_[static_cast<size_t>(py - rect_.y0) * ts],
                     &pass_.color->at(rect_.x0, py), static_cast<size_t>(rect_.x1 - rect_.x0),
                     pass_.color->format);
     }
-    counters.color_store_bytes = pixels * bpp;
+    counters.color_store_bytes = pixels * bytes_per_texel(pass_.color->format);
   }
-  if (pass_.store_depth) {
+  if (pass_.store_depth && pass_.depth) {
+    for (int py = rect_.y0; py < rect_.y1; ++py) {
+      const float* row = &depth_[static_cast<size_t>(py - rect_.y0) * ts];
+      for (int px = rect_.x0; px < rect_.x1; ++px) {
+        pass_.depth->at(px, py) = quantize(glm::vec4(row[px - rect_.x0]), pass_.depth->format);
+      }
+    }
+    counters.depth_store_bytes = pixels * bytes_per_texel(pass_.depth->format);
+  } else if (pass_.store_depth) {
     counters.depth_store_bytes = pixels * config_.depth_stencil_bytes_per_pixel;
   }
 }
