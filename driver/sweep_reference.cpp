@@ -18,8 +18,8 @@ namespace {
 
 nlohmann::json reference_fingerprint(const pipeline::PipelineConfig& c, const SceneSource& s) {
   nlohmann::json knobs = nlohmann::json::object();
-  for (const char* key : {"resolution", "lobe1", "lobe2", "specular_intensity"}) {
-    knobs[key] = pipeline::get_config_field(c, key);
+  for (const pipeline::KnobSpec& k : pipeline::all_knobs()) {
+    if (k.reference) knobs[k.name] = k.get(c);
   }
   return {{"knobs", knobs},
           {"scene",

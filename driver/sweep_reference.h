@@ -14,9 +14,8 @@ namespace skinsim::driver {
 
 // File stem of the reference a resolved configuration is compared against, e.g.
 // "reference_2048x1536_1f0c...". The reference depends on the configuration only through
-// the resolution and the BRDF parameters (lobe1, lobe2, specular_intensity: see
-// pipeline/reference/reference.cpp and brdf_lut_params), so configurations that differ in
-// other knobs share it.
+// the knobs marked `reference` in the knob table (the resolution, the BRDF parameters, the
+// light and framing: pipeline/knob.h), so configurations that differ in other knobs share it.
 std::string reference_stem(const pipeline::PipelineConfig& resolved, const SceneSource& scene);
 
 // Loads refs/<stem>.png and its skin mask from `refs_dir` if a complete cached copy exists,

@@ -121,7 +121,7 @@ namespace {
 // The knobs pipeline::knob_applies reads to decide whether another knob applies: the
 // technique, and the specular model (the LUT knobs need the KS LUT).
 bool decides_applicability(const std::string& knob) {
-  return knob == "technique" || knob == "specular";
+  return knob != "device" && pipeline::find_knob(knob).decides;
 }
 
 // One value of each deciding axis, and which axes the configurations with those values use.

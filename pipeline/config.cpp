@@ -59,4 +59,34 @@ const char* curvature_name(CurvatureSource source) {
   return source == CurvatureSource::kVertex ? "vertex" : "derivatives";
 }
 
+ShadowFilter parse_shadow_filter(const std::string& text) {
+  if (text == "nearest") return ShadowFilter::kNearest;
+  if (text == "pcf2x2") return ShadowFilter::kPcf2x2;
+  throw ConfigError("shadow_filter: expected 'nearest' or 'pcf2x2', got '" + text + "'");
+}
+
+const char* shadow_filter_name(ShadowFilter filter) {
+  return filter == ShadowFilter::kNearest ? "nearest" : "pcf2x2";
+}
+
+sim::TexelFormat parse_shadow_depth(const std::string& text) {
+  if (text == "depth16") return sim::TexelFormat::kDepth16;
+  if (text == "depth24") return sim::TexelFormat::kDepth24;
+  throw ConfigError("shadow_depth: expected 'depth16' or 'depth24', got '" + text + "'");
+}
+
+const char* shadow_depth_name(sim::TexelFormat format) {
+  return sim::format_name(format);
+}
+
+bool parse_switch(const std::string& text) {
+  if (text == "on") return true;
+  if (text == "off") return false;
+  throw ConfigError("expected 'on' or 'off', got '" + text + "'");
+}
+
+const char* switch_name(bool on) {
+  return on ? "on" : "off";
+}
+
 }  // namespace skinsim::pipeline

@@ -30,6 +30,10 @@ enum class SpecularModel { kKsLut, kKs, kGgx, kDualGgx };
 // low-poly meshes: constant per triangle).
 enum class CurvatureSource { kVertex, kDerivatives };
 
+// Shadow-map fetch: one texel compared (nearest), or the 2x2 footprint compared and
+// filtered by the hardware (EXT_shadow_samplers with a linear filter on iOS).
+enum class ShadowFilter { kNearest, kPcf2x2 };
+
 struct SpecularLobe {
   float roughness;  // Beckmann m
   float weight;
@@ -61,6 +65,22 @@ struct PipelineConfig {
   int height = 0;
   float lod_distance_m = 2.0f;  // beyond this camera distance the single-pass shader runs
 
+  // Light and framing (pipeline/lighting.h). Unset: the scene's own.
+  std::optional<float> light_azimuth_deg;    // key light around the up axis, 0 = camera side
+  std::optional<float> light_elevation_deg;  // key light above the horizon
+  std::optional<float> back_light;           // back light strength, 1 = the studio rim light
+  std::optional<float> camera_distance_m;    // camera to the skin's centre
+  float camera_yaw_deg = 0.0f;               // camera orbit around the skin's centre
+
+  // The key light's shadow map (pipeline/shadow_map.h) and transmission (shaders/lights.h).
+  bool shadows = true;
+  int shadow_map_size = 1024;
+  ShadowFilter shadow_filter = ShadowFilter::kPcf2x2;
+  int shadow_taps = 1;
+  sim::TexelFormat shadow_depth = sim::TexelFormat::kDepth16;
+  std::optional<glm::vec3> shadow_tint;  // light left in full shadow per channel; unset: none
+  bool transmission = true;
+
   // Technique knobs (docs/techniques.md). Specular model of every technique's skin shader;
   // only ks_lut reads the BRDF LUT, so the lut and lut_format knobs matter only with it.
   SpecularModel specular = SpecularModel::kKsLut;
@@ -73,6 +93,7 @@ struct PipelineConfig {
   // profile's mean scattering radius (techniques/kernels.h).
   std::optional<glm::vec3> burley_distance_mm;
   int texture_space_size = 1024;  // texture-space diffusion buffers, texels per axis
+  bool shadow_scatter = true;     // pre-integrated: Penner's penumbra scattering
 
   // Throws ConfigError naming the knob when a value is out of range (each row of the knob
   // table checks its own; knobs.cpp).
@@ -94,5 +115,11 @@ SpecularModel parse_specular(const std::string& text);
 const char* specular_name(SpecularModel model);
 CurvatureSource parse_curvature(const std::string& text);
 const char* curvature_name(CurvatureSource source);
+ShadowFilter parse_shadow_filter(const std::string& text);
+const char* shadow_filter_name(ShadowFilter filter);
+sim::TexelFormat parse_shadow_depth(const std::string& text);
+const char* shadow_depth_name(sim::TexelFormat format);
+bool parse_switch(const std::string& text);  // on/off
+const char* switch_name(bool on);
 
 }  // namespace skinsim::pipeline

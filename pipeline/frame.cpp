@@ -1,5 +1,6 @@
 #include "pipeline/frame.h"
 
+#include "pipeline/frame_lights.h"
 #include "pipeline/technique.h"
 
 namespace skinsim::pipeline {
@@ -7,7 +8,14 @@ namespace skinsim::pipeline {
 FrameOutput render_frame(const GpuScene& scene, const PipelineConfig& config, sim::Gpu& gpu) {
   config.validate();
   if (config.width <= 0) throw ConfigError("render resolution must be resolved before rendering");
-  return find_technique(config.technique).render(scene, config, gpu);
+  std::vector<sim::PassCounters> light_passes;  // the shadow pass, when there are shadows
+  const FrameLights lights(scene, config, gpu, light_passes);
+  FrameOutput out = find_technique(config.technique).render(scene, config, lights, gpu);
+  out.passes.insert(out.passes.begin(), light_passes.begin(), light_passes.end());
+  if (const sim::RenderTarget* shadow_map = lights.shadow_map()) {
+    out.intermediates.push_back({"shadow_map", *shadow_map, 1.0f});
+  }
+  return out;
 }
 
 std::pair<int, int> render_size(const PipelineConfig& config, int default_width,

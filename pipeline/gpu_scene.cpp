@@ -5,7 +5,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <limits>
 
+#include "pipeline/bake/thickness.h"
 #include "pipeline/environment_filter.h"
+#include "pipeline/lighting.h"
 
 namespace skinsim::pipeline {
 
@@ -42,7 +44,23 @@ GpuScene::GpuScene(const scene::Scene& scene) : scene_(scene) {
   }
   if (materials_.empty()) materials_.push_back({scene::MaterialKind::kOther, white, flat});
 
+  std::vector<bake::RayMesh> ray_meshes;
   for (const scene::Mesh& mesh : scene.meshes) {
+    ray_meshes.push_back({&mesh.positions, &mesh.indices});
+    const scene::MaterialKind kind =
+        materials_[static_cast<std::size_t>(std::max(mesh.material, 0))].kind;
+    for (const glm::vec3& p : mesh.positions) {
+      bounds_.add(p);
+      if (kind != scene::MaterialKind::kOther) character_bounds_.add(p);
+      if (kind == scene::MaterialKind::kSkin) skin_bounds_.add(p);
+    }
+  }
+  if (character_bounds_.empty()) character_bounds_ = bounds_;
+  rays_ = std::make_unique<bake::RayScene>(ray_meshes);
+  thickness_mm_.reserve(scene.meshes.size());  // stable addresses for the attributes
+  for (const scene::Mesh& mesh : scene.meshes) {
+    thickness_mm_.push_back(
+        bake::bake_thickness_mm(*rays_, mesh.positions, mesh.normals, scene.units_per_mm));
     GpuMesh g;
     g.mesh = &mesh;
     g.material = mesh.material >= 0 ? mesh.material : 0;
@@ -50,6 +68,7 @@ GpuScene::GpuScene(const scene::Scene& scene) : scene_(scene) {
     g.geometry.attributes.normals = mesh.normals.empty() ? nullptr : mesh.normals.data();
     g.geometry.attributes.uvs = mesh.uvs.empty() ? nullptr : mesh.uvs.data();
     g.geometry.attributes.tangents = mesh.tangents.empty() ? nullptr : mesh.tangents.data();
+    g.geometry.attributes.thickness = thickness_mm_.back().data();
     g.geometry.vertex_count = mesh.positions.size();
     g.geometry.indices = mesh.indices.data();
     g.geometry.index_count = mesh.indices.size();
@@ -77,8 +96,9 @@ bool GpuScene::has_skin() const {
   });
 }
 
-View make_view(const GpuScene& gpu_scene, int width, int height) {
-  const scene::Camera& cam = gpu_scene.scene().camera;
+View make_view(const GpuScene& gpu_scene, const PipelineConfig& config) {
+  const scene::Camera cam = frame_camera(gpu_scene, config);
+  const int width = config.width, height = config.height;
   View v;
   v.width = width;
   v.height = height;

@@ -4,8 +4,11 @@
 
 #include <deque>
 #include <glm/glm.hpp>
+#include <memory>
 #include <vector>
 
+#include "pipeline/bake/ray_scene.h"
+#include "pipeline/config.h"
 #include "scene/scene.h"
 #include "sim/render_pass.h"
 #include "sim/texture.h"
@@ -23,7 +26,19 @@ struct GpuMaterial {
 struct GpuMesh {
   const scene::Mesh* mesh = nullptr;
   int material = 0;
-  sim::Geometry geometry;
+  sim::Geometry geometry;  // with the baked thickness as a vertex attribute
+};
+
+// Axis-aligned bounds in world space; empty when lo > hi.
+struct Bounds {
+  glm::vec3 lo{1e30f};
+  glm::vec3 hi{-1e30f};
+  bool empty() const { return lo.x > hi.x; }
+  glm::vec3 centre() const { return empty() ? glm::vec3(0.0f) : 0.5f * (lo + hi); }
+  void add(const glm::vec3& p) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
 };
 
 class GpuScene {
@@ -40,6 +55,13 @@ class GpuScene {
   const sim::TextureCube& environment() const { return environment_; }
   const sim::TextureCube& environment_diffuse() const { return environment_diffuse_; }
   bool has_skin() const;
+  const Bounds& bounds() const { return bounds_; }  // every mesh
+  // The character: skin and eyes (every mesh when there are neither), what the shadow map
+  // is fitted to.
+  const Bounds& character_bounds() const { return character_bounds_; }
+  const Bounds& skin_bounds() const { return skin_bounds_; }
+  // Every mesh for ray casting (the reference's visibility; the thickness bake).
+  const bake::RayScene& rays() const { return *rays_; }
 
  private:
   const sim::Texture2D* add_texture(sim::Texture2D texture);
@@ -48,6 +70,9 @@ class GpuScene {
   std::deque<sim::Texture2D> textures_;  // deque: stable addresses
   std::vector<GpuMaterial> materials_;
   std::vector<GpuMesh> meshes_;
+  std::vector<std::vector<float>> thickness_mm_;  // per mesh, per vertex (offline bake)
+  Bounds bounds_, character_bounds_, skin_bounds_;
+  std::unique_ptr<bake::RayScene> rays_;
   sim::TextureCube environment_;
   sim::TextureCube environment_diffuse_;
 };
@@ -86,6 +111,8 @@ struct View {
   }
 };
 
-View make_view(const GpuScene& gpu_scene, int width, int height);
+// The view of a frame: the scene's camera with the framing knobs (lighting.h), at the
+// config's (resolved) resolution.
+View make_view(const GpuScene& gpu_scene, const PipelineConfig& config);
 
 }  // namespace skinsim::pipeline

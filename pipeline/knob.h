@@ -25,6 +25,12 @@ struct KnobSpec {
   // Whether the frame depends on the knob given the rest of the config, for a technique that
   // uses it (the BRDF LUT knobs only with the ks_lut specular model); empty: always.
   std::function<bool(const PipelineConfig&)> applies;
+  // Whether this knob's value decides whether others apply (technique, specular, shadows):
+  // sweeps enumerate such axes before folding the others.
+  bool decides = false;
+  // Whether the reference frame depends on it (the scene's framing and light, the BRDF
+  // parameters): sweeps render one reference per combination of these.
+  bool reference = false;
 };
 
 // Every knob: the ones all techniques use, then each technique's own (technique.h), in

@@ -11,6 +11,16 @@ namespace skinsim::pipeline {
 
 namespace {
 
+// A row's name, option, accepted values and help; the builders add the behaviour.
+KnobSpec row(std::string name, std::string flag, std::string values, std::string help) {
+  KnobSpec k;
+  k.name = std::move(name);
+  k.flag = std::move(flag);
+  k.values = std::move(values);
+  k.help = std::move(help);
+  return k;
+}
+
 bool power_of_two(int v) {
   return v > 0 && (v & (v - 1)) == 0;
 }
@@ -54,11 +64,7 @@ glm::vec3 parse_knob_rgb(const std::string& key, const std::string& text) {
 
 KnobSpec real_knob(std::string name, std::string flag, std::string help,
                    float PipelineConfig::*field, Interval range) {
-  KnobSpec k;
-  k.name = std::move(name);
-  k.flag = std::move(flag);
-  k.values = "number in " + range.text();
-  k.help = std::move(help);
+  KnobSpec k = row(std::move(name), std::move(flag), "number in " + range.text(), std::move(help));
   k.set = [field, key = k.name](PipelineConfig& c, const std::string& text) {
     c.*field = parse_knob_float(key, text);
   };
@@ -72,11 +78,8 @@ KnobSpec real_knob(std::string name, std::string flag, std::string help,
 
 KnobSpec optional_real_knob(std::string name, std::string flag, std::string help,
                             std::optional<float> PipelineConfig::*field, Interval range) {
-  KnobSpec k;
-  k.name = std::move(name);
-  k.flag = std::move(flag);
-  k.values = "number in " + range.text() + " or auto";
-  k.help = std::move(help);
+  KnobSpec k = row(std::move(name), std::move(flag), "number in " + range.text() + " or auto",
+                   std::move(help));
   k.set = [field, key = k.name](PipelineConfig& c, const std::string& text) {
     c.*field = text == "auto" ? std::nullopt : std::optional(parse_knob_float(key, text));
   };
@@ -86,6 +89,48 @@ KnobSpec optional_real_knob(std::string name, std::string flag, std::string help
   k.invalid = [field, range, key = k.name](const PipelineConfig& c) -> std::string {
     if (!(c.*field) || range.contains(*(c.*field))) return "";
     return fmt::format("{} must be in {}, got {:g}", key, range.text(), *(c.*field));
+  };
+  return k;
+}
+
+KnobSpec shapes_reference(KnobSpec knob) {
+  knob.reference = true;
+  return knob;
+}
+
+KnobSpec switch_knob(std::string name, std::string flag, std::string help,
+                     bool PipelineConfig::*field) {
+  KnobSpec k = row(std::move(name), std::move(flag), "on or off", std::move(help));
+  k.set = [field, key = k.name](PipelineConfig& c, const std::string& text) {
+    try {
+      c.*field = parse_switch(text);
+    } catch (const ConfigError& e) {
+      throw ConfigError(key + ": " + e.what());
+    }
+  };
+  k.get = [field](const PipelineConfig& c) { return std::string(switch_name(c.*field)); };
+  k.invalid = [](const PipelineConfig&) { return std::string(); };
+  return k;
+}
+
+KnobSpec optional_rgb_knob(std::string name, std::string flag, std::string help,
+                           std::optional<glm::vec3> PipelineConfig::*field, Interval range) {
+  KnobSpec k = row(std::move(name), std::move(flag), "r,g,b each in " + range.text() + ", or auto",
+                   std::move(help));
+  k.set = [field, key = k.name](PipelineConfig& c, const std::string& text) {
+    c.*field = text == "auto" ? std::nullopt : std::optional(parse_knob_rgb(key, text));
+  };
+  k.get = [field](const PipelineConfig& c) {
+    if (!(c.*field)) return std::string("auto");
+    const glm::vec3 v = *(c.*field);
+    return fmt::format("{},{},{}", v.r, v.g, v.b);
+  };
+  k.invalid = [field, range, key = k.name](const PipelineConfig& c) -> std::string {
+    if (!(c.*field)) return "";
+    const glm::vec3 v = *(c.*field);
+    if (range.contains(v.r) && range.contains(v.g) && range.contains(v.b)) return "";
+    return fmt::format("{} must be in {} per channel, got {:g},{:g},{:g}", key, range.text(), v.r,
+                       v.g, v.b);
   };
   return k;
 }
@@ -115,11 +160,8 @@ KnobSpec integer_knob(std::string name, std::string flag, std::string help,
 
 KnobSpec size_knob(std::string name, std::string flag, std::string help, int PipelineConfig::*width,
                    int PipelineConfig::*height, int lo, int hi) {
-  KnobSpec k;
-  k.name = std::move(name);
-  k.flag = std::move(flag);
-  k.values = fmt::format("WxH, powers of two in [{}, {}]", lo, hi);
-  k.help = std::move(help);
+  KnobSpec k = row(std::move(name), std::move(flag),
+                   fmt::format("WxH, powers of two in [{}, {}]", lo, hi), std::move(help));
   k.set = [=, key = k.name](PipelineConfig& c, const std::string& text) {
     std::tie(c.*width, c.*height) = parse_size(text, key);
   };

@@ -36,6 +36,14 @@ KnobSpec optional_real_knob(std::string name, std::string flag, std::string help
 // An integer in [lo, hi], a power of two when `power_of_two`.
 KnobSpec integer_knob(std::string name, std::string flag, std::string help,
                       int PipelineConfig::*field, int lo, int hi, bool power_of_two = false);
+// The row with KnobSpec::reference set.
+KnobSpec shapes_reference(KnobSpec knob);
+// "on" or "off".
+KnobSpec switch_knob(std::string name, std::string flag, std::string help,
+                     bool PipelineConfig::*field);
+// "r,g,b", each in `range`, or "auto" (empty; `help` says what that means).
+KnobSpec optional_rgb_knob(std::string name, std::string flag, std::string help,
+                           std::optional<glm::vec3> PipelineConfig::*field, Interval range);
 // "WxH", each a power of two in [lo, hi].
 KnobSpec size_knob(std::string name, std::string flag, std::string help, int PipelineConfig::*width,
                    int PipelineConfig::*height, int lo, int hi);

@@ -8,6 +8,7 @@
 
 #include "pipeline/config.h"
 #include "pipeline/knob_types.h"
+#include "pipeline/light_knobs.h"
 #include "pipeline/technique.h"
 
 namespace skinsim::pipeline {
@@ -16,6 +17,7 @@ namespace {
 
 KnobSpec technique_knob() {
   KnobSpec k;
+  k.decides = true;
   k.name = "technique";
   k.flag = "--technique";
   k.values = fmt::format("{}", fmt::join(technique_names(), ", "));
@@ -37,6 +39,7 @@ KnobSpec technique_knob() {
 
 KnobSpec resolution_knob() {
   KnobSpec k;
+  k.reference = true;
   k.name = "resolution";
   k.flag = "--resolution";
   k.values = "WxH within 16..8192 per axis, or display";
@@ -61,6 +64,7 @@ KnobSpec resolution_knob() {
 KnobSpec lobe_knob(const std::string& name, SpecularLobe PipelineConfig::*field,
                    const std::string& help) {
   KnobSpec k;
+  k.reference = true;
   k.name = name;
   k.flag = "--" + name;
   k.values = "roughness,weight: roughness in [0.05, 1], weight in [0, 1]";
@@ -111,6 +115,15 @@ KnobSpec lut_format_knob() {
   return k;
 }
 
+KnobSpec specular_knob() {
+  KnobSpec k = choice_knob("specular", "--specular",
+                           "Specular model of the skin shaders; only ks_lut reads the BRDF LUT",
+                           "ks_lut, ks, ggx or dual_ggx", &PipelineConfig::specular, parse_specular,
+                           specular_name);
+  k.decides = true;
+  return k;
+}
+
 }  // namespace
 
 const std::vector<KnobSpec>& common_knobs() {
@@ -119,7 +132,7 @@ const std::vector<KnobSpec>& common_knobs() {
         size_knob("lut", "--lut", "BRDF LUT size (N.H x N.V); read only with specular ks_lut",
                   &PipelineConfig::lut_width, &PipelineConfig::lut_height, 2, 1024);
     lut.applies = reads_brdf_lut;
-    return std::vector<KnobSpec>{
+    std::vector<KnobSpec> rows{
         technique_knob(),
         resolution_knob(),
         choice_knob("gamma", "--gamma", "Skin gamma: gamma 2.0 as in GPU Pro 5, or exact sRGB",
@@ -127,16 +140,15 @@ const std::vector<KnobSpec>& common_knobs() {
         lobe_knob("lobe1", &PipelineConfig::lobe1,
                   "First specular lobe (Beckmann m and weight; the weights sum to 1)"),
         lobe_knob("lobe2", &PipelineConfig::lobe2, "Second specular lobe"),
-        real_knob("specular_intensity", "--specular-intensity",
-                  "Specular intensity rho_s (d'Eon & Luebke)", &PipelineConfig::specular_intensity,
-                  {0.0, 1.0}),
-        choice_knob("specular", "--specular",
-                    "Specular model of the skin shaders; only ks_lut reads the BRDF LUT",
-                    "ks_lut, ks, ggx or dual_ggx", &PipelineConfig::specular, parse_specular,
-                    specular_name),
+        shapes_reference(real_knob("specular_intensity", "--specular-intensity",
+                                   "Specular intensity rho_s (d'Eon & Luebke)",
+                                   &PipelineConfig::specular_intensity, {0.0, 1.0})),
+        specular_knob(),
         std::move(lut),
         lut_format_knob(),
     };
+    for (KnobSpec& k : light_knobs()) rows.push_back(std::move(k));
+    return rows;
   }();
   return knobs;
 }

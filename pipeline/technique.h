@@ -18,6 +18,7 @@ class Gpu;
 namespace skinsim::pipeline {
 
 class GpuScene;
+class FrameLights;
 struct FrameOutput;
 
 struct TechniqueSpec {
@@ -27,8 +28,10 @@ struct TechniqueSpec {
   // Knobs only this technique uses (rows of the knob table); every technique also uses
   // common_knobs().
   std::vector<KnobSpec> knobs;
-  // Renders one frame (config validated, resolution resolved).
-  FrameOutput (*render)(const GpuScene& scene, const PipelineConfig& config, sim::Gpu& gpu);
+  // Renders one frame (config validated, resolution resolved) after the frame's shadow pass:
+  // every lit pass binds and sets `lights`.
+  FrameOutput (*render)(const GpuScene& scene, const PipelineConfig& config,
+                        const FrameLights& lights, sim::Gpu& gpu);
   // The programs it can run, with default uniforms, for `skinsim shaders`.
   std::vector<sim::NamedProfile> (*shaders)();
 };

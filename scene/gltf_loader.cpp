@@ -209,6 +209,7 @@ Scene load_gltf(const std::string& path, const LoadOptions& opts) {
     scene.camera = frame_front(bounds, opts.auto_camera_yfov_radians, opts.aspect, 0.05f);
   }
   scene.key_light = default_key_light();
+  scene.back_light = default_back_light(scene.key_light);
   scene.ambient = default_ambient();
   apply_file_light(model, nodes, path, warn, scene.key_light);
   scene.environment = make_studio_environment(opts.environment_size, scene.key_light);

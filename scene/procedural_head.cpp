@@ -88,6 +88,7 @@ Scene make_default_scene(const DefaultSceneOptions& o) {
 
   s.camera = close_up_camera(o.aspect);
   s.key_light = default_key_light();
+  s.back_light = default_back_light(s.key_light);
   s.ambient = default_ambient();
   s.environment = make_studio_environment(o.environment_size, s.key_light);
   s.units_per_mm = 0.001f;

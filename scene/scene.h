@@ -85,7 +85,9 @@ struct Scene {
   std::vector<Material> materials;
   std::vector<Image> images;
   Camera camera;
-  DirectionalLight key_light;
+  DirectionalLight key_light;  // casts the shadows
+  // A rim light from behind (transmission through the ears); radiance 0 = none.
+  DirectionalLight back_light{{0.0f, 0.0f, -1.0f}, glm::vec3(0.0f)};
   glm::vec3 ambient{0.05f};
   CubeMap environment;
   // World units per millimetre: diffusion profiles are in mm (skin-techniques.md section 4).

@@ -43,6 +43,19 @@ glm::vec3 studio_radiance(const glm::vec3& dir, const glm::vec3& key_axis,
 
 }  // namespace
 
+glm::vec3 rim_axis(const DirectionalLight& key) {
+  const glm::vec3 key_axis = glm::normalize(key.direction);
+  return glm::normalize(glm::vec3(-key_axis.x, 0.25f, -0.8f));
+}
+
+DirectionalLight default_back_light(const DirectionalLight& key) {
+  DirectionalLight l;
+  l.direction = rim_axis(key);
+  // Cool, a little under the key: a rim light that lights the ears from behind.
+  l.radiance = glm::vec3(0.75f, 0.8f, 0.9f);
+  return l;
+}
+
 DirectionalLight default_key_light() {
   DirectionalLight l;
   l.direction = glm::normalize(glm::vec3(-0.45f, 0.55f, 0.7f));
@@ -76,8 +89,7 @@ CubeMap make_studio_environment(int face_size, const DirectionalLight& key) {
     throw SceneError("environment_size must be in [1, 4096], got " + std::to_string(face_size));
   }
   const glm::vec3 key_axis = glm::normalize(key.direction);
-  // Rim box behind the subject on the side opposite the key, slightly above.
-  const glm::vec3 rim_axis = glm::normalize(glm::vec3(-key_axis.x, 0.25f, -0.8f));
+  const glm::vec3 rim = rim_axis(key);
   CubeMap cube;
   cube.size = face_size;
   for (int f = 0; f < 6; ++f) {
@@ -89,7 +101,7 @@ CubeMap make_studio_environment(int face_size, const DirectionalLight& key) {
         const float t = 2.0f * (y + 0.5f) / face_size - 1.0f;
         const glm::vec3 dir = glm::normalize(cube_face_direction(f, s, t));
         texels[static_cast<std::size_t>(y) * face_size + x] =
-            glm::vec4(studio_radiance(dir, key_axis, rim_axis), 1.0f);
+            glm::vec4(studio_radiance(dir, key_axis, rim), 1.0f);
       }
     }
   }

@@ -13,6 +13,10 @@ namespace skinsim::scene {
 // at -Z, so "left" in the picture is -X).
 DirectionalLight default_key_light();
 glm::vec3 default_ambient();
+// The studio's rim box axis for a key light: behind the subject on the side opposite the
+// key, slightly above. The back light shines from there.
+glm::vec3 rim_axis(const DirectionalLight& key);
+DirectionalLight default_back_light(const DirectionalLight& key);
 
 // World direction (not normalised) through texel position (s, t) in [-1, 1]^2 of cube face
 // `face` (+X, -X, +Y, -Y, +Z, -Z), OpenGL convention (GL 4.6 spec, table 8.19): s grows

@@ -65,13 +65,15 @@ struct AlbedoFS {
   }
 };
 
+// rgb: the interpolated vertex normal; a: the baked thickness in mm (for transmission).
 struct VertexNormalFS {
   static constexpr const char* kName = "ref_vertex_normal_fs";
   struct Uniforms {};
   template <class L>
   static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit&,
                                    const Uniforms&) {
-    return typename L::vec4(sl::normalize(in.v3(SurfaceSlots::kNormal)), 1.0f);
+    return typename L::vec4(sl::normalize(in.v3(SurfaceSlots::kNormal)),
+                            in.f(SurfaceSlots::kThickness));
   }
 };
 

@@ -10,6 +10,7 @@
 #include "pipeline/bake/skin_profile.h"
 #include "pipeline/bake/specular.h"
 #include "pipeline/brdf_lut_texture.h"
+#include "pipeline/frame_lights.h"
 #include "pipeline/reference/gbuffer_shaders.h"
 #include "pipeline/shaders/background.h"
 #include "pipeline/shaders/eye.h"
@@ -29,7 +30,9 @@ template <class FS>
 sim::PassCounters gbuffer_pass(
     const GpuScene& gs, const View& view, sim::RenderTarget& target, sim::Gpu& gpu,
     const std::function<typename FS::Uniforms(const GpuMaterial&)>& uniforms) {
-  auto vs = sim::make_vertex_program<shaders::SurfaceVS>({view.view_proj, 0.0f});
+  shaders::LightVertexUniforms thickness;  // the baked thickness, for VertexNormalFS
+  thickness.thickness = true;
+  auto vs = sim::make_vertex_program<shaders::SurfaceVS>({view.view_proj, 0.0f, thickness});
   sim::RenderPassDesc pass;
   pass.name = target.name;
   pass.color = &target;
@@ -58,7 +61,9 @@ float kind_code(MaterialKind k) {
   return reference::kKindOther;
 }
 
-GBuffer render_gbuffer(const GpuScene& gs, const View& view, int w, int h, int threads) {
+GBuffer render_gbuffer(const GpuScene& gs, const PipelineConfig& cfg, const View& view,
+                       int threads) {
+  const int w = cfg.width, h = cfg.height;
   sim::GpuConfig config;
   config.threads = threads;
   sim::Gpu gpu(config);
@@ -80,10 +85,21 @@ GBuffer render_gbuffer(const GpuScene& gs, const View& view, int w, int h, int t
     return reference::VertexNormalFS::Uniforms{};
   });
 
-  // Eyes and background: the same shaders as the pipelines (not what is studied), in float.
-  const scene::Scene& sc = gs.scene();
-  const glm::vec3 l = glm::normalize(sc.key_light.direction);
-  auto vs = sim::make_vertex_program<shaders::SurfaceVS>({view.view_proj, 0.0f});
+  // Eyes and background: the same shaders as the pipelines (not what is studied), in float,
+  // with the same shadow map.
+  // A fixed, fine shadow map whatever the shadow knobs, so the reference does not depend on
+  // them (knob.h: KnobSpec::reference).
+  PipelineConfig light_cfg = cfg;
+  light_cfg.shadows = true;
+  light_cfg.shadow_map_size = 2048;
+  light_cfg.shadow_depth = sim::TexelFormat::kDepth24;
+  light_cfg.shadow_filter = ShadowFilter::kPcf2x2;
+  light_cfg.shadow_taps = 4;
+  light_cfg.shadow_tint.reset();
+  std::vector<sim::PassCounters> light_passes;
+  const FrameLights lights(gs, light_cfg, gpu, light_passes);
+  auto vs = sim::make_vertex_program<shaders::SurfaceVS>(
+      {view.view_proj, 0.0f, lights.vertex_uniforms(Transmission::kComputedElsewhere)});
   sim::RenderPassDesc pass;
   pass.name = "ref_nonskin";
   pass.color = &g.nonskin;
@@ -94,19 +110,18 @@ GBuffer render_gbuffer(const GpuScene& gs, const View& view, int w, int h, int t
     d.geometry = m.geometry;
     d.vertex_program = vs;
     d.textures.textures[0] = mat.base_color;
+    lights.bind(d);
     const glm::vec3 factor(mat.base_color_factor);
     if (mat.kind == MaterialKind::kEye) {
       shaders::EyeFS::Uniforms u;
       u.eye = view.eye;
-      u.light_dir = l;
-      u.light_radiance = sc.key_light.radiance;
-      u.ambient = sc.ambient;
+      u.lights = lights.uniforms();
       u.albedo_factor = factor;
       d.fragment_program = sim::make_fragment_program<shaders::EyeFS>(u);
       d.textures.cubes[shaders::EyeFS::kEnvironment] = &gs.environment();
     } else {
-      d.fragment_program = sim::make_fragment_program<shaders::BackgroundFS>(
-          {l, sc.key_light.radiance, sc.ambient, factor});
+      d.fragment_program =
+          sim::make_fragment_program<shaders::BackgroundFS>({lights.uniforms(), factor});
     }
     pass.draws.push_back(d);
   }
@@ -242,16 +257,57 @@ class Diffusion {
   float units_per_mm_;
 };
 
+// Fraction of a disc light of angular radius kLightRadiusRad around `l` visible from p:
+// kShadowRays rays over the disc (a Fibonacci spiral, rotated per pixel by interleaved
+// gradient noise, Jimenez 2014, so that the penumbra's steps become fine noise).
+constexpr float kLightRadiusRad = 0.0175f;  // 1 degree: a softbox ~7 cm wide at 2 m
+constexpr int kShadowRays = 16;
+
+float visibility(const bake::RayScene& rays, const glm::vec3& p, const glm::vec3& l, int x, int y,
+                 float offset) {
+  const glm::vec3 helper = std::abs(l.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+  const glm::vec3 t = glm::normalize(glm::cross(helper, l));
+  const glm::vec3 b = glm::cross(l, t);
+  const float noise = std::fmod(52.9829189f * std::fmod(0.06711056f * static_cast<float>(x) +
+                                                            0.00583715f * static_cast<float>(y),
+                                                        1.0f),
+                                1.0f);
+  const float rotation = 6.2831853f * noise;
+  int lit = 0;
+  for (int i = 0; i < kShadowRays; ++i) {
+    const float r = kLightRadiusRad * std::sqrt((static_cast<float>(i) + 0.5f) / kShadowRays);
+    const float phi = 2.39996323f * static_cast<float>(i) + rotation;
+    const glm::vec3 dir = glm::normalize(l + r * (std::cos(phi) * t + std::sin(phi) * b));
+    if (!rays.occluded(p, dir, offset)) ++lit;
+  }
+  return static_cast<float>(lit) / kShadowRays;
+}
+
+// Transmittance of a slab `s` mm thick: the profile's Gaussians, as the pipelines use it
+// (shaders/lights.h, Jimenez et al. 2010).
+glm::vec3 transmittance(float s_mm) {
+  glm::vec3 t(0.0f);
+  for (const bake::GaussianTerm& g : bake::skin_gaussians()) {
+    t += g.weight * std::exp(-s_mm * s_mm / g.variance_mm2);
+  }
+  return t;
+}
+
 }  // namespace
 
 ReferenceFrame render_reference(const GpuScene& gs, const PipelineConfig& config, int threads) {
   const int w = config.width, h = config.height;
-  const View view = make_view(gs, w, h);
-  const GBuffer g = render_gbuffer(gs, view, w, h, threads);
+  const View view = make_view(gs, config);
+  const GBuffer g = render_gbuffer(gs, config, view, threads);
   const scene::Scene& sc = gs.scene();
-  const glm::vec3 l = glm::normalize(sc.key_light.direction);
+  const FrameLighting lighting = frame_lighting(gs, config);
+  std::vector<scene::DirectionalLight> lights{lighting.key};
+  if (lighting.has_back()) lights.push_back(lighting.back);
+  // Shadow rays start this far off the surface (past the triangles they start on).
+  const float ray_offset = 0.05f * sc.units_per_mm;
 
   std::vector<glm::vec3> irradiance(static_cast<size_t>(w) * h, glm::vec3(0.0f));
+  std::vector<float> visible(static_cast<size_t>(w) * h * lights.size(), 0.0f);  // per light
   const auto for_rows = [&](const std::function<void(int)>& row) {
     tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
     arena.execute([&] { tbb::parallel_for(0, h, row); });
@@ -260,8 +316,32 @@ ReferenceFrame render_reference(const GpuScene& gs, const PipelineConfig& config
     for (int x = 0; x < w; ++x) {
       if (g.position.at(x, y).w != reference::kKindSkin) continue;
       const glm::vec3 n(g.normal.at(x, y));
-      irradiance[static_cast<size_t>(y) * w + x] =
-          sc.key_light.radiance * std::max(glm::dot(n, l), 0.0f) + sc.ambient;
+      const glm::vec3 p(g.position.at(x, y));
+      const glm::vec3 vertex_n(g.vertex_normal.at(x, y));
+      // The light's physics, whatever the knobs: visibility is always ray cast and light
+      // always crosses thin parts (the shadows and transmission knobs switch the
+      // pipelines' approximations of these, measured against this).
+      glm::vec3 e = lighting.ambient;
+      for (std::size_t i = 0; i < lights.size(); ++i) {
+        const scene::DirectionalLight& light = lights[i];
+        const float n_dot_l = glm::dot(n, light.direction);
+        if (n_dot_l <= 0.0f) continue;
+        const float v =
+            visibility(gs.rays(), p + vertex_n * ray_offset, light.direction, x, y, ray_offset);
+        visible[(static_cast<size_t>(y) * w + x) * lights.size() + i] = v;
+        e += light.radiance * n_dot_l * v;
+      }
+      {
+        glm::vec3 back(0.0f);
+        for (const scene::DirectionalLight& light : lights) {
+          back +=
+              light.radiance * std::clamp(0.3f - glm::dot(vertex_n, light.direction), 0.0f, 1.0f);
+        }
+        if (back != glm::vec3(0.0f)) {
+          e += transmittance(g.vertex_normal.at(x, y).w) * back;
+        }
+      }
+      irradiance[static_cast<size_t>(y) * w + x] = e;
     }
   });
 
@@ -286,8 +366,13 @@ ReferenceFrame render_reference(const GpuScene& gs, const PipelineConfig& config
       float energy = 0.0f, fresnel = 0.0f;
       directional.at(n_dot_v, energy, fresnel);
       const glm::vec3 diffuse = albedo * diffusion.at(x, y) * energy;
-      const glm::vec3 specular =
-          sc.key_light.radiance * ks_specular(n, l, v, lut_params) * reflectivity;
+      glm::vec3 specular(0.0f);
+      for (std::size_t i = 0; i < lights.size(); ++i) {
+        const scene::DirectionalLight& light = lights[i];
+        if (glm::dot(n, light.direction) <= 0.0f) continue;
+        specular += light.radiance * ks_specular(n, light.direction, v, lut_params) * reflectivity *
+                    visible[(static_cast<size_t>(y) * w + x) * lights.size() + i];
+      }
       const glm::vec3 env =
           sample_cube(gs.environment_diffuse(), glm::vec3(g.vertex_normal.at(x, y)));
       const glm::vec3 color = diffuse + specular + env * fresnel * reflectivity;

@@ -1,7 +1,11 @@
 // The ground-truth frame image quality is measured against: same scene, camera and
 // lights as the pipelines, computed without their approximations.
 //
-//   - irradiance at full resolution, per pixel, in float, from the normal-mapped normal;
+//   - irradiance at full resolution, per pixel, in float, from the normal-mapped normal, of
+//     the key and back lights (lighting.h) with exact visibility: shadow rays cast with
+//     Embree against every mesh towards a disc light 1 degree in radius (soft edges), and
+//     light transmitted through thin parts from the baked thickness and the profile's
+//     transmittance (as shaders/lights.h), whatever the shadows / transmission knobs;
 //   - subsurface diffusion with the six-Gaussian skin profile (d'Eon & Luebke) as a 2D
 //     convolution whose kernel is evaluated on the world-space distance between surface
 //     points (so it does not bleed across depth discontinuities), normalised over skin;

@@ -9,9 +9,7 @@ namespace skinsim::pipeline::shaders {
 struct BackgroundFS {
   static constexpr const char* kName = "background_fs";
   struct Uniforms {
-    glm::vec3 light_dir{0.0f, 0.0f, 1.0f};
-    glm::vec3 light_radiance{1.0f};
-    glm::vec3 ambient{0.0f};
+    LightUniforms lights;
     glm::vec3 albedo_factor{1.0f};
   };
   template <class L>
@@ -22,8 +20,8 @@ struct BackgroundFS {
     const vec4 base = tex.sample(0, in.texcoord(SurfaceSlots::kUv));
     const vec3 n = sl::normalize(in.v3(SurfaceSlots::kNormal));
     const vec3 albedo = decode_gamma<GammaMode::kSquare>(sl::xyz(base)) * u.albedo_factor;
-    const vec3 light =
-        vec3(u.light_radiance) * sl::saturate(sl::dot(n, vec3(u.light_dir))) + vec3(u.ambient);
+    const auto visibility = key_visibility<L>(in, tex, u.lights, SurfaceSlots::kLight);
+    const vec3 light = lambert_irradiance<L>(n, vec3(visibility), u.lights);
     return vec4(encode_gamma<GammaMode::kSquare>(albedo * light), 1.0f);
   }
 };

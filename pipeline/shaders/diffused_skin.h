@@ -37,7 +37,8 @@ struct DiffusedSkinFS {
     } else {
       const vec4 buffer = tex.sample(B::kDiffusion, in.texcoord(SurfaceSlots::kUv));
       // Texels with no UV coverage nearby (alpha 0) fall back to the sharp light.
-      const vec3 sharp = vec3(u.light_radiance) * sl::saturate(s.n_dot_l) + vec3(u.ambient);
+      const vec3 sharp =
+          lambert_irradiance<L>(s.normal, tinted<L>(s.visibility, u.lights), u.lights);
       const vec3 diffused = sl::xyz(buffer) * sl::rcp(sl::max(sl::w(buffer), 1.0f / 255.0f));
       diffuse_light = sl::mix(sharp, diffused, sl::w(buffer));
     }

@@ -11,9 +11,7 @@ struct EyeFS {
   static constexpr const char* kName = "eye_fs";
   struct Uniforms {
     glm::vec3 eye{0.0f};
-    glm::vec3 light_dir{0.0f, 0.0f, 1.0f};
-    glm::vec3 light_radiance{1.0f};
-    glm::vec3 ambient{0.0f};
+    LightUniforms lights;
     glm::vec3 albedo_factor{1.0f};
     float cornea_f0 = 0.04f;  // water-like cornea, IOR ~1.38
     float highlight_power = 256.0f;
@@ -28,7 +26,8 @@ struct EyeFS {
     const vec4 base = tex.sample(kAlbedo, in.texcoord(SurfaceSlots::kUv));
     const vec3 n = sl::normalize(in.v3(SurfaceSlots::kNormal));
     const vec3 v = sl::normalize(vec3(u.eye) - in.v3(SurfaceSlots::kWorldPos));
-    const vec3 l(u.light_dir);
+    const auto visibility = key_visibility<L>(in, tex, u.lights, SurfaceSlots::kLight);
+    const vec3 l(u.lights.direction[0]);
     const vec3 h = sl::normalize(v + l);
     const vec3 r = sl::reflect(-v, n);
     const vec4 env = tex.sample_cube_lod(kEnvironment, r, 0.0f);
@@ -38,9 +37,9 @@ struct EyeFS {
     const auto fresnel = u.cornea_f0 + (1.0f - u.cornea_f0) * (one_minus2 * one_minus2 * one_minus);
     const auto highlight = sl::pow(sl::saturate(sl::dot(n, h)), u.highlight_power);
     const vec3 albedo = decode_gamma<GammaMode::kSquare>(sl::xyz(base)) * u.albedo_factor;
-    const vec3 diffuse =
-        albedo * (vec3(u.light_radiance) * sl::saturate(sl::dot(n, l)) + vec3(u.ambient));
-    const vec3 color = diffuse + vec3(u.light_radiance) * highlight + sl::xyz(env) * fresnel;
+    const vec3 diffuse = albedo * lambert_irradiance<L>(n, vec3(visibility), u.lights);
+    const vec3 color =
+        diffuse + vec3(u.lights.radiance[0]) * (highlight * visibility) + sl::xyz(env) * fresnel;
     return vec4(encode_gamma<GammaMode::kSquare>(color), 1.0f);
   }
 };

@@ -57,21 +57,32 @@ struct PreintegratedFS {
       curvature = dn * sl::rcp(sl::max(dp, 1e-6f)) * u.curvature_scale;
     }
 
-    const vec3 l(u.light_dir);
-    const f32 blur_n_dot_l = sl::dot(s.vertex_normal, l);
-    const f32 f0 = sl::saturate(1.0f - blur_n_dot_l);
-    const f32 f = f0 * f0;
-    const vec3 n_g = sl::normalize(sl::mix(s.normal, s.vertex_normal, f * 0.7f + 0.3f));
-    const vec3 n_b = sl::normalize(sl::mix(s.normal, s.vertex_normal, f));
-    // N.L in [-1, 1] -> u in [0, 1]; curvature row v (row 0 flat, at the top).
-    const auto lut_u = [](const f32& n_dot_l) { return n_dot_l * 0.5f + 0.5f; };
-    const vec4 red = tex.sample(B::kPreintegratedLut, vec2(lut_u(blur_n_dot_l), curvature));
-    const vec4 green = tex.sample(B::kPreintegratedLut, vec2(lut_u(sl::dot(n_g, l)), curvature));
-    const vec4 blue = tex.sample(B::kPreintegratedLut, vec2(lut_u(sl::dot(n_b, l)), curvature));
-    const vec3 scattered(sl::x(red), sl::y(green), sl::z(blue));
-
+    // The key light's visibility: through the penumbra-scattering LUT (Penner's shadow
+    // scattering: the penumbra widened and reddened by the profile, one dependent read), or
+    // tinted.
+    vec3 key_vis = tinted<L>(s.visibility, u.lights);
+    if (u.lights.shadows && u.shadow_scatter) {
+      const f32 lut_u = s.visibility * u.shadow_lut_scale + u.shadow_lut_offset;
+      key_vis = sl::xyz(tex.sample(LightBindings::kShadowLut, vec2(lut_u, 0.5f)));
+    }
+    vec3 diffuse_light = vec3(u.lights.ambient) +
+                         transmitted<L>(in, s.vertex_normal, u.lights, SurfaceSlots::kLight);
+    for (int i = 0; i < u.lights.count; ++i) {
+      const vec3 l(u.lights.direction[i]);
+      const f32 blur_n_dot_l = sl::dot(s.vertex_normal, l);
+      const f32 f0 = sl::saturate(1.0f - blur_n_dot_l);
+      const f32 f = f0 * f0;
+      const vec3 n_g = sl::normalize(sl::mix(s.normal, s.vertex_normal, f * 0.7f + 0.3f));
+      const vec3 n_b = sl::normalize(sl::mix(s.normal, s.vertex_normal, f));
+      // N.L in [-1, 1] -> u in [0, 1]; curvature row v (row 0 flat, at the top).
+      const auto lut_u = [](const f32& n_dot_l) { return n_dot_l * 0.5f + 0.5f; };
+      const vec4 red = tex.sample(B::kPreintegratedLut, vec2(lut_u(blur_n_dot_l), curvature));
+      const vec4 green = tex.sample(B::kPreintegratedLut, vec2(lut_u(sl::dot(n_g, l)), curvature));
+      const vec4 blue = tex.sample(B::kPreintegratedLut, vec2(lut_u(sl::dot(n_b, l)), curvature));
+      const vec3 scattered(sl::x(red), sl::y(green), sl::z(blue));
+      diffuse_light = diffuse_light + light_radiance<L>(i, key_vis, u.lights) * scattered;
+    }
     const Reflection<L> r = skin_specular<kSpec, L>(s, tex, u);
-    const vec3 diffuse_light = vec3(u.light_radiance) * scattered + vec3(u.ambient);
     const vec3 color = s.albedo * diffuse_light * r.diffuse_energy + r.light;
     return vec4(encode_gamma<kGamma>(color), 1.0f);
   }

@@ -34,25 +34,25 @@ struct QuadVS {
   }
 };
 
-// Normal-mapped irradiance of the key light plus ambient at a skin fragment.
+// Normal-mapped irradiance of the lights (the key light shadowed) plus ambient and the
+// transmitted light at a skin fragment.
 template <class L>
 typename L::vec3 skin_irradiance(const typename L::FragIn& in, typename L::TexUnit& tex,
-                                 int normal_map_unit, const glm::vec3& light_dir,
-                                 const glm::vec3& light_radiance, const glm::vec3& ambient) {
+                                 int normal_map_unit, const LightUniforms& lights) {
   using vec3 = typename L::vec3;
   const typename L::vec4 normal_map = tex.sample(normal_map_unit, in.texcoord(SurfaceSlots::kUv));
-  const vec3 n = normal_mapped<L>(sl::normalize(in.v3(SurfaceSlots::kNormal)),
-                                  in.v4(SurfaceSlots::kTangent), normal_map);
-  return vec3(light_radiance) * sl::saturate(sl::dot(n, vec3(light_dir))) + vec3(ambient);
+  const vec3 vertex_normal = sl::normalize(in.v3(SurfaceSlots::kNormal));
+  const vec3 n = normal_mapped<L>(vertex_normal, in.v4(SurfaceSlots::kTangent), normal_map);
+  const auto visibility = key_visibility<L>(in, tex, lights, SurfaceSlots::kLight);
+  return lambert_irradiance<L>(n, tinted<L>(visibility, lights), lights) +
+         transmitted<L>(in, vertex_normal, lights, SurfaceSlots::kLight);
 }
 
 struct DiffuseDepthFS {
   static constexpr const char* kName = "diffuse_depth_fs";
   struct Uniforms {
     glm::vec3 eye{0.0f};
-    glm::vec3 light_dir{0.0f, 0.0f, 1.0f};
-    glm::vec3 light_radiance{1.0f};
-    glm::vec3 ambient{0.0f};
+    LightUniforms lights;
     float mm_per_unit = 1.0f;
   };
   static constexpr int kNormalMap = 1;
@@ -61,8 +61,7 @@ struct DiffuseDepthFS {
                                    const Uniforms& u) {
     using vec3 = typename L::vec3;
     using vec4 = typename L::vec4;
-    const vec3 irradiance =
-        skin_irradiance<L>(in, tex, kNormalMap, u.light_dir, u.light_radiance, u.ambient);
+    const vec3 irradiance = skin_irradiance<L>(in, tex, kNormalMap, u.lights);
     const auto depth_mm = sl::length(vec3(u.eye) - in.v3(SurfaceSlots::kWorldPos)) * u.mm_per_unit;
     return vec4(irradiance, depth_mm);
   }
@@ -76,9 +75,7 @@ struct DiffuseDepthOrthoFS {
   struct Uniforms {
     glm::vec3 depth_axis{0.0f, 0.0f, -1.0f};  // view direction * mm per unit
     float depth_offset = 1.0f;                // mm
-    glm::vec3 light_dir{0.0f, 0.0f, 1.0f};
-    glm::vec3 light_radiance{1.0f};
-    glm::vec3 ambient{0.0f};
+    LightUniforms lights;
   };
   static constexpr int kNormalMap = DiffuseDepthFS::kNormalMap;
   template <class L>
@@ -86,8 +83,7 @@ struct DiffuseDepthOrthoFS {
                                    const Uniforms& u) {
     using vec3 = typename L::vec3;
     using vec4 = typename L::vec4;
-    const vec3 irradiance =
-        skin_irradiance<L>(in, tex, kNormalMap, u.light_dir, u.light_radiance, u.ambient);
+    const vec3 irradiance = skin_irradiance<L>(in, tex, kNormalMap, u.lights);
     const auto depth_mm =
         sl::dot(vec3(u.depth_axis), in.v3(SurfaceSlots::kWorldPos)) + u.depth_offset;
     return vec4(irradiance, depth_mm);

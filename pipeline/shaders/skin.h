@@ -30,7 +30,9 @@ struct SkinFS {
     const SkinSurface<L> s = skin_surface<L, kGamma>(in, tex, u);
     const vec4 buffer = tex.sample(SkinBindings::kIrradiance, in.screen_texcoord());
 
-    const vec3 sharp = vec3(u.light_radiance) * sl::saturate(s.n_dot_l) + vec3(u.ambient);
+    // Sharp light of every light (the key's shadowed, tinted) plus ambient; transmission is
+    // in the buffer, with the rest of the scattered light.
+    const vec3 sharp = lambert_irradiance<L>(s.normal, tinted<L>(s.visibility, u.lights), u.lights);
     // The buffer holds blurred light premultiplied by coverage a; where a < 1 (silhouettes)
     // the sharp light fills in: mix(sharp, blurred / a, layer_mix * a).
     const vec3 wide = vec3(u.layer_mix);
@@ -57,12 +59,17 @@ struct SkinLodFS {
     using vec4 = typename L::vec4;
     const SkinSurface<L> s = skin_surface<L, kGamma>(in, tex, u);
 
-    const vec3 l(u.light_dir);
     const vec3 n_r = sl::normalize(sl::mix(s.normal, s.vertex_normal, u.layer_mix.r));
     const vec3 n_g = sl::normalize(sl::mix(s.normal, s.vertex_normal, u.layer_mix.g));
     const vec3 n_b = sl::normalize(sl::mix(s.normal, s.vertex_normal, u.layer_mix.b));
-    const vec3 n_dot_l = sl::saturate(vec3(sl::dot(n_r, l), sl::dot(n_g, l), sl::dot(n_b, l)));
-    const vec3 diffuse_light = vec3(u.light_radiance) * n_dot_l + vec3(u.ambient);
+    const vec3 key_vis = tinted<L>(s.visibility, u.lights);
+    vec3 diffuse_light = vec3(u.lights.ambient) +
+                         transmitted<L>(in, s.vertex_normal, u.lights, SurfaceSlots::kLight);
+    for (int i = 0; i < u.lights.count; ++i) {
+      const vec3 l(u.lights.direction[i]);
+      const vec3 n_dot_l = sl::saturate(vec3(sl::dot(n_r, l), sl::dot(n_g, l), sl::dot(n_b, l)));
+      diffuse_light = diffuse_light + light_radiance<L>(i, key_vis, u.lights) * n_dot_l;
+    }
     const Reflection<L> r = skin_specular<kSpec, L>(s, tex, u);
     const vec3 color = s.albedo * diffuse_light * r.diffuse_energy + r.light;
     return vec4(encode_gamma<kGamma>(color), 1.0f);

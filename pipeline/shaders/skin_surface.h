@@ -1,7 +1,9 @@
 // What every skin shader starts with: three independent reads, in this order (albedo +
 // reflectivity and the normal map at the mesh UV, the cosine-filtered environment along
-// the vertex normal), and the per-pixel terms derived from them. Shaders that read more
-// textures read them after these, so every technique's skin pass fetches in the same order.
+// the vertex normal), the key light's shadow-map fetches when there are shadows (every skin
+// pass needs them: at least the specular is shadowed), and the per-pixel terms derived. Shaders
+// that read more textures read them after these, so every technique's skin pass fetches in the same
+// order.
 #pragma once
 
 #include "pipeline/shaders/gamma.h"
@@ -19,7 +21,8 @@ struct SkinSurface {
   typename L::vec3 view;
   typename L::vec3 albedo;  // linear
   typename L::f32 reflectivity;
-  typename L::f32 n_dot_l;  // signed, normal-mapped
+  typename L::f32 n_dot_l;     // key light, signed, normal-mapped
+  typename L::f32 visibility;  // of the key light (lights.h)
 };
 
 template <class L, GammaMode kGamma>
@@ -33,8 +36,9 @@ SkinSurface<L> skin_surface(const typename L::FragIn& in, typename L::TexUnit& t
   s.environment = tex.sample_cube(SkinBindings::kEnvironment, in.direction(SurfaceSlots::kNormal));
   s.vertex_normal = sl::normalize(in.v3(SurfaceSlots::kNormal));
   s.normal = normal_mapped<L>(s.vertex_normal, in.v4(SurfaceSlots::kTangent), normal_map);
+  s.visibility = key_visibility<L>(in, tex, u.lights, SurfaceSlots::kLight);
   s.view = sl::normalize(vec3(u.eye) - in.v3(SurfaceSlots::kWorldPos));
-  s.n_dot_l = sl::dot(s.normal, vec3(u.light_dir));
+  s.n_dot_l = sl::dot(s.normal, vec3(u.lights.direction[0]));
   s.albedo = decode_gamma<kGamma>(sl::xyz(base)) * u.albedo_factor;
   s.reflectivity = sl::w(base) * u.reflectivity;
   return s;

@@ -4,6 +4,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "pipeline/shaders/lights.h"
+
 namespace skinsim::pipeline::shaders {
 
 struct SkinBindings {
@@ -16,9 +18,7 @@ struct SkinBindings {
 
 struct SkinUniforms {
   glm::vec3 eye{0.0f};
-  glm::vec3 light_dir{0.0f, 0.0f, 1.0f};
-  glm::vec3 light_radiance{1.0f};
-  glm::vec3 ambient{0.0f};
+  LightUniforms lights;
   glm::vec3 albedo_factor{1.0f};
   glm::vec3 layer_mix{0.5f};  // fraction of each channel's diffuse light that scatters wide
   float reflectivity = 1.0f;

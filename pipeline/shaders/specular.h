@@ -27,9 +27,12 @@ namespace skinsim::pipeline::shaders {
 struct TechniqueUniforms : SkinUniforms {
   float lobe1_roughness = 0.3f;  // Beckmann m (GGX alpha)
   float lobe2_roughness = 0.6f;
-  float f0 = 0.028f;             // skin, IOR ~1.4
-  float wrap = 0.5f;             // wrap lighting amount
-  float curvature_scale = 1.0f;  // derivative curvature (1/world unit) -> pre-integrated LUT v
+  float f0 = 0.028f;              // skin, IOR ~1.4
+  float wrap = 0.5f;              // wrap lighting amount
+  float curvature_scale = 1.0f;   // derivative curvature (1/world unit) -> pre-integrated LUT v
+  bool shadow_scatter = false;    // pre-integrated: Penner's penumbra scattering LUT
+  float shadow_lut_scale = 1.0f;  // visibility -> LUT u (shadow_scatter_lut.h)
+  float shadow_lut_offset = 0.0f;
 };
 
 // A shader name assembled at compile time from parts ("wrap_fs" "_ggx" "_srgb").
@@ -63,7 +66,7 @@ constexpr const char* gamma_suffix(GammaMode g) {
 
 template <class L>
 struct Reflection {
-  typename L::vec3 light;          // key-light specular + environment rim light
+  typename L::vec3 light;          // the lights' specular + environment rim light
   typename L::f32 diffuse_energy;  // fraction of light entering the skin
 };
 
@@ -89,26 +92,34 @@ F schlick(float f0, const F& cos_theta) {
 }
 }  // namespace detail
 
+// The microfacet lobes' reflected light from one light (`radiance` already shadowed),
+// and, from the BRDF LUT read, the lobe-averaged Fresnel and diffuse energy at this N.V.
+template <class L>
+struct LobeLight {
+  typename L::vec3 light;
+  typename L::f32 fresnel;  // ks_lut only
+  typename L::f32 energy;   // ks_lut only
+};
+
 template <SpecularModel kSpec, class L>
-Reflection<L> skin_specular(const SkinSurface<L>& s, typename L::TexUnit& tex,
-                            const TechniqueUniforms& u) {
+LobeLight<L> lobe_light(const SkinSurface<L>& s, typename L::TexUnit& tex,
+                        const TechniqueUniforms& u, const typename L::vec3& l,
+                        const typename L::vec3& radiance) {
   using vec2 = typename L::vec2;
   using vec3 = typename L::vec3;
   using f32 = typename L::f32;
-  const vec3 half = sl::normalize(s.view + vec3(u.light_dir));
+  const vec3 half = sl::normalize(s.view + l);
   const f32 n_dot_h = sl::saturate(sl::dot(s.normal, half));
   const f32 n_dot_v = sl::saturate(sl::dot(s.normal, s.view));
-  const f32 n_dot_l = sl::saturate(s.n_dot_l);
-  const vec3 radiance(u.light_radiance);
-  Reflection<L> r;
+  const f32 n_dot_l = sl::saturate(sl::dot(s.normal, l));
+  LobeLight<L> r{vec3(0.0f), f32(0.0f), f32(0.0f)};
   if constexpr (kSpec == SpecularModel::kKsLut) {
     const auto lut = tex.sample_lod(SkinBindings::kBrdfLut, vec2(n_dot_h, n_dot_v), u.lut_lod);
     const f32 lobes = bake::decode_specular_lobe(sl::x(lut)) * u.lobe1_weight +
                       bake::decode_specular_lobe(sl::y(lut)) * u.lobe2_weight;
-    const f32 fresnel = bake::decode_fresnel(sl::z(lut));
-    r.light = radiance * (lobes * n_dot_l * u.specular_intensity * s.reflectivity) +
-              sl::xyz(s.environment) * (fresnel * s.reflectivity * u.environment_intensity);
-    r.diffuse_energy = bake::decode_diffuse_energy(sl::w(lut));
+    r.light = radiance * (lobes * n_dot_l * u.specular_intensity * s.reflectivity);
+    r.fresnel = bake::decode_fresnel(sl::z(lut));
+    r.energy = bake::decode_diffuse_energy(sl::w(lut));
     return r;
   } else {
     const f32 v_dot_h = sl::max(sl::dot(s.view, half), 1e-3f);
@@ -134,12 +145,36 @@ Reflection<L> skin_specular(const SkinSurface<L>& s, typename L::TexUnit& tex,
       lobe = pi_d * detail::ggx_visibility(n_dot_l, n_dot_v, 0.5f * (a1 + a2));
     }
     const f32 f_h = detail::schlick(u.f0, v_dot_h);
-    const f32 f_v = detail::schlick(u.f0, n_dot_v);
-    r.light = radiance * (lobe * f_h * n_dot_l * u.specular_intensity * s.reflectivity) +
-              sl::xyz(s.environment) * (f_v * s.reflectivity * u.environment_intensity);
-    r.diffuse_energy = 1.0f - f_v;
+    r.light = radiance * (lobe * f_h * n_dot_l * u.specular_intensity * s.reflectivity);
     return r;
   }
+}
+
+// Specular of every light (the key light's shadowed by the surface's visibility) plus the
+// environment rim light, and the diffuse energy term.
+template <SpecularModel kSpec, class L>
+Reflection<L> skin_specular(const SkinSurface<L>& s, typename L::TexUnit& tex,
+                            const TechniqueUniforms& u) {
+  using vec3 = typename L::vec3;
+  using f32 = typename L::f32;
+  const LightUniforms& lights = u.lights;
+  const LobeLight<L> key = lobe_light<kSpec, L>(s, tex, u, vec3(lights.direction[0]),
+                                                light_radiance<L>(0, vec3(s.visibility), lights));
+  Reflection<L> r;
+  r.light = key.light;
+  for (int i = 1; i < lights.count; ++i) {
+    r.light =
+        r.light +
+        lobe_light<kSpec, L>(s, tex, u, vec3(lights.direction[i]), vec3(lights.radiance[i])).light;
+  }
+  f32 fresnel = key.fresnel;
+  r.diffuse_energy = key.energy;
+  if constexpr (kSpec != SpecularModel::kKsLut) {
+    fresnel = detail::schlick(u.f0, sl::saturate(sl::dot(s.normal, s.view)));
+    r.diffuse_energy = 1.0f - fresnel;
+  }
+  r.light = r.light + sl::xyz(s.environment) * (fresnel * s.reflectivity * u.environment_intensity);
+  return r;
 }
 
 }  // namespace skinsim::pipeline::shaders

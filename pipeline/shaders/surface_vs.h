@@ -4,6 +4,7 @@
 
 #include <glm/glm.hpp>
 
+#include "pipeline/shaders/lights.h"
 #include "sim/shader_io.h"
 
 namespace skinsim::pipeline::shaders {
@@ -16,6 +17,9 @@ struct SurfaceSlots {
   static constexpr int kNormal = 3;
   static constexpr int kTangent = 6;  // xyz + bitangent sign
   static constexpr int kUv = 10;
+  static constexpr int kShadowCoord = 12;  // when the light needs it (lights.h)
+  static constexpr int kThickness = 15;
+  static constexpr LightVaryings kLight{kShadowCoord, kThickness};
 };
 
 struct SurfaceVS {
@@ -23,6 +27,7 @@ struct SurfaceVS {
   struct Uniforms {
     glm::mat4 view_proj{1.0f};
     float normal_offset = 0.0f;  // world units to push along the normal (irradiance pass)
+    LightVertexUniforms light;
   };
   template <class L>
   static void vertex(const typename L::VertexIn& in, typename L::VertexOut& out,
@@ -35,12 +40,15 @@ struct SurfaceVS {
     out.set(SurfaceSlots::kNormal, n);
     out.set(SurfaceSlots::kTangent, in.tangent());
     out.set(SurfaceSlots::kUv, in.uv());
+    write_light_varyings<L>(in, out, u.light, p, n, SurfaceSlots::kLight);
   }
 };
 
-// Position-and-normal-only variant (the irradiance pass needs no UV or tangent).
+// Position-and-normal-only variant (the irradiance pass needs no UV or tangent): the
+// normal in slot 0, then what the light needs.
 struct PositionNormalVS {
   static constexpr const char* kName = "position_normal_vs";
+  static constexpr LightVaryings kLight{3, 6};
   using Uniforms = SurfaceVS::Uniforms;
   template <class L>
   static void vertex(const typename L::VertexIn& in, typename L::VertexOut& out,
@@ -50,6 +58,30 @@ struct PositionNormalVS {
     const auto p = in.position() + n * u.normal_offset;
     out.position = u.view_proj * vec4(p, 1.0f);
     out.set(0, n);
+    write_light_varyings<L>(in, out, u.light, p, n, kLight);
+  }
+};
+
+// The irradiance pass's dilation draw: PositionNormalVS (vertices pushed along the normal)
+// with the depth squeezed into [kDilationDepthNear, 1) (glDepthRangef(kDilationDepthNear, 1)
+// on GLES2), so the pushed copy only fills pixels no skin covers (the silhouette ring against
+// the background) and never grows one skin surface over another (the nose over the upper
+// lip, the jaw over the neck), which drew a cyan halo there (docs/techniques.md, mobile).
+inline constexpr float kDilationDepthNear = 0.9998f;
+
+struct DilatedPositionNormalVS {
+  static constexpr const char* kName = "dilated_position_normal_vs";
+  using Uniforms = SurfaceVS::Uniforms;
+  template <class L>
+  static void vertex(const typename L::VertexIn& in, typename L::VertexOut& out,
+                     const Uniforms& u) {
+    using vec4 = typename L::vec4;
+    PositionNormalVS::vertex<L>(in, out, u);
+    const vec4 c = out.position;
+    // ndc z' = near + k (1 + ndc z), in [near, near + 2k]: behind every undilated surface.
+    constexpr float k = (1.0f - kDilationDepthNear) * 0.25f;
+    out.position =
+        vec4(sl::x(c), sl::y(c), sl::w(c) * (kDilationDepthNear + k) + sl::z(c) * k, sl::w(c));
   }
 };
 

@@ -18,12 +18,16 @@ namespace skinsim::pipeline::shaders {
 
 struct UvSpaceVS {
   static constexpr const char* kName = "uv_space_vs";
-  struct Uniforms {};
+  struct Uniforms {
+    LightVertexUniforms light;
+  };
   static constexpr int kNormal = 0;
   static constexpr int kTangent = 3;
   static constexpr int kUv = 7;
+  static constexpr LightVaryings kLight{9, 12};
   template <class L>
-  static void vertex(const typename L::VertexIn& in, typename L::VertexOut& out, const Uniforms&) {
+  static void vertex(const typename L::VertexIn& in, typename L::VertexOut& out,
+                     const Uniforms& u) {
     using vec4 = typename L::vec4;
     const auto uv = in.uv();
     // Texture rows grow downwards (v = 0 at the top), clip y upwards.
@@ -31,15 +35,14 @@ struct UvSpaceVS {
     out.set(kNormal, in.normal());
     out.set(kTangent, in.tangent());
     out.set(kUv, uv);
+    write_light_varyings<L>(in, out, u.light, in.position(), in.normal(), kLight);
   }
 };
 
 struct UvIrradianceFS {
   static constexpr const char* kName = "uv_irradiance_fs";
   struct Uniforms {
-    glm::vec3 light_dir{0.0f, 0.0f, 1.0f};
-    glm::vec3 light_radiance{1.0f};
-    glm::vec3 ambient{0.0f};
+    LightUniforms lights;
   };
   static constexpr int kNormalMap = 1;
   template <class L>
@@ -48,10 +51,11 @@ struct UvIrradianceFS {
     using vec3 = typename L::vec3;
     using vec4 = typename L::vec4;
     const vec4 normal_map = tex.sample(kNormalMap, in.texcoord(UvSpaceVS::kUv));
-    const vec3 n = normal_mapped<L>(sl::normalize(in.v3(UvSpaceVS::kNormal)),
-                                    in.v4(UvSpaceVS::kTangent), normal_map);
-    const vec3 irradiance =
-        vec3(u.light_radiance) * sl::saturate(sl::dot(n, vec3(u.light_dir))) + vec3(u.ambient);
+    const vec3 vertex_normal = sl::normalize(in.v3(UvSpaceVS::kNormal));
+    const vec3 n = normal_mapped<L>(vertex_normal, in.v4(UvSpaceVS::kTangent), normal_map);
+    const auto visibility = key_visibility<L>(in, tex, u.lights, UvSpaceVS::kLight);
+    const vec3 irradiance = lambert_irradiance<L>(n, tinted<L>(visibility, u.lights), u.lights) +
+                            transmitted<L>(in, vertex_normal, u.lights, UvSpaceVS::kLight);
     return vec4(irradiance, 1.0f);
   }
 };

@@ -19,9 +19,15 @@ struct WrapFS {
     using vec3 = typename L::vec3;
     using vec4 = typename L::vec4;
     const SkinSurface<L> s = skin_surface<L, kGamma>(in, tex, u);
-    const auto wrapped = sl::saturate((s.n_dot_l + u.wrap) * (1.0f / (1.0f + u.wrap)));
+    const vec3 key_vis = tinted<L>(s.visibility, u.lights);
+    vec3 diffuse_light = vec3(u.lights.ambient) +
+                         transmitted<L>(in, s.vertex_normal, u.lights, SurfaceSlots::kLight);
+    for (int i = 0; i < u.lights.count; ++i) {
+      const auto n_dot_l = sl::dot(s.normal, vec3(u.lights.direction[i]));
+      const auto wrapped = sl::saturate((n_dot_l + u.wrap) * (1.0f / (1.0f + u.wrap)));
+      diffuse_light = diffuse_light + light_radiance<L>(i, key_vis, u.lights) * wrapped;
+    }
     const Reflection<L> r = skin_specular<kSpec, L>(s, tex, u);
-    const vec3 diffuse_light = vec3(u.light_radiance) * wrapped + vec3(u.ambient);
     const vec3 color = s.albedo * diffuse_light * r.diffuse_energy + r.light;
     return vec4(encode_gamma<kGamma>(color), 1.0f);
   }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "pipeline/config.h"
+#include "pipeline/frame_lights.h"
 #include "pipeline/gpu_scene.h"
 #include "pipeline/shaders/diffused_skin.h"
 #include "sim/gpu.h"
@@ -10,7 +11,8 @@
 namespace skinsim::pipeline {
 
 sim::PassCounters diffused_skin_pass(const GpuScene& scene, const View& view,
-                                     const PipelineConfig& config, shaders::DiffusionSource source,
+                                     const PipelineConfig& config, const FrameLights& lights,
+                                     shaders::DiffusionSource source,
                                      const sim::RenderTarget& diffused, sim::RenderTarget& frame,
                                      sim::Gpu& gpu);
 

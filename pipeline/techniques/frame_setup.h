@@ -13,7 +13,7 @@ namespace skinsim::pipeline {
 
 inline FrameOutput start_frame(const GpuScene& scene, const PipelineConfig& config) {
   FrameOutput out;
-  out.view = make_view(scene, config.width, config.height);
+  out.view = make_view(scene, config);
   out.frame = sim::RenderTarget("frame", config.width, config.height, sim::TexelFormat::kRGBA8);
   return out;
 }

@@ -21,10 +21,10 @@ sim::RenderTarget screen_buffer(const char* name, const PipelineConfig& cfg) {
   return sim::RenderTarget(name, cfg.width, cfg.height, sim::TexelFormat::kRGBA16F);
 }
 
-sim::PassCounters diffuse_pass(const GpuScene& gs, const View& view, sim::RenderTarget& target,
-                               sim::Gpu& gpu) {
-  const SceneLighting light = scene_lighting(gs.scene());
-  auto vs = sim::make_vertex_program<shaders::SurfaceVS>({view.view_proj, 0.0f});
+sim::PassCounters diffuse_pass(const GpuScene& gs, const View& view, const FrameLights& lights,
+                               sim::RenderTarget& target, sim::Gpu& gpu) {
+  auto vs = sim::make_vertex_program<shaders::SurfaceVS>(
+      {view.view_proj, 0.0f, lights.vertex_uniforms(Transmission::kComputedHere)});
   const float mm_per_unit = 1.0f / gs.scene().units_per_mm;
   std::shared_ptr<const sim::FragmentProgram> fs;
   if (view.orthographic) {
@@ -32,11 +32,10 @@ sim::PassCounters diffuse_pass(const GpuScene& gs, const View& view, sim::Render
     const float near_plane_mm =
         (glm::dot(view.forward, view.camera_position) + gs.scene().camera.znear) * mm_per_unit;
     fs = sim::make_fragment_program<shaders::DiffuseDepthOrthoFS>(
-        {view.forward * mm_per_unit, 1.0f - near_plane_mm, light.light_dir, light.light_radiance,
-         light.ambient});
+        {view.forward * mm_per_unit, 1.0f - near_plane_mm, lights.uniforms()});
   } else {
     fs = sim::make_fragment_program<shaders::DiffuseDepthFS>(
-        {view.eye, light.light_dir, light.light_radiance, light.ambient, mm_per_unit});
+        {view.eye, lights.uniforms(), mm_per_unit});
   }
   sim::RenderPassDesc pass;
   pass.name = "diffuse";
@@ -50,6 +49,7 @@ sim::PassCounters diffuse_pass(const GpuScene& gs, const View& view, sim::Render
     d.vertex_program = vs;
     d.fragment_program = fs;
     d.textures.textures[shaders::DiffuseDepthFS::kNormalMap] = mat.normal;
+    lights.bind(d);
     pass.draws.push_back(d);
   }
   return gpu.execute(pass);
@@ -80,10 +80,10 @@ sim::PassCounters kernel_pass(const std::string& name,
 }
 
 void finish_screen_diffusion_frame(const GpuScene& gs, const PipelineConfig& cfg,
-                                   sim::RenderTarget diffuse, sim::RenderTarget diffused,
-                                   FrameOutput& out, sim::Gpu& gpu) {
-  out.passes.push_back(diffused_skin_pass(gs, out.view, cfg, shaders::DiffusionSource::kScreen,
-                                          diffused, out.frame, gpu));
+                                   const FrameLights& lights, sim::RenderTarget diffuse,
+                                   sim::RenderTarget diffused, FrameOutput& out, sim::Gpu& gpu) {
+  out.passes.push_back(diffused_skin_pass(
+      gs, out.view, cfg, lights, shaders::DiffusionSource::kScreen, diffused, out.frame, gpu));
   out.intermediates.push_back({"diffuse", std::move(diffuse), kScreenBufferDisplayScale});
   out.intermediates.push_back({"diffused", std::move(diffused), kScreenBufferDisplayScale});
 }

@@ -9,6 +9,7 @@
 
 #include "pipeline/config.h"
 #include "pipeline/frame.h"
+#include "pipeline/frame_lights.h"
 #include "pipeline/gpu_scene.h"
 #include "pipeline/shaders/screen_diffusion.h"
 #include "sim/gpu.h"
@@ -22,8 +23,8 @@ inline constexpr float kScreenBufferDisplayScale = 0.5f;
 // (EXT_color_buffer_half_float, available on the SGX under iOS).
 sim::RenderTarget screen_buffer(const char* name, const PipelineConfig& cfg);
 
-sim::PassCounters diffuse_pass(const GpuScene& gs, const View& view, sim::RenderTarget& target,
-                               sim::Gpu& gpu);
+sim::PassCounters diffuse_pass(const GpuScene& gs, const View& view, const FrameLights& lights,
+                               sim::RenderTarget& target, sim::Gpu& gpu);
 
 shaders::ScreenKernelUniforms kernel_uniforms(const View& view, float units_per_mm);
 
@@ -37,8 +38,8 @@ std::shared_ptr<const sim::FragmentProgram> kernel_program(const View& view, con
 // The end of a screen-space diffusion frame: the `skin` render reading `diffused`, and both
 // buffers kept as intermediates for viewing.
 void finish_screen_diffusion_frame(const GpuScene& gs, const PipelineConfig& cfg,
-                                   sim::RenderTarget diffuse, sim::RenderTarget diffused,
-                                   FrameOutput& out, sim::Gpu& gpu);
+                                   const FrameLights& lights, sim::RenderTarget diffuse,
+                                   sim::RenderTarget diffused, FrameOutput& out, sim::Gpu& gpu);
 
 // The programs every screen-space diffusion technique runs besides its kernel: the diffuse
 // pass (perspective and orthographic), the kernel quad's vertex shader and the skin render.

@@ -10,18 +10,11 @@ namespace skinsim::pipeline {
 
 using scene::MaterialKind;
 
-SceneLighting scene_lighting(const scene::Scene& s) {
-  return {glm::normalize(s.key_light.direction), s.key_light.radiance, s.ambient};
-}
-
-shaders::TechniqueUniforms technique_uniforms(const GpuScene& gs, const View& view,
-                                              const PipelineConfig& cfg, const GpuMaterial& mat) {
-  const SceneLighting light = scene_lighting(gs.scene());
+shaders::TechniqueUniforms technique_uniforms(const View& view, const PipelineConfig& cfg,
+                                              const FrameLights& lights, const GpuMaterial& mat) {
   shaders::TechniqueUniforms u;
   u.eye = view.eye;
-  u.light_dir = light.light_dir;
-  u.light_radiance = light.light_radiance;
-  u.ambient = light.ambient;
+  u.lights = lights.uniforms();
   u.albedo_factor = glm::vec3(mat.base_color_factor);
   u.layer_mix = skin_layer_split().wide_fraction;
   u.reflectivity = mat.reflectivity;
@@ -36,10 +29,12 @@ shaders::TechniqueUniforms technique_uniforms(const GpuScene& gs, const View& vi
 }
 
 sim::PassCounters skin_framebuffer_pass(const GpuScene& gs, const View& view,
+                                        const FrameLights& lights, Transmission transmission,
                                         const SkinShading& shading, sim::RenderTarget& frame,
                                         sim::Gpu& gpu) {
-  const SceneLighting light = scene_lighting(gs.scene());
-  auto vs = sim::make_vertex_program<shaders::SurfaceVS>({view.view_proj, 0.0f});
+  // Eyes and background share the skin's vertex program (one program for the render).
+  auto vs = sim::make_vertex_program<shaders::SurfaceVS>(
+      {view.view_proj, 0.0f, lights.vertex_uniforms(transmission)});
   sim::RenderPassDesc pass;
   pass.name = "skin";
   pass.color = &frame;
@@ -54,15 +49,14 @@ sim::PassCounters skin_framebuffer_pass(const GpuScene& gs, const View& view,
       d.vertex_program = vs;
       const glm::vec3 factor(mat.base_color_factor);
       d.textures.textures[shaders::TechniqueBindings::kAlbedo] = mat.base_color;
+      lights.bind(d);
       if (kind == MaterialKind::kOther) {
-        d.fragment_program = sim::make_fragment_program<shaders::BackgroundFS>(
-            {light.light_dir, light.light_radiance, light.ambient, factor});
+        d.fragment_program =
+            sim::make_fragment_program<shaders::BackgroundFS>({lights.uniforms(), factor});
       } else if (kind == MaterialKind::kEye) {
         shaders::EyeFS::Uniforms u;
         u.eye = view.eye;
-        u.light_dir = light.light_dir;
-        u.light_radiance = light.light_radiance;
-        u.ambient = light.ambient;
+        u.lights = lights.uniforms();
         u.albedo_factor = factor;
         d.fragment_program = sim::make_fragment_program<shaders::EyeFS>(u);
         d.textures.cubes[shaders::EyeFS::kEnvironment] = &gs.environment();

@@ -8,21 +8,17 @@
 #include <memory>
 
 #include "pipeline/config.h"
+#include "pipeline/frame_lights.h"
 #include "pipeline/gpu_scene.h"
 #include "pipeline/shaders/specular.h"
 #include "sim/gpu.h"
 
 namespace skinsim::pipeline {
 
-struct SceneLighting {
-  glm::vec3 light_dir, light_radiance, ambient;
-};
-SceneLighting scene_lighting(const scene::Scene& scene);
-
-// The skin shaders' uniforms for one material: lighting, eye, albedo factor, the layer
-// split, the config's specular lobes and intensity, and the technique knobs.
-shaders::TechniqueUniforms technique_uniforms(const GpuScene& scene, const View& view,
-                                              const PipelineConfig& config,
+// The skin shaders' uniforms for one material: the frame's lights, eye, albedo factor, the
+// layer split, the config's specular lobes and intensity, and the technique knobs.
+shaders::TechniqueUniforms technique_uniforms(const View& view, const PipelineConfig& config,
+                                              const FrameLights& lights,
                                               const GpuMaterial& material);
 
 // Sets a skin draw's fragment program and its textures beyond albedo, normal map and
@@ -30,6 +26,7 @@ shaders::TechniqueUniforms technique_uniforms(const GpuScene& scene, const View&
 using SkinShading = std::function<void(const GpuMaterial&, sim::DrawCall&)>;
 
 sim::PassCounters skin_framebuffer_pass(const GpuScene& scene, const View& view,
+                                        const FrameLights& lights, Transmission transmission,
                                         const SkinShading& shading, sim::RenderTarget& frame,
                                         sim::Gpu& gpu);
 

@@ -47,7 +47,7 @@ budgets = write("abs.toml", SMALL + '"frame.ms" = "<= 1000"\n"skin.ms" = "<= 0.0
 junit = WORK / "abs.xml"
 code, out, err = run("check", budgets, "--junit", str(junit), "--threads", "2")
 expect(code == 1, f"a failing limit exits 1, got {code}", out + err)
-expect("FAIL small / skin.ms" in out and "alu-bound" in out, "failure message in the table", out)
+expect("FAIL small / skin.ms" in out and "-bound (" in out, "failure message in the table", out)
 root = ET.parse(junit).getroot()
 cases = root.findall(".//testcase")
 expect(len(cases) == 3, f"one testcase per limit, got {len(cases)}")

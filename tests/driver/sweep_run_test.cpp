@@ -96,9 +96,10 @@ TEST(SweepRun, WritesOneRowPerConfigurationWithCostAndQuality) {
     EXPECT_TRUE(fs::exists(dir / r.error_image)) << r.error_image;
   }
   // A quarter-size integration buffer stores fewer tiles than a half-size one.
-  ASSERT_EQ(read.rows[0].passes.front().name, "irradiance");
-  EXPECT_LT(read.rows[1].passes.front().dram_bytes_by_cause.at("color_store"),
-            read.rows[0].passes.front().dram_bytes_by_cause.at("color_store"));
+  ASSERT_EQ(read.rows[0].passes.at(0).name, "shadow");
+  ASSERT_EQ(read.rows[0].passes.at(1).name, "irradiance");
+  EXPECT_LT(read.rows[1].passes.at(1).dram_bytes_by_cause.at("color_store"),
+            read.rows[0].passes.at(1).dram_bytes_by_cause.at("color_store"));
   ASSERT_TRUE(read.heatmap.has_value());
   EXPECT_EQ(read.heatmap->pass_name, "skin");
   EXPECT_EQ(read.heatmap->tiles_x, 8);

@@ -16,9 +16,15 @@ namespace {
 using testing::centre_mean;
 using testing::render;
 using testing::skin_draw;
-using testing::small_config;
 
 constexpr const char* kAnalytic[] = {"ks", "ggx", "dual_ggx"};
+
+// The key light alone (no back light), so that one BRDF LUT read is the whole specular.
+PipelineConfig small_config(const std::string& technique) {
+  PipelineConfig c = testing::small_config(technique);
+  set_config_field(c, "back_light", "0");
+  return c;
+}
 
 PipelineConfig with(PipelineConfig c, const std::string& key, const std::string& value) {
   set_config_field(c, key, value);

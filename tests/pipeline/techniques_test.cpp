@@ -52,18 +52,21 @@ TEST_P(TechniqueFrame, PassesShadingAndReads) {
 INSTANTIATE_TEST_SUITE_P(
     All, TechniqueFrame,
     ::testing::Values(
-        // albedo, normal, env, curvature; 3 pre-integrated LUT reads + the BRDF LUT
-        Expected{"preintegrated", {"skin"}, "preintegrated_fs", 4, 4},
-        Expected{"wrap", {"skin"}, "wrap_fs", 3, 1},
-        Expected{"burley", {"diffuse", "sss", "skin"}, "diffused_skin_fs", 4, 1},
-        Expected{"ssss", {"diffuse", "sss_h", "sss_v", "skin"}, "diffused_skin_fs", 4, 1},
+        // The built-in head's lights: a shadowed key light and a back light. Every skin
+        // pass reads albedo, normal, environment and the key light's shadow map (one
+        // hardware-PCF fetch, from a varying), and per light the BRDF LUT.
+        // preintegrated: + curvature; 3 pre-integrated LUT reads per light + the penumbra LUT
+        Expected{"preintegrated", {"shadow", "skin"}, "preintegrated_fs", 5, 9},
+        Expected{"wrap", {"shadow", "skin"}, "wrap_fs", 4, 2},
+        Expected{"burley", {"shadow", "diffuse", "sss", "skin"}, "diffused_skin_fs", 5, 2},
+        Expected{"ssss", {"shadow", "diffuse", "sss_h", "sss_v", "skin"}, "diffused_skin_fs", 5, 2},
         Expected{"texture-space",
-                 {"uv_irradiance", "uv_blur_1_h", "uv_blur_1_v", "uv_blur_2_h", "uv_blur_2_v",
-                  "uv_blur_3_h", "uv_blur_3_v", "uv_blur_4_h", "uv_blur_4_v", "uv_blur_5_h",
-                  "uv_blur_5_v", "uv_combine", "skin"},
+                 {"shadow", "uv_irradiance", "uv_blur_1_h", "uv_blur_1_v", "uv_blur_2_h",
+                  "uv_blur_2_v", "uv_blur_3_h", "uv_blur_3_v", "uv_blur_4_h", "uv_blur_4_v",
+                  "uv_blur_5_h", "uv_blur_5_v", "uv_combine", "skin"},
                  "uv_diffused_skin_fs",
-                 4,
-                 1}),
+                 5,
+                 2}),
     [](const ::testing::TestParamInfo<Expected>& param) {
       std::string name = param.param.technique;
       std::replace(name.begin(), name.end(), '-', '_');
@@ -101,8 +104,8 @@ TEST(TechniqueReads, DerivativeCurvatureReplacesTheCurvatureTexture) {
   const FrameOutput out = render(c);
   const sim::DrawCounters& skin = skin_draw(out);
   EXPECT_EQ(skin.fragment_program, "preintegrated_fs_derivatives");
-  EXPECT_EQ(skin.fragment_profile.texture_reads_independent, 3u);
-  EXPECT_EQ(skin.fragment_profile.texture_reads_dependent, 4u);
+  EXPECT_EQ(skin.fragment_profile.texture_reads_independent, 4u);
+  EXPECT_EQ(skin.fragment_profile.texture_reads_dependent, 9u);
 }
 
 TEST(TechniqueCost, TextureSpaceTrafficGrowsWithTheTextureSize) {

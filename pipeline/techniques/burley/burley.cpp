@@ -15,11 +15,12 @@ namespace skinsim::pipeline {
 
 namespace {
 
-FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, sim::Gpu& gpu) {
+FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLights& lights,
+                   sim::Gpu& gpu) {
   FrameOutput out = start_frame(gs, cfg);
   sim::RenderTarget diffuse = screen_buffer("diffuse", cfg);
   sim::RenderTarget diffused = screen_buffer("diffused", cfg);
-  out.passes.push_back(diffuse_pass(gs, out.view, diffuse, gpu));
+  out.passes.push_back(diffuse_pass(gs, out.view, lights, diffuse, gpu));
   if (out.view.skin_visible) {
     const BurleyKernel kernel =
         burley_kernel(cfg.burley_samples, cfg.burley_distance_mm.value_or(burley_distance_fit()));
@@ -32,7 +33,7 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, sim::Gpu& gpu)
     out.passes.push_back(kernel_pass("sss", kernel_program<shaders::BurleyFSFor>(out.view, u),
                                      diffuse, diffused, out.view, gpu));
   }
-  finish_screen_diffusion_frame(gs, cfg, std::move(diffuse), std::move(diffused), out, gpu);
+  finish_screen_diffusion_frame(gs, cfg, lights, std::move(diffuse), std::move(diffused), out, gpu);
   return out;
 }
 
@@ -47,36 +48,6 @@ std::vector<sim::NamedProfile> programs() {
   return list;
 }
 
-KnobSpec distance_knob() {
-  KnobSpec k;
-  k.name = "burley_distance_mm";
-  k.flag = "--burley-distance-mm";
-  k.values = "r,g,b in [0.01, 20] mm, or auto";
-  k.help = "Burley scattering distance per channel (auto: fitted to the six-Gaussian profile)";
-  k.set = [](PipelineConfig& c, const std::string& text) {
-    if (text == "auto") {
-      c.burley_distance_mm.reset();
-    } else {
-      c.burley_distance_mm = parse_knob_rgb("burley_distance_mm", text);
-    }
-  };
-  k.get = [](const PipelineConfig& c) {
-    if (!c.burley_distance_mm) return std::string("auto");
-    const glm::vec3 d = *c.burley_distance_mm;
-    return fmt::format("{},{},{}", d.r, d.g, d.b);
-  };
-  k.invalid = [](const PipelineConfig& c) -> std::string {
-    if (!c.burley_distance_mm) return "";
-    const glm::vec3 d = *c.burley_distance_mm;
-    const Interval range{0.01, 20.0};
-    if (range.contains(d.r) && range.contains(d.g) && range.contains(d.b)) return "";
-    return fmt::format(
-        "burley_distance_mm must be in [0.01, 20] mm per channel, got {:g},{:g},{:g}", d.r, d.g,
-        d.b);
-  };
-  return k;
-}
-
 }  // namespace
 
 const TechniqueSpec& burley_technique() {
@@ -86,7 +57,10 @@ const TechniqueSpec& burley_technique() {
       .summary = "Burley normalized diffusion in screen space, importance-sampled (Golubev 2018)",
       .knobs = {integer_knob("burley_samples", "--burley-samples", "Burley diffusion taps",
                              &PipelineConfig::burley_samples, 4, kMaxBurleySamples),
-                distance_knob()},
+                optional_rgb_knob("burley_distance_mm", "--burley-distance-mm",
+                                  "Burley scattering distance per channel in mm (auto: fitted to "
+                                  "the six-Gaussian profile)",
+                                  &PipelineConfig::burley_distance_mm, {0.01, 20.0})},
       .render = render,
       .shaders = programs,
   };

@@ -8,8 +8,9 @@ namespace skinsim::pipeline {
 
 namespace {
 
-FrameOutput render(const GpuScene& scene, const PipelineConfig& config, sim::Gpu& gpu) {
-  return render_mobile_frame(scene, config, gpu, MobileMode::kForceLod);
+FrameOutput render(const GpuScene& scene, const PipelineConfig& config, const FrameLights& lights,
+                   sim::Gpu& gpu) {
+  return render_mobile_frame(scene, config, lights, gpu, MobileMode::kForceLod);
 }
 
 std::vector<sim::NamedProfile> programs() {

@@ -13,14 +13,16 @@ namespace skinsim::pipeline {
 
 namespace {
 
-FrameOutput render(const GpuScene& scene, const PipelineConfig& config, sim::Gpu& gpu) {
-  return render_mobile_frame(scene, config, gpu, MobileMode::kAuto);
+FrameOutput render(const GpuScene& scene, const PipelineConfig& config, const FrameLights& lights,
+                   sim::Gpu& gpu) {
+  return render_mobile_frame(scene, config, lights, gpu, MobileMode::kAuto);
 }
 
 std::vector<sim::NamedProfile> programs() {
   using namespace pipeline::shaders;
-  std::vector<sim::NamedProfile> s = {vertex_entry<PositionNormalVS>(), vertex_entry<BlurVS>(),
-                                      fragment_entry<IrradianceFS>(), fragment_entry<BlurFS>()};
+  std::vector<sim::NamedProfile> s = {
+      vertex_entry<PositionNormalVS>(), vertex_entry<DilatedPositionNormalVS>(),
+      vertex_entry<BlurVS>(), fragment_entry<IrradianceFS>(), fragment_entry<BlurFS>()};
   for (const auto& v : specular_variants<SkinFS>()) s.push_back(v);
   s.push_back(fragment_entry<SkinFS<GammaMode::kSrgb, SpecularModel::kKsLut>>());
   for (const auto& v : specular_variants<SkinLodFS>()) s.push_back(v);  // at LOD distance

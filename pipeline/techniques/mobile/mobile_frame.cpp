@@ -27,12 +27,16 @@ sim::PixelRect scale_rect(const sim::PixelRect& r, float sx, float sy, int w, in
 }
 
 sim::PassCounters irradiance_pass(const GpuScene& gs, const View& view, const PipelineConfig& cfg,
-                                  sim::RenderTarget& buffer, sim::Gpu& gpu) {
-  const SceneLighting light = scene_lighting(gs.scene());
+                                  const FrameLights& lights, sim::RenderTarget& buffer,
+                                  sim::Gpu& gpu) {
   const float offset = cfg.normal_offset_mm * gs.scene().units_per_mm;
-  auto vs = sim::make_vertex_program<shaders::PositionNormalVS>({view.view_proj, offset});
-  auto fs = sim::make_fragment_program<shaders::IrradianceFS>(
-      {light.light_dir, light.light_radiance, light.ambient});
+  // The skin at its true position and depth decides every pixel it covers; the normal offset
+  // only dilates coverage into the background, in a second draw behind all skin.
+  const shaders::LightVertexUniforms light = lights.vertex_uniforms(Transmission::kComputedHere);
+  auto vs = sim::make_vertex_program<shaders::PositionNormalVS>({view.view_proj, 0.0f, light});
+  auto dilated_vs =
+      sim::make_vertex_program<shaders::DilatedPositionNormalVS>({view.view_proj, offset, light});
+  auto fs = sim::make_fragment_program<shaders::IrradianceFS>({lights.uniforms()});
   sim::RenderPassDesc pass;
   pass.name = "irradiance";
   pass.color = &buffer;
@@ -43,17 +47,23 @@ sim::PassCounters irradiance_pass(const GpuScene& gs, const View& view, const Pi
     d.geometry = m.geometry;
     d.vertex_program = vs;
     d.fragment_program = fs;
+    lights.bind(d);
     pass.draws.push_back(d);
+    if (offset > 0.0f) {
+      d.vertex_program = dilated_vs;
+      pass.draws.push_back(d);
+    }
   }
   return gpu.execute(pass);
 }
 
 sim::PassCounters framebuffer_pass(const GpuScene& gs, const View& view, const PipelineConfig& cfg,
+                                   const FrameLights& lights,
                                    const std::shared_ptr<const BrdfLutTexture>& lut,
                                    const sim::Texture2D* irradiance, bool lod,
                                    sim::RenderTarget& frame, sim::Gpu& gpu) {
   const auto shading = [&](const GpuMaterial& mat, sim::DrawCall& d) {
-    const shaders::TechniqueUniforms u = technique_uniforms(gs, view, cfg, mat);
+    const shaders::TechniqueUniforms u = technique_uniforms(view, cfg, lights, mat);
     d.fragment_program = with_gamma_and_specular(cfg, [&](auto gamma, auto spec) {
       if (lod) return sim::make_fragment_program<shaders::SkinLodFS<gamma(), spec()>>(u);
       return sim::make_fragment_program<shaders::SkinFS<gamma(), spec()>>(u);
@@ -61,16 +71,19 @@ sim::PassCounters framebuffer_pass(const GpuScene& gs, const View& view, const P
     d.textures.textures[shaders::SkinBindings::kIrradiance] = irradiance;
     bind_brdf_lut(lut, d);
   };
-  return skin_framebuffer_pass(gs, view, shading, frame, gpu);
+  // The LOD shader computes transmission itself; otherwise it is in the buffer.
+  return skin_framebuffer_pass(gs, view, lights,
+                               lod ? Transmission::kComputedHere : Transmission::kComputedElsewhere,
+                               shading, frame, gpu);
 }
 
 }  // namespace
 
-FrameOutput render_mobile_frame(const GpuScene& gs, const PipelineConfig& cfg, sim::Gpu& gpu,
-                                MobileMode mode) {
+FrameOutput render_mobile_frame(const GpuScene& gs, const PipelineConfig& cfg,
+                                const FrameLights& lights, sim::Gpu& gpu, MobileMode mode) {
   const std::shared_ptr<const BrdfLutTexture> lut = brdf_lut_for(cfg);
   FrameOutput out;
-  out.view = make_view(gs, cfg.width, cfg.height);
+  out.view = make_view(gs, cfg);
   out.frame = sim::RenderTarget("frame", cfg.width, cfg.height, sim::TexelFormat::kRGBA8);
   const float units_per_m = gs.scene().units_per_mm * 1000.0f;
   const bool lod = mode == MobileMode::kForceLod || !gs.has_skin() || !out.view.skin_visible ||
@@ -89,14 +102,15 @@ FrameOutput render_mobile_frame(const GpuScene& gs, const PipelineConfig& cfg, s
   }
 
   if (lod) {
-    out.passes.push_back(framebuffer_pass(gs, out.view, cfg, lut, nullptr, true, out.frame, gpu));
+    out.passes.push_back(
+        framebuffer_pass(gs, out.view, cfg, lights, lut, nullptr, true, out.frame, gpu));
     return out;
   }
 
   const int bw = std::max(1, static_cast<int>(std::lround(cfg.width * cfg.scale)));
   const int bh = std::max(1, static_cast<int>(std::lround(cfg.height * cfg.scale)));
   sim::RenderTarget irradiance("irradiance", bw, bh, sim::TexelFormat::kRGBA8);
-  out.passes.push_back(irradiance_pass(gs, out.view, cfg, irradiance, gpu));
+  out.passes.push_back(irradiance_pass(gs, out.view, cfg, lights, irradiance, gpu));
 
   // Blur width: the profile's wide-layer sigma in mm, projected at the skin's distance, in
   // buffer texels; k iterations of sigma/sqrt(k) compose to the same total variance.
@@ -121,7 +135,7 @@ FrameOutput render_mobile_frame(const GpuScene& gs, const PipelineConfig& cfg, s
   const sim::Texture2D blurred_texture =
       sim::texture_view(blurred, {sim::Filter::kBilinear, sim::Wrap::kClamp});
   out.passes.push_back(
-      framebuffer_pass(gs, out.view, cfg, lut, &blurred_texture, false, out.frame, gpu));
+      framebuffer_pass(gs, out.view, cfg, lights, lut, &blurred_texture, false, out.frame, gpu));
   // Stored irradiance is divided by kIrradianceRange: scale back to show the light.
   out.intermediates.push_back({"irradiance", std::move(irradiance), shaders::kIrradianceRange});
   out.intermediates.push_back({"blurred", std::move(blurred), shaders::kIrradianceRange});

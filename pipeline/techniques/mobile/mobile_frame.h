@@ -7,6 +7,7 @@
 
 #include "pipeline/brdf_lut_texture.h"
 #include "pipeline/frame.h"
+#include "pipeline/frame_lights.h"
 
 namespace skinsim::pipeline {
 
@@ -16,6 +17,6 @@ enum class MobileMode {
 };
 
 FrameOutput render_mobile_frame(const GpuScene& gpu_scene, const PipelineConfig& config,
-                                sim::Gpu& gpu, MobileMode mode);
+                                const FrameLights& lights, sim::Gpu& gpu, MobileMode mode);
 
 }  // namespace skinsim::pipeline

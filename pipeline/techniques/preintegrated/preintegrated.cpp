@@ -3,6 +3,7 @@
 #include "pipeline/shaders/preintegrated.h"
 
 #include "pipeline/bake/preintegrated_lut.h"
+#include "pipeline/bake/shadow_scatter_lut.h"
 #include "pipeline/knob_types.h"
 #include "pipeline/shader_variants.h"
 #include "pipeline/technique.h"
@@ -32,7 +33,20 @@ sim::RenderTarget preintegrated_lut_target(const PipelineConfig& cfg) {
   return t;
 }
 
-FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, sim::Gpu& gpu) {
+// Penner's penumbra-scattering LUT for this frame's penumbra width (bake/shadow_scatter_lut.h),
+// RGBA8, 64 x 1.
+constexpr int kShadowLutWidth = 64;
+sim::Texture2D shadow_scatter_texture(float penumbra_mm) {
+  std::vector<glm::vec4> texels;
+  for (const glm::vec3& v : bake::shadow_scatter_lut(kShadowLutWidth, penumbra_mm)) {
+    texels.emplace_back(v, 1.0f);
+  }
+  return sim::Texture2D("shadow_scatter_lut", kShadowLutWidth, 1, texels, sim::TexelFormat::kRGBA8,
+                        {sim::Filter::kBilinear, sim::Wrap::kClamp}, false);
+}
+
+FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLights& lights,
+                   sim::Gpu& gpu) {
   FrameOutput out = start_frame(gs, cfg);
   const auto brdf_lut = brdf_lut_for(cfg);
   sim::RenderTarget lut_target = preintegrated_lut_target(cfg);
@@ -44,8 +58,15 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, sim::Gpu& gpu)
     require_skin_uvs(gs, "preintegrated (curvature vertex)");
     curvature = curvature_texture(gs, kCurvatureTextureSize, max_curvature);
   }
+  const bool shadow_scatter = cfg.shadow_scatter && lights.uniforms().shadows;
+  const sim::Texture2D shadow_lut = shadow_scatter_texture(lights.penumbra_mm());
   const auto shading = [&](const GpuMaterial& mat, sim::DrawCall& d) {
-    shaders::TechniqueUniforms u = technique_uniforms(gs, out.view, cfg, mat);
+    shaders::TechniqueUniforms u = technique_uniforms(out.view, cfg, lights, mat);
+    u.shadow_scatter = shadow_scatter;
+    // Texel centres: entry i at visibility i / (width - 1).
+    u.shadow_lut_scale = static_cast<float>(kShadowLutWidth - 1) / kShadowLutWidth;
+    u.shadow_lut_offset = 0.5f / kShadowLutWidth;
+    if (shadow_scatter) d.textures.textures[shaders::LightBindings::kShadowLut] = &shadow_lut;
     // Derivatives give curvature in 1/world unit: times units_per_mm is 1/mm.
     u.curvature_scale = gs.scene().units_per_mm / max_curvature;
     d.fragment_program = with_gamma_and_specular(cfg, [&](auto gamma, auto spec) {
@@ -60,7 +81,8 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, sim::Gpu& gpu)
     if (curvature) d.textures.textures[shaders::TechniqueBindings::kCurvature] = &*curvature;
     bind_brdf_lut(brdf_lut, d);
   };
-  out.passes.push_back(skin_framebuffer_pass(gs, out.view, shading, out.frame, gpu));
+  out.passes.push_back(skin_framebuffer_pass(gs, out.view, lights, Transmission::kComputedHere,
+                                             shading, out.frame, gpu));
   out.intermediates.push_back({"preintegrated_lut", std::move(lut_target), 1.0f});
   return out;
 }
@@ -71,6 +93,15 @@ std::vector<sim::NamedProfile> programs() {
   return {
       fragment_entry<shaders::PreintegratedFS<kSquare, kKsLut, CurvatureSource::kVertex>>(),
       fragment_entry<shaders::PreintegratedFS<kSquare, kKsLut, CurvatureSource::kDerivatives>>()};
+}
+
+KnobSpec shadow_scatter_knob() {
+  KnobSpec k = switch_knob("shadow_scatter", "--shadow-scatter",
+                           "Penner's shadow penumbra scattering: the filtered shadow through a "
+                           "LUT that widens and reddens the penumbra (one dependent read)",
+                           &PipelineConfig::shadow_scatter);
+  k.applies = [](const PipelineConfig& c) { return c.shadows; };
+  return k;
 }
 
 }  // namespace
@@ -91,6 +122,7 @@ const TechniqueSpec& preintegrated_technique() {
                           "derivatives (constant per triangle on low-poly meshes)",
                           "vertex or derivatives", &PipelineConfig::curvature, parse_curvature,
                           curvature_name),
+              shadow_scatter_knob(),
           },
       .render = render,
       .shaders = programs,

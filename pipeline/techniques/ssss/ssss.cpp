@@ -10,12 +10,13 @@ namespace skinsim::pipeline {
 
 namespace {
 
-FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, sim::Gpu& gpu) {
+FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLights& lights,
+                   sim::Gpu& gpu) {
   FrameOutput out = start_frame(gs, cfg);
   sim::RenderTarget diffuse = screen_buffer("diffuse", cfg);
   sim::RenderTarget horizontal = screen_buffer("sss_h", cfg);
   sim::RenderTarget diffused = screen_buffer("diffused", cfg);
-  out.passes.push_back(diffuse_pass(gs, out.view, diffuse, gpu));
+  out.passes.push_back(diffuse_pass(gs, out.view, lights, diffuse, gpu));
   if (out.view.skin_visible) {
     const SeparableKernel kernel = separable_kernel();
     shaders::SsssBlurFS::Uniforms u;
@@ -30,7 +31,7 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, sim::Gpu& gpu)
     out.passes.push_back(kernel_pass("sss_v", kernel_program<shaders::SsssBlurFSFor>(out.view, u),
                                      horizontal, diffused, out.view, gpu));
   }
-  finish_screen_diffusion_frame(gs, cfg, std::move(diffuse), std::move(diffused), out, gpu);
+  finish_screen_diffusion_frame(gs, cfg, lights, std::move(diffuse), std::move(diffused), out, gpu);
   return out;
 }
 

@@ -31,11 +31,11 @@ sim::RenderTarget uv_buffer(const std::string& name, int size) {
   return sim::RenderTarget(name, size, size, sim::TexelFormat::kRGBA16F);
 }
 
-sim::PassCounters uv_irradiance_pass(const GpuScene& gs, sim::RenderTarget& target, sim::Gpu& gpu) {
-  const SceneLighting light = scene_lighting(gs.scene());
-  auto vs = sim::make_vertex_program<shaders::UvSpaceVS>({});
-  auto fs = sim::make_fragment_program<shaders::UvIrradianceFS>(
-      {light.light_dir, light.light_radiance, light.ambient});
+sim::PassCounters uv_irradiance_pass(const GpuScene& gs, const FrameLights& lights,
+                                     sim::RenderTarget& target, sim::Gpu& gpu) {
+  auto vs = sim::make_vertex_program<shaders::UvSpaceVS>(
+      {lights.vertex_uniforms(Transmission::kComputedHere)});
+  auto fs = sim::make_fragment_program<shaders::UvIrradianceFS>({lights.uniforms()});
   sim::RenderPassDesc pass;
   pass.name = "uv_irradiance";
   pass.color = &target;
@@ -48,6 +48,7 @@ sim::PassCounters uv_irradiance_pass(const GpuScene& gs, sim::RenderTarget& targ
     d.vertex_program = vs;
     d.fragment_program = fs;
     d.textures.textures[shaders::UvIrradianceFS::kNormalMap] = mat.normal;
+    lights.bind(d);
     d.cull = sim::CullMode::kNone;  // UV islands may be mirrored
     d.depth_test = false;           // islands do not overlap (uv_layout.h)
     d.depth_write = false;
@@ -56,7 +57,8 @@ sim::PassCounters uv_irradiance_pass(const GpuScene& gs, sim::RenderTarget& targ
   return gpu.execute(pass);
 }
 
-FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, sim::Gpu& gpu) {
+FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLights& lights,
+                   sim::Gpu& gpu) {
   require_skin_uvs(gs, "texture-space");
   FrameOutput out = start_frame(gs, cfg);
   const int size = cfg.texture_space_size;
@@ -68,7 +70,7 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, sim::Gpu& gpu)
   std::vector<sim::RenderTarget> terms;
   terms.reserve(shaders::kTextureSpaceTerms);
   terms.push_back(uv_buffer("uv_irradiance", size));
-  out.passes.push_back(uv_irradiance_pass(gs, terms[0], gpu));
+  out.passes.push_back(uv_irradiance_pass(gs, lights, terms[0], gpu));
   sim::RenderTarget ping = uv_buffer("uv_blur_h", size);
   for (int i = 1; i < shaders::kTextureSpaceTerms; ++i) {
     terms.push_back(uv_buffer(fmt::format("uv_blur_{}", i), size));
@@ -93,7 +95,7 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, sim::Gpu& gpu)
     out.passes.push_back(quad_pass("uv_combine", std::move(d), combined, all, gpu));
   }
 
-  out.passes.push_back(diffused_skin_pass(gs, out.view, cfg, shaders::DiffusionSource::kUv,
+  out.passes.push_back(diffused_skin_pass(gs, out.view, cfg, lights, shaders::DiffusionSource::kUv,
                                           combined, out.frame, gpu));
   out.intermediates.push_back({"uv_irradiance", std::move(terms[0]), 0.5f});
   out.intermediates.push_back({"uv_diffused", std::move(combined), 0.5f});

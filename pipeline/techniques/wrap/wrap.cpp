@@ -11,17 +11,19 @@ namespace skinsim::pipeline {
 
 namespace {
 
-FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, sim::Gpu& gpu) {
+FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLights& lights,
+                   sim::Gpu& gpu) {
   FrameOutput out = start_frame(gs, cfg);
   const auto brdf_lut = brdf_lut_for(cfg);
   const auto shading = [&](const GpuMaterial& mat, sim::DrawCall& d) {
-    const shaders::TechniqueUniforms u = technique_uniforms(gs, out.view, cfg, mat);
+    const shaders::TechniqueUniforms u = technique_uniforms(out.view, cfg, lights, mat);
     d.fragment_program = with_gamma_and_specular(cfg, [&](auto gamma, auto spec) {
       return sim::make_fragment_program<shaders::WrapFS<gamma(), spec()>>(u);
     });
     bind_brdf_lut(brdf_lut, d);
   };
-  out.passes.push_back(skin_framebuffer_pass(gs, out.view, shading, out.frame, gpu));
+  out.passes.push_back(skin_framebuffer_pass(gs, out.view, lights, Transmission::kComputedHere,
+                                             shading, out.frame, gpu));
   return out;
 }
 

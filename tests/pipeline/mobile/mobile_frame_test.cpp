@@ -43,8 +43,8 @@ TEST(MobilePipeline, PassesInOrderWithTheirTargets) {
   const FrameOutput f = render(gs, 0.5f, 2);
   std::vector<std::string> names;
   for (const auto& p : f.passes) names.push_back(p.name);
-  EXPECT_EQ(names, (std::vector<std::string>{"irradiance", "blur_h", "blur_v", "blur_h2", "blur_v2",
-                                             "skin"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"shadow", "irradiance", "blur_h", "blur_v", "blur_h2",
+                                             "blur_v2", "skin"}));
   EXPECT_EQ(pass(f, "irradiance").width, 256);
   EXPECT_EQ(pass(f, "skin").width, 512);
   EXPECT_EQ(f.decisions.at("lod_shader"), 0.0);
@@ -53,7 +53,7 @@ TEST(MobilePipeline, PassesInOrderWithTheirTargets) {
     EXPECT_EQ(d.fragment_program, "skin_irradiance_fs");
   // The blur touches only the skin's bounding rectangle, not every tile of the buffer.
   EXPECT_LE(pass(f, "blur_h").tiles_rendered, static_cast<std::uint64_t>(8 * 6));
-  ASSERT_EQ(f.intermediates.size(), 2u);
+  ASSERT_EQ(f.intermediates.size(), 3u);  // irradiance, blurred, shadow_map
 }
 
 TEST(MobilePipeline, BufferScaleScalesIrradianceAndBlurWorkBySquare) {
@@ -79,8 +79,9 @@ TEST(MobilePipeline, LodTechniqueIsOneSkinPass) {
   c.technique = "lod";
   sim::Gpu gpu(sim::GpuConfig{});
   const FrameOutput f = render_frame(gs, c, gpu);
-  ASSERT_EQ(f.passes.size(), 1u);
-  EXPECT_EQ(f.passes[0].name, "skin");
+  ASSERT_EQ(f.passes.size(), 2u);
+  EXPECT_EQ(f.passes[0].name, "shadow");
+  EXPECT_EQ(f.passes[1].name, "skin");
   EXPECT_EQ(f.decisions.at("lod_shader"), 1.0);
 }
 

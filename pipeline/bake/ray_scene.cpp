@@ -1,0 +1,91 @@
+#include "pipeline/bake/ray_scene.h"
+
+#include <embree3/rtcore.h>
+
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+namespace skinsim::bake {
+
+struct RayScene::Impl {
+  RTCDevice device = nullptr;
+  RTCScene scene = nullptr;
+};
+
+namespace {
+
+RTCRay make_ray(const glm::vec3& o, const glm::vec3& d, float t_near, float t_far) {
+  RTCRay r{};
+  r.org_x = o.x;
+  r.org_y = o.y;
+  r.org_z = o.z;
+  r.dir_x = d.x;
+  r.dir_y = d.y;
+  r.dir_z = d.z;
+  r.tnear = t_near;
+  r.tfar = t_far;
+  r.mask = 0xFFFFFFFFu;
+  r.flags = 0;
+  return r;
+}
+
+}  // namespace
+
+RayScene::RayScene(const std::vector<RayMesh>& meshes) : impl_(std::make_unique<Impl>()) {
+  // Default threading: Embree builds with TBB. (A "threads=N" setting would cap the whole
+  // process's TBB parallelism while the device lives.) The hits do not depend on how the
+  // BVH was built: a ray's nearest distance and whether it is blocked are properties of the
+  // triangles.
+  impl_->device = rtcNewDevice(nullptr);
+  if (!impl_->device) {
+    throw std::runtime_error("Embree: cannot create a device (error " +
+                             std::to_string(rtcGetDeviceError(nullptr)) + ")");
+  }
+  impl_->scene = rtcNewScene(impl_->device);
+  rtcSetSceneBuildQuality(impl_->scene, RTC_BUILD_QUALITY_HIGH);
+  rtcSetSceneFlags(impl_->scene, RTC_SCENE_FLAG_ROBUST);
+  for (const RayMesh& m : meshes) {
+    const std::size_t triangles = m.indices->size() / 3;
+    if (triangles == 0 || m.positions->empty()) continue;
+    RTCGeometry g = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+        g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, sizeof(float) * 3, m.positions->size()));
+    std::memcpy(v, m.positions->data(), m.positions->size() * sizeof(glm::vec3));
+    auto* idx = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(
+        g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, sizeof(std::uint32_t) * 3, triangles));
+    std::memcpy(idx, m.indices->data(), triangles * 3 * sizeof(std::uint32_t));
+    rtcCommitGeometry(g);
+    rtcAttachGeometry(impl_->scene, g);
+    rtcReleaseGeometry(g);
+  }
+  rtcCommitScene(impl_->scene);
+}
+
+RayScene::~RayScene() {
+  if (impl_->scene) rtcReleaseScene(impl_->scene);
+  if (impl_->device) rtcReleaseDevice(impl_->device);
+}
+
+float RayScene::closest_hit(const glm::vec3& origin, const glm::vec3& direction, float t_near,
+                            float t_far) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit hit{};
+  hit.ray = make_ray(origin, direction, t_near, t_far);
+  hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(impl_->scene, &context, &hit);
+  return hit.hit.geomID == RTC_INVALID_GEOMETRY_ID ? std::numeric_limits<float>::infinity()
+                                                   : hit.ray.tfar;
+}
+
+bool RayScene::occluded(const glm::vec3& origin, const glm::vec3& direction, float t_near,
+                        float t_far) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay ray = make_ray(origin, direction, t_near, t_far);
+  rtcOccluded1(impl_->scene, &context, &ray);
+  return ray.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
+}
+
+}  // namespace skinsim::bake

@@ -1,0 +1,38 @@
+// Ray casting against triangle meshes with Embree (the library the brief names for it): the
+// reference renderer's shadow rays and the thickness bake.
+#pragma once
+
+#include <glm/glm.hpp>
+#include <limits>
+#include <memory>
+#include <vector>
+
+namespace skinsim::bake {
+
+// Triangle lists in world space (positions and 3 indices per triangle).
+struct RayMesh {
+  const std::vector<glm::vec3>* positions = nullptr;
+  const std::vector<std::uint32_t>* indices = nullptr;
+};
+
+class RayScene {
+ public:
+  explicit RayScene(const std::vector<RayMesh>& meshes);
+  ~RayScene();
+  RayScene(const RayScene&) = delete;
+  RayScene& operator=(const RayScene&) = delete;
+
+  // Distance along `direction` (unit) to the nearest triangle in (t_near, t_far), or
+  // +infinity when there is none. Thread-safe.
+  float closest_hit(const glm::vec3& origin, const glm::vec3& direction, float t_near,
+                    float t_far = std::numeric_limits<float>::infinity()) const;
+  // Whether any triangle lies along the ray within (t_near, t_far). Thread-safe.
+  bool occluded(const glm::vec3& origin, const glm::vec3& direction, float t_near,
+                float t_far = std::numeric_limits<float>::infinity()) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace skinsim::bake
