@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 
 #include "pipeline/bake/brdf_lut.h"
 #include "pipeline/bake/skin_profile.h"
@@ -262,9 +263,10 @@ class Diffusion {
 // gradient noise, Jimenez 2014, so that the penumbra's steps become fine noise).
 constexpr float kLightRadiusRad = 0.0175f;  // 1 degree: a softbox ~7 cm wide at 2 m
 constexpr int kShadowRays = 16;
+constexpr float kBackLightDistanceMm = 300.0f;
 
 float visibility(const bake::RayScene& rays, const glm::vec3& p, const glm::vec3& l, int x, int y,
-                 float offset) {
+                 float offset, float reach) {
   const glm::vec3 helper = std::abs(l.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
   const glm::vec3 t = glm::normalize(glm::cross(helper, l));
   const glm::vec3 b = glm::cross(l, t);
@@ -278,7 +280,7 @@ float visibility(const bake::RayScene& rays, const glm::vec3& p, const glm::vec3
     const float r = kLightRadiusRad * std::sqrt((static_cast<float>(i) + 0.5f) / kShadowRays);
     const float phi = 2.39996323f * static_cast<float>(i) + rotation;
     const glm::vec3 dir = glm::normalize(l + r * (std::cos(phi) * t + std::sin(phi) * b));
-    if (!rays.occluded(p, dir, offset)) ++lit;
+    if (!rays.occluded(p, dir, offset, reach)) ++lit;
   }
   return static_cast<float>(lit) / kShadowRays;
 }
@@ -305,6 +307,10 @@ ReferenceFrame render_reference(const GpuScene& gs, const PipelineConfig& config
   if (lighting.has_back()) lights.push_back(lighting.back);
   // Shadow rays start this far off the surface (past the triangles they start on).
   const float ray_offset = 0.05f * sc.units_per_mm;
+  // How far each light is: the key is distant; the back (rim) light stands 30 cm behind the
+  // head, as in a studio, between it and any backdrop, which therefore casts no shadow of it.
+  const std::vector<float> reach{std::numeric_limits<float>::infinity(),
+                                 kBackLightDistanceMm * sc.units_per_mm};
 
   std::vector<glm::vec3> irradiance(static_cast<size_t>(w) * h, glm::vec3(0.0f));
   std::vector<float> visible(static_cast<size_t>(w) * h * lights.size(), 0.0f);  // per light
@@ -326,8 +332,8 @@ ReferenceFrame render_reference(const GpuScene& gs, const PipelineConfig& config
         const scene::DirectionalLight& light = lights[i];
         const float n_dot_l = glm::dot(n, light.direction);
         if (n_dot_l <= 0.0f) continue;
-        const float v =
-            visibility(gs.rays(), p + vertex_n * ray_offset, light.direction, x, y, ray_offset);
+        const float v = visibility(gs.rays(), p + vertex_n * ray_offset, light.direction, x, y,
+                                   ray_offset, reach[i]);
         visible[(static_cast<size_t>(y) * w + x) * lights.size() + i] = v;
         e += light.radiance * n_dot_l * v;
       }
