@@ -69,6 +69,7 @@ FrameLights::FrameLights(const GpuScene& gs, const PipelineConfig& cfg, sim::Gpu
   u.ambient = lighting_.ambient;
 
   u.transmission = transmission_;
+  u.shadows = false;  // until the shadow map below exists
   const auto& gaussians = bake::skin_gaussians();
   for (int i = 0; i < shaders::kTransmittanceTerms; ++i) {
     u.transmittance_weight[i] = gaussians[i].weight;

@@ -5,6 +5,7 @@
 #include "pipeline/shader_variants.h"
 #include "pipeline/shaders/background.h"
 #include "pipeline/shaders/eye.h"
+#include "pipeline/shaders/shadow.h"
 #include "pipeline/shaders/surface_vs.h"
 #include "pipeline/technique.h"
 
@@ -23,8 +24,8 @@ std::vector<CatalogEntry> shader_catalog() {
   };
   for (const TechniqueSpec* t : all_techniques()) {
     for (const sim::NamedProfile& p :
-         {vertex_entry<shaders::SurfaceVS>(), fragment_entry<shaders::EyeFS>(),
-          fragment_entry<shaders::BackgroundFS>()}) {
+         {vertex_entry<shaders::ShadowVS>(), vertex_entry<shaders::SurfaceVS>(),
+          fragment_entry<shaders::EyeFS>(), fragment_entry<shaders::BackgroundFS>()}) {
       add(p, t->name);
     }
   }

@@ -32,6 +32,7 @@ sim::PassCounters gbuffer_pass(
     const GpuScene& gs, const View& view, sim::RenderTarget& target, sim::Gpu& gpu,
     const std::function<typename FS::Uniforms(const GpuMaterial&)>& uniforms) {
   shaders::LightVertexUniforms thickness;  // the baked thickness, for VertexNormalFS
+  thickness.shadow_coord = false;
   thickness.thickness = true;
   auto vs = sim::make_vertex_program<shaders::SurfaceVS>({view.view_proj, 0.0f, thickness});
   sim::RenderPassDesc pass;

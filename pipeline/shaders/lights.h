@@ -43,12 +43,16 @@ struct LightVaryings {
   int thickness = -1;
 };
 
+// The defaults of LightVertexUniforms and LightUniforms are what the default knobs give on
+// the built-in scene (shadows with one fetch, a back light, transmission): the programs'
+// default profiles in `skinsim shaders`. FrameLights sets every field for a frame.
+
 // What a vertex shader needs to feed LightVaryings.
 struct LightVertexUniforms {
-  bool shadow_coord = false;
+  bool shadow_coord = true;
   glm::mat4 shadow_matrix{1.0f};      // world -> (u, v, depth) of the shadow map
   float shadow_normal_offset = 0.0f;  // world units along the normal (against shadow acne)
-  bool thickness = false;
+  bool thickness = true;
 };
 
 template <class L>
@@ -64,19 +68,19 @@ void write_light_varyings(const typename L::VertexIn& in, typename L::VertexOut&
 }
 
 struct LightUniforms {
-  int count = 1;  // 1: key light only; 2: key and back light
+  int count = 2;  // 1: key light only; 2: key and back light
   std::array<glm::vec3, kMaxLights> direction{glm::vec3(0.0f, 0.0f, 1.0f),
                                               glm::vec3(0.0f, 0.0f, -1.0f)};  // towards the light
   std::array<glm::vec3, kMaxLights> radiance{glm::vec3(1.0f), glm::vec3(0.0f)};
   glm::vec3 ambient{0.0f};
 
-  bool shadows = false;
+  bool shadows = true;
   int shadow_taps = 1;
   std::array<glm::vec2, kMaxShadowTaps> shadow_offsets{};  // uv, tap 0 is (0, 0)
   bool shadow_tinted = false;
   glm::vec3 shadow_tint{0.0f};
 
-  bool transmission = false;
+  bool transmission = true;
   std::array<glm::vec3, kTransmittanceTerms> transmittance_weight{};
   std::array<float, kTransmittanceTerms> transmittance_inv_variance{};  // 1 / v_i, 1/mm^2
 };

@@ -30,7 +30,7 @@ struct TechniqueUniforms : SkinUniforms {
   float f0 = 0.028f;              // skin, IOR ~1.4
   float wrap = 0.5f;              // wrap lighting amount
   float curvature_scale = 1.0f;   // derivative curvature (1/world unit) -> pre-integrated LUT v
-  bool shadow_scatter = false;    // pre-integrated: Penner's penumbra scattering LUT
+  bool shadow_scatter = true;     // pre-integrated: Penner's penumbra scattering LUT
   float shadow_lut_scale = 1.0f;  // visibility -> LUT u (shadow_scatter_lut.h)
   float shadow_lut_offset = 0.0f;
 };
