@@ -55,6 +55,9 @@ struct PipelineConfig {
   // default derived from the six-Gaussian profile (diffusion.h).
   std::optional<float> blur_width_mm;
   float normal_offset_mm = 1.0f;  // irradiance-pass vertex push along the normal
+  // Mobile blur: 0 = taps ignore depth (GPU Pro 5); > 0 = taps on a surface this many mm
+  // nearer or farther than the centre fade out (the irradiance buffer's alpha carries depth).
+  float blur_follow_mm = 0.0f;
   GammaMode gamma = GammaMode::kSquare;
   // Kelemen/Szirmay-Kalos dual lobe: d'Eon & Luebke (GPU Gems 3 ch. 14) use m = 0.3 for a
   // single lobe; the second, broader lobe models the oily layer's spread.

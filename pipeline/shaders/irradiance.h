@@ -16,6 +16,12 @@ struct IrradianceFS {
   static constexpr const char* kName = "skin_irradiance_fs";
   struct Uniforms {
     LightUniforms lights;
+    // Depth-aware blur (blur_follow_mm): alpha = view depth coded 1/255..1 over
+    // [depth_near_mm, depth_near_mm + 1 / inv_depth_range_mm] instead of coverage 1 (0 stays
+    // "no skin").
+    bool depth_code = false;
+    float depth_near_mm = 0.0f;
+    float inv_depth_range_mm = 1.0f;
   };
   template <class L>
   static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
@@ -26,6 +32,13 @@ struct IrradianceFS {
     const auto visibility = key_visibility<L>(in, tex, u.lights, PositionNormalVS::kLight);
     const vec3 irradiance = lambert_irradiance<L>(n, tinted<L>(visibility, u.lights), u.lights) +
                             transmitted<L>(in, n, u.lights, PositionNormalVS::kLight);
+    if (u.depth_code) {
+      const auto code = sl::saturate((in.f(PositionNormalVS::kViewDepth) - u.depth_near_mm) *
+                                     u.inv_depth_range_mm) *
+                            (254.0f / 255.0f) +
+                        (1.0f / 255.0f);
+      return vec4(irradiance * (1.0f / kIrradianceRange), code);
+    }
     return vec4(irradiance * (1.0f / kIrradianceRange), 1.0f);
   }
 };

@@ -28,6 +28,10 @@ struct SurfaceVS {
     glm::mat4 view_proj{1.0f};
     float normal_offset = 0.0f;  // world units to push along the normal (irradiance pass)
     LightVertexUniforms light;
+    // PositionNormalVS only: write the view depth in mm, dot(p, xyz) + w, to slot kViewDepth
+    // (the depth-aware mobile blur).
+    bool view_depth = false;
+    glm::vec4 view_depth_plane{0.0f};
   };
   template <class L>
   static void vertex(const typename L::VertexIn& in, typename L::VertexOut& out,
@@ -49,6 +53,7 @@ struct SurfaceVS {
 struct PositionNormalVS {
   static constexpr const char* kName = "position_normal_vs";
   static constexpr LightVaryings kLight{3, 6};
+  static constexpr int kViewDepth = 7;
   using Uniforms = SurfaceVS::Uniforms;
   template <class L>
   static void vertex(const typename L::VertexIn& in, typename L::VertexOut& out,
@@ -59,6 +64,10 @@ struct PositionNormalVS {
     out.position = u.view_proj * vec4(p, 1.0f);
     out.set(0, n);
     write_light_varyings<L>(in, out, u.light, p, n, kLight);
+    if (u.view_depth) {
+      using vec3 = typename L::vec3;
+      out.set(kViewDepth, sl::dot(p, vec3(glm::vec3(u.view_depth_plane))) + u.view_depth_plane.w);
+    }
   }
 };
 

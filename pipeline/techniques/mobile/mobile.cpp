@@ -22,7 +22,8 @@ std::vector<sim::NamedProfile> programs() {
   using namespace pipeline::shaders;
   std::vector<sim::NamedProfile> s = {
       vertex_entry<PositionNormalVS>(), vertex_entry<DilatedPositionNormalVS>(),
-      vertex_entry<BlurVS>(), fragment_entry<IrradianceFS>(), fragment_entry<BlurFS>()};
+      vertex_entry<BlurVS>(),           fragment_entry<IrradianceFS>(),
+      fragment_entry<BlurFS>(),         fragment_entry<DepthAwareBlurFS>()};
   for (const auto& v : specular_variants<SkinFS>()) s.push_back(v);
   s.push_back(fragment_entry<SkinFS<GammaMode::kSrgb, SpecularModel::kKsLut>>());
   for (const auto& v : specular_variants<SkinLodFS>()) s.push_back(v);  // at LOD distance
@@ -50,6 +51,10 @@ const TechniqueSpec& mobile_technique() {
               real_knob("normal_offset_mm", "--normal-offset-mm",
                         "Irradiance-pass vertex push along the normal, mm",
                         &PipelineConfig::normal_offset_mm, {0.0, 20.0}),
+              real_knob("blur_follow_mm", "--blur-follow-mm",
+                        "Depth-aware blur: taps on a surface this many mm nearer or farther "
+                        "than the centre fade out (0: the blur ignores depth, as GPU Pro 5)",
+                        &PipelineConfig::blur_follow_mm, {0.0, 50.0}),
               real_knob("lod_distance_m", "--lod-distance",
                         "Camera distance in metres beyond which the single-pass LOD shader runs",
                         &PipelineConfig::lod_distance_m, {0.0, 10000.0, true, false}),

@@ -26,17 +26,33 @@ sim::PixelRect scale_rect(const sim::PixelRect& r, float sx, float sy, int w, in
           std::clamp(static_cast<int>(std::ceil(r.y1 * sy)) + 1, 0, h)};
 }
 
+// The depth-aware blur's depth code: the skin's distance +-150 mm in 254 steps (1.18 mm).
+constexpr float kDepthCodeHalfRangeMm = 150.0f;
+constexpr float kMmPerDepthCode = 2.0f * kDepthCodeHalfRangeMm / 254.0f;
+
 sim::PassCounters irradiance_pass(const GpuScene& gs, const View& view, const PipelineConfig& cfg,
                                   const FrameLights& lights, sim::RenderTarget& buffer,
                                   sim::Gpu& gpu) {
+  const float mm_per_unit = 1.0f / gs.scene().units_per_mm;
   const float offset = cfg.normal_offset_mm * gs.scene().units_per_mm;
   // The skin at its true position and depth decides every pixel it covers; the normal offset
   // only dilates coverage into the background, in a second draw behind all skin.
-  const shaders::LightVertexUniforms light = lights.vertex_uniforms(Transmission::kComputedHere);
-  auto vs = sim::make_vertex_program<shaders::PositionNormalVS>({view.view_proj, 0.0f, light});
-  auto dilated_vs =
-      sim::make_vertex_program<shaders::DilatedPositionNormalVS>({view.view_proj, offset, light});
-  auto fs = sim::make_fragment_program<shaders::IrradianceFS>({lights.uniforms()});
+  shaders::SurfaceVS::Uniforms vu{view.view_proj, 0.0f,
+                                  lights.vertex_uniforms(Transmission::kComputedHere)};
+  shaders::IrradianceFS::Uniforms fu{lights.uniforms()};
+  if (cfg.blur_follow_mm > 0.0f) {
+    // View depth in mm: dot(p - camera, forward) / units_per_mm.
+    vu.view_depth = true;
+    vu.view_depth_plane = glm::vec4(view.forward * mm_per_unit,
+                                    -glm::dot(view.forward, view.camera_position) * mm_per_unit);
+    fu.depth_code = true;
+    fu.depth_near_mm = view.skin_distance * mm_per_unit - kDepthCodeHalfRangeMm;
+    fu.inv_depth_range_mm = 1.0f / (2.0f * kDepthCodeHalfRangeMm);
+  }
+  auto vs = sim::make_vertex_program<shaders::PositionNormalVS>(vu);
+  vu.normal_offset = offset;
+  auto dilated_vs = sim::make_vertex_program<shaders::DilatedPositionNormalVS>(vu);
+  auto fs = sim::make_fragment_program<shaders::IrradianceFS>(fu);
   sim::RenderPassDesc pass;
   pass.name = "irradiance";
   pass.color = &buffer;
@@ -123,13 +139,19 @@ FrameOutput render_mobile_frame(const GpuScene& gs, const PipelineConfig& cfg,
                                          static_cast<float>(bh) / cfg.height, bw, bh);
   sim::RenderTarget ping("blur_h", bw, bh, sim::TexelFormat::kRGBA8);
   sim::RenderTarget blurred("blurred", bw, bh, sim::TexelFormat::kRGBA8);
+  // Depth-aware taps (blur_follow_mm): the tent's half-width in depth codes; the last axis
+  // writes the premultiplied light and coverage the skin pass reads.
+  const auto follow = [&](bool last_axis) -> std::optional<BlurFollow> {
+    if (cfg.blur_follow_mm <= 0.0f) return std::nullopt;
+    return BlurFollow{255.0f * kMmPerDepthCode / cfg.blur_follow_mm, last_axis};
+  };
   const sim::RenderTarget* source = &irradiance;
   for (int i = 0; i < cfg.blur_iterations; ++i) {
     const std::string suffix = i == 0 ? "" : std::to_string(i + 1);  // blur_h, blur_h2, ...
     out.passes.push_back(
-        blur_pass("blur_h" + suffix, *source, ping, rect, {1, 0}, blur_sigma, gpu));
-    out.passes.push_back(
-        blur_pass("blur_v" + suffix, ping, blurred, rect, {0, 1}, blur_sigma, gpu));
+        blur_pass("blur_h" + suffix, *source, ping, rect, {1, 0}, blur_sigma, gpu, follow(false)));
+    out.passes.push_back(blur_pass("blur_v" + suffix, ping, blurred, rect, {0, 1}, blur_sigma, gpu,
+                                   follow(i + 1 == cfg.blur_iterations)));
     source = &blurred;
   }
   const sim::Texture2D blurred_texture =

@@ -15,12 +15,14 @@ const sim::PassCounters& pass(const FrameOutput& f, const std::string& name) {
   throw std::runtime_error("no pass " + name);
 }
 
-FrameOutput render(const GpuScene& gs, float scale, int blur_iterations = 1) {
+FrameOutput render(const GpuScene& gs, float scale, int blur_iterations = 1,
+                   float blur_follow_mm = 0.0f) {
   PipelineConfig c;
   c.width = 512;
   c.height = 384;
   c.scale = scale;
   c.blur_iterations = blur_iterations;
+  c.blur_follow_mm = blur_follow_mm;
   sim::Gpu gpu(sim::GpuConfig{});
   return render_frame(gs, c, gpu);
 }
@@ -56,6 +58,28 @@ TEST(MobilePipeline, PassesInOrderWithTheirTargets) {
   // The blur touches only the skin's bounding rectangle, not every tile of the buffer.
   EXPECT_LE(pass(f, "blur_h").tiles_rendered, static_cast<std::uint64_t>(8 * 6));
   ASSERT_EQ(f.intermediates.size(), 3u);  // irradiance, blurred, shadow_map
+}
+
+// blur_follow_mm: the buffer's alpha carries depth and the blur's taps follow the surface:
+// the same nine reads per pixel (nearest now), more ALU, and a different image where
+// surfaces overlap; the skin pass is unchanged.
+TEST(MobilePipeline, DepthAwareBlurAddsAluNotReads) {
+  const scene::Scene s = testing::small_head();
+  const GpuScene gs(s);
+  const FrameOutput plain = render(gs, 0.5f), follow = render(gs, 0.5f, 2, 4.0f);
+  const FrameOutput plain2 = render(gs, 0.5f, 2);
+  for (const char* name : {"blur_h", "blur_v", "blur_h2", "blur_v2"}) {
+    const sim::DrawCounters& a = pass(plain2, name).draws.at(0);
+    const sim::DrawCounters& b = pass(follow, name).draws.at(0);
+    EXPECT_EQ(b.fragment_program, "blur_follow_fs") << name;
+    EXPECT_EQ(b.fragment_profile.texture_reads_independent, 9u) << name;
+    EXPECT_GT(b.fragment_profile.alu_ops(), a.fragment_profile.alu_ops() + 30) << name;
+    EXPECT_EQ(pass(follow, name).texture.samples_by_filter[0], pass(follow, name).texture.samples())
+        << name << ": nearest taps";
+  }
+  EXPECT_EQ(pass(follow, "skin").draws.back().fragment_program,
+            pass(plain, "skin").draws.back().fragment_program);
+  EXPECT_NE(follow.frame.pixels, plain2.frame.pixels);
 }
 
 TEST(MobilePipeline, BufferScaleScalesIrradianceAndBlurWorkBySquare) {
