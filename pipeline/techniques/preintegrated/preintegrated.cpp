@@ -59,14 +59,16 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLig
     curvature = curvature_texture(gs, kCurvatureTextureSize, max_curvature);
   }
   const bool shadow_scatter = cfg.shadow_scatter && lights.uniforms().shadows;
-  const sim::Texture2D shadow_lut = shadow_scatter_texture(lights.penumbra_mm());
+  // Baked only when a frame reads it.
+  std::optional<sim::Texture2D> shadow_lut;
+  if (shadow_scatter) shadow_lut = shadow_scatter_texture(lights.penumbra_mm());
   const auto shading = [&](const GpuMaterial& mat, sim::DrawCall& d) {
     shaders::TechniqueUniforms u = technique_uniforms(out.view, cfg, lights, mat);
     u.shadow_scatter = shadow_scatter;
     // Texel centres: entry i at visibility i / (width - 1).
     u.shadow_lut_scale = static_cast<float>(kShadowLutWidth - 1) / kShadowLutWidth;
     u.shadow_lut_offset = 0.5f / kShadowLutWidth;
-    if (shadow_scatter) d.textures.textures[shaders::LightBindings::kShadowLut] = &shadow_lut;
+    if (shadow_lut) d.textures.textures[shaders::LightBindings::kShadowLut] = &*shadow_lut;
     // Derivatives give curvature in 1/world unit: times units_per_mm is 1/mm.
     u.curvature_scale = gs.scene().units_per_mm / max_curvature;
     d.fragment_program = with_gamma_and_specular(cfg, [&](auto gamma, auto spec) {
