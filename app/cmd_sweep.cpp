@@ -1,6 +1,7 @@
 // `skinsim sweep`: many pipeline configurations on one scene, their cost and quality against a
-// shared reference, results.json/csv, VTK charts and report.html. Resumable; Ctrl-C keeps every
-// finished configuration.
+// shared reference, results.json/csv, VTK charts and report.html. Resumable; Ctrl-C (or a
+// scheduler's SIGTERM) keeps every finished configuration. `--shard K/N` computes one part
+// of the sweep for a cluster job array, `--merge` writes the report from the parts.
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <unistd.h>
@@ -24,21 +25,29 @@ namespace skinsim::app {
 
 namespace {
 
-// Set by the SIGINT handler; the sweep starts no new configuration once it is set.
-std::atomic<bool> g_interrupted{false};
+// The signal that stopped the sweep (SIGINT or SIGTERM), or 0; the sweep starts no new
+// configuration once it is set.
+std::atomic<int> g_interrupted{0};
+static_assert(std::atomic<int>::is_always_lock_free, "used from a signal handler");
+std::atomic<bool> g_cancel{false};
 static_assert(std::atomic<bool>::is_always_lock_free, "used from a signal handler");
 
-void on_sigint(int) {
-  g_interrupted.store(true);
+// SIGTERM is how Slurm and other schedulers stop a job (at its time limit, or scancel), with
+// SIGKILL some seconds later: the configurations in flight may still finish and be kept.
+void on_interrupt(int signal) {
+  g_interrupted.store(signal);
+  g_cancel.store(true);
   constexpr char kMessage[] =
       "\nskinsim sweep: interrupted: finishing the configurations in flight (Ctrl-C again to "
       "abort at once; finished results are kept)\n";
   [[maybe_unused]] const ssize_t n = write(STDERR_FILENO, kMessage, sizeof kMessage - 1);
-  std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C ends the process
+  std::signal(signal, SIG_DFL);  // a second one ends the process
 }
 
-// 128 + SIGINT: what a shell reports for a program stopped by Ctrl-C.
-constexpr int kInterruptedExit = 130;
+// 128 + the signal: what a shell reports for a program stopped by it (130 for Ctrl-C).
+int interrupted_exit() {
+  return 128 + g_interrupted.load();
+}
 
 struct SweepOptions {
   std::string sweep_file;
@@ -54,6 +63,8 @@ struct SweepOptions {
   bool require_charts = false;
   double budget_ms = 0.0;  // 0 = the sweep file's or 33.3
   std::size_t max_configs = driver::kDefaultMaxConfigs;
+  std::string shard;  // "K/N", or empty
+  bool merge = false;
 };
 
 // `--out ""` would write into the current directory, and a file there cannot hold results.
@@ -110,6 +121,34 @@ void print_recommendation(const reports::SweepTable& table) {
              r.frame_ms, r.fps, metric == "flip_skin" ? "skin" : "the frame", r.quality.at(metric));
 }
 
+// A shard's run: its configurations into the shared directory, no tables or report (the
+// merge writes those once every shard has finished).
+int finish_shard(const driver::SweepShard& shard, const driver::SweepRunSummary& summary,
+                 const std::string& out) {
+  fmt::print(
+      "skinsim sweep: shard {}: {} of {} configurations: {} computed, {} resumed{} in "
+      "{:.1f} s\n",
+      driver::to_string(shard), summary.this_part, summary.total, summary.computed.size(),
+      summary.resumed,
+      summary.failed.empty() ? "" : fmt::format(", {} failed", summary.failed.size()),
+      summary.seconds);
+  for (const driver::FailedConfig& f : summary.failed) {
+    fmt::print(stderr, "skinsim sweep: configuration {} failed: {}\n", f.id, f.reason);
+  }
+  if (summary.cancelled) {
+    fmt::print(
+        "interrupted: run shard {} again to resume; finished results in {}/configs are "
+        "kept\n",
+        driver::to_string(shard), out);
+    return interrupted_exit();
+  }
+  fmt::print(
+      "wrote {}/configs; when every shard has finished, run the same sweep with --merge "
+      "to write the report\n",
+      out);
+  return summary.failed.empty() ? 0 : 1;
+}
+
 int run(const SweepOptions& o, const CLI::App& cmd) {
   require_out_dir(o.out);
   const driver::SweepSpec spec = build_spec(o, cmd);
@@ -119,12 +158,30 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
   run_options.out_dir = o.out;
   run_options.data_dir = o.data_dir.empty() ? default_data_dir() : o.data_dir;
   run_options.threads = o.threads;
-  run_options.cancel = &g_interrupted;
-  io::remove_stale_temporaries_in_tree(o.out);  // left by a sweep killed mid-write
-  g_interrupted.store(false);
-  std::signal(SIGINT, on_sigint);
+  run_options.cancel = &g_cancel;
+  run_options.compute = !o.merge;
+  if (!o.shard.empty()) run_options.shard = driver::parse_shard(o.shard, "--shard");
+  if (o.merge && !std::filesystem::is_directory(o.out)) {
+    throw driver::SweepError(
+        fmt::format("--merge: {} is not a sweep directory (run the shards into it first)", o.out));
+  }
+  // Left by a sweep killed mid-write; another live process's (a shard beside this one) are kept.
+  io::remove_stale_temporaries_in_tree(o.out);
+  g_interrupted.store(0);
+  g_cancel.store(false);
+  std::signal(SIGINT, on_interrupt);
+  std::signal(SIGTERM, on_interrupt);
   const driver::SweepRunSummary summary = driver::run_sweep(spec, configs, run_options);
   std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+  if (run_options.shard) return finish_shard(*run_options.shard, summary, o.out);
+  if (!summary.left_by_shards.empty()) {
+    fmt::print(stderr, "skinsim sweep: {} configurations {}:\n", summary.left_by_shards.size(),
+               o.merge ? "are missing" : "have no result yet; computing them here");
+    for (const driver::MissingConfig& m : summary.left_by_shards) {
+      fmt::print(stderr, "  {}{}\n", m.id, m.reason.empty() ? "" : ": " + m.reason);
+    }
+  }
 
   std::size_t combinations = 1;  // saturating: a folded sweep's product can exceed 2^64
   for (const driver::SweepAxis& axis : spec.axes) {
@@ -133,14 +190,19 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
     }
   }
   const std::size_t skipped = combinations - configs.size();
-  fmt::print("skinsim sweep: {} configurations on {}: {} computed, {} resumed{}{} in {:.1f} s{}\n",
-             summary.total, spec.scene.label(), summary.computed.size(), summary.resumed,
-             summary.failed.empty() ? "" : fmt::format(", {} failed", summary.failed.size()),
-             summary.not_run ? fmt::format(", {} not run", summary.not_run) : "", summary.seconds,
-             skipped ? fmt::format(" ({} more combinations differ only in knobs their technique "
-                                   "does not use)",
-                                   skipped)
-                     : "");
+  fmt::print(
+      "skinsim sweep: {} configurations on {}: {} computed, {} resumed{}{}{} in {:.1f} s{}\n",
+      summary.total, spec.scene.label(), summary.computed.size(), summary.resumed,
+      summary.failed.empty() ? "" : fmt::format(", {} failed", summary.failed.size()),
+      summary.not_run ? fmt::format(", {} not run", summary.not_run) : "",
+      o.merge && !summary.left_by_shards.empty()
+          ? fmt::format(", {} missing", summary.left_by_shards.size())
+          : "",
+      summary.seconds,
+      skipped ? fmt::format(" ({} more combinations differ only in knobs their technique "
+                            "does not use)",
+                            skipped)
+              : "");
   for (const std::string& w : summary.warnings) {
     fmt::print(stderr, "skinsim sweep: warning: {}\n", w);
   }
@@ -163,7 +225,7 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
         "interrupted: {} of {} configurations finished; wrote {}/{{{}}}; run the same "
         "command again to resume\n",
         table.rows.size(), summary.total, o.out, fmt::join(written, ", "));
-    return kInterruptedExit;
+    return interrupted_exit();
   }
 
   const driver::SweepReportOutcome report = driver::write_sweep_report(table, o.out, o.charts);
@@ -176,6 +238,13 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
   if (!summary.failed.empty()) {
     fmt::print(stderr, "skinsim sweep: {} of {} configurations failed (reasons above)\n",
                summary.failed.size(), summary.total);
+    return 1;
+  }
+  if (o.merge && !summary.left_by_shards.empty()) {
+    fmt::print(stderr,
+               "skinsim sweep: the report shows {} of {} configurations; re-run the shards "
+               "named above (they resume), then --merge again\n",
+               table.rows.size(), summary.total);
     return 1;
   }
   return o.charts && o.require_charts && !report.charts_drawn ? 1 : 0;
@@ -235,6 +304,14 @@ Command add_sweep_command(CLI::App& app) {
   cmd->add_option("--budget-ms", o->budget_ms,
                   "Frame budget for the recommendation (default: the sweep file's, else 33.3)")
       ->check(positive_real(60000.0));  // a minute per frame
+  cmd->add_option("--shard", o->shard,
+                  "Compute only part K of N of the sweep (K/N, K from 0), e.g. one task of a "
+                  "Slurm job array (scripts/slurm/sweep.sh): shards balanced by expected cost "
+                  "share --out safely; no report (see --merge)");
+  cmd->add_flag("--merge", o->merge,
+                "Compute nothing: write the tables and report from the configurations in --out "
+                "(after the shards), naming those missing and their shard; exit 1 if any is")
+      ->excludes("--shard");
   cmd->add_flag("!--no-charts", o->charts,
                 "Write report.html without the VTK charts (no X display needed)");
   cmd->add_flag("--require-charts", o->require_charts,

@@ -8,6 +8,7 @@
 
 #include "driver/sweep_spec.h"
 #include "io/atomic_file.h"
+#include "io/file_lock.h"
 #include "io/read_file.h"
 #include "pipeline/reference/reference.h"
 #include "quality/image.h"
@@ -66,20 +67,28 @@ std::string reference_stem(const pipeline::PipelineConfig& resolved, const Scene
 ReferenceImages cached_reference(const pipeline::GpuScene& scene,
                                  const pipeline::PipelineConfig& resolved,
                                  const SceneSource& source, const std::filesystem::path& refs_dir,
-                                 int threads, bool* rendered) {
+                                 int threads, bool* rendered, std::FILE* notes) {
   const std::string stem = reference_stem(resolved, source);
   const std::filesystem::path image_path = refs_dir / (stem + ".png");
   const std::filesystem::path mask_path = refs_dir / (stem + "_skin.png");
   const std::filesystem::path marker = refs_dir / (stem + ".json");
   const nlohmann::json fingerprint = reference_fingerprint(resolved, source);
 
+  // Processes sharing the directory (sweep shards) take turns: the first renders and writes
+  // the reference, the others wait and then load it, so it is rendered once and never
+  // written by two processes at a time.
+  std::filesystem::create_directories(refs_dir);
+  const io::FileLock lock(refs_dir / (stem + ".lock"), [&] {
+    if (notes) {
+      fmt::print(notes, "waiting for another process rendering {}\n", image_path.string());
+    }
+  });
   ReferenceImages images;
   if (load_cached(marker, fingerprint, image_path, mask_path, images)) {
     if (rendered) *rendered = false;
     return images;
   }
   images = reference_images(pipeline::render_reference(scene, resolved, threads));
-  std::filesystem::create_directories(refs_dir);
   quality::save_png(images.image, image_path);
   quality::save_mask_png(images.skin, mask_path);
   io::write_file_atomically(marker.string(),

@@ -2,6 +2,7 @@
 // cached in the sweep directory (refs/), so a resumed sweep does not render it again.
 #pragma once
 
+#include <cstdio>
 #include <filesystem>
 #include <string>
 
@@ -21,10 +22,11 @@ std::string reference_stem(const pipeline::PipelineConfig& resolved, const Scene
 // Loads refs/<stem>.png and its skin mask from `refs_dir` if a complete cached copy exists,
 // else renders the reference with `threads` host threads and writes it there (atomically;
 // the .json marker last). `rendered` (optional) tells which happened. Both paths give
-// bit-identical images.
+// bit-identical images. Processes sharing `refs_dir` take turns through a lock file
+// (refs/<stem>.lock): one renders, the others wait (saying so on `notes`, if given) and load.
 ReferenceImages cached_reference(const pipeline::GpuScene& scene,
                                  const pipeline::PipelineConfig& resolved,
                                  const SceneSource& source, const std::filesystem::path& refs_dir,
-                                 int threads, bool* rendered = nullptr);
+                                 int threads, bool* rendered = nullptr, std::FILE* notes = nullptr);
 
 }  // namespace skinsim::driver

@@ -106,6 +106,13 @@ void compute(const fs::path& dir, const Job& job) {
   io::write_file_atomically((dir / config_json_path(id)).string(), to_json(stored).dump(1) + "\n");
 }
 
+// What a configuration is expected to cost the host, for balancing shards: its output pixels
+// times its technique's measured host time per pixel (TechniqueSpec::host_ns_per_pixel).
+std::uint64_t expected_host_cost(const pipeline::PipelineConfig& resolved) {
+  return static_cast<std::uint64_t>(resolved.width) * static_cast<std::uint64_t>(resolved.height) *
+         pipeline::find_technique(resolved.technique).host_ns_per_pixel;
+}
+
 }  // namespace
 
 std::string config_json_path(const std::string& id) {
@@ -141,9 +148,23 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
 
   SweepRunSummary summary;
   summary.total = static_cast<int>(configs.size());
+  std::vector<std::uint64_t> expected_costs;
+  for (const SweepConfig& c : configs) {
+    expected_costs.push_back(expected_host_cost(resolve_config(c.config, devices.at(c.device))));
+  }
+  const std::vector<int> shard_of = options.shard
+                                        ? assign_shards(expected_costs, options.shard->count)
+                                        : std::vector<int>(configs.size(), 0);
+  const int this_shard = options.shard ? options.shard->index : 0;
+  const ShardLedger ledger(options.shard ? std::vector<ShardStatus>() : read_shard_statuses(dir),
+                           expected_costs);
+  ShardStatus status;  // written only by a shard
+  if (options.shard) status = {*options.shard, "running", "", {}, {}};
+
   std::vector<Job> jobs;
   std::set<std::string> foreign;  // ids holding another sweep's result
-  for (const SweepConfig& c : configs) {
+  for (std::size_t index = 0; index < configs.size(); ++index) {
+    const SweepConfig& c = configs[index];
     Job job;
     job.config = &c;
     job.device = &devices.at(c.device);
@@ -151,16 +172,23 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
     job.fingerprint = config_fingerprint(c, spec.scene, job.resolved.width, job.resolved.height);
     job.fingerprint["device_profile"] = device_fingerprints.at(c.device);
     summary.fingerprints[c.id] = job.fingerprint;
+    if (shard_of[index] != this_shard) continue;  // another shard's
+    ++summary.this_part;
+    status.configurations.push_back(c.id);
     const Stored state = stored_state(dir, job);
     if (state == Stored::kFinished) {
       ++summary.resumed;
-    } else {
-      if (state == Stored::kForeign) foreign.insert(c.id);
-      jobs.push_back(std::move(job));
+      continue;
     }
+    if (state == Stored::kForeign) foreign.insert(c.id);
+    if (!options.compute || !ledger.empty()) {
+      summary.left_by_shards.push_back({c.id, ledger.why_missing(index, c.id)});
+    }
+    if (options.compute) jobs.push_back(std::move(job));
   }
+  if (options.shard) write_shard_status(dir, status);
 
-  SweepProgress progress(summary.total, summary.resumed, options.progress);
+  SweepProgress progress(summary.this_part, summary.resumed, options.progress);
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
 
   // Scenes and references for the configurations still to do, each built once.
@@ -183,7 +211,7 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
       ReferenceImages images;
       arena.execute([&] {
         images = cached_reference(*s.gpu, job.resolved, spec.scene, dir / "refs", options.threads,
-                                  &rendered);
+                                  &rendered, options.progress);
       });
       summary.references_rendered += rendered ? 1 : 0;
       if (images.skin.count() == 0) {  // still rendered and measured, over the whole frame
@@ -234,6 +262,13 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
   for (const std::string& id : summary.computed) foreign.erase(id);
   summary.foreign_ignored = static_cast<int>(foreign.size());
   summary.cancelled = cancelled(options);
+  if (options.shard) {
+    for (const FailedConfig& f : summary.failed) status.failed.emplace_back(f.id, f.reason);
+    status.state = summary.cancelled        ? "interrupted"
+                   : summary.failed.empty() ? "finished"
+                                            : "failed";
+    write_shard_status(dir, status);
+  }
   summary.seconds = seconds_since(start);
   return summary;
 }

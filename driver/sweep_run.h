@@ -3,6 +3,8 @@
 // finishes. Re-running the same sweep into the same directory skips the configurations whose
 // stored fingerprint still matches. A cancellation flag (set from a SIGINT handler by the CLI)
 // stops new configurations from starting; the ones in flight finish and are written.
+// With a shard (driver/sweep_shard.h) it computes only that part of the sweep, and several
+// processes may run different shards into one directory at once.
 #pragma once
 
 #include <atomic>
@@ -10,9 +12,11 @@
 #include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "driver/sweep_shard.h"
 #include "driver/sweep_spec.h"
 
 namespace skinsim::driver {
@@ -23,6 +27,8 @@ struct SweepRunOptions {
   int threads = 0;       // host threads (0 = all cores); results do not depend on it
   const std::atomic<bool>* cancel = nullptr;  // set: start no further configuration
   std::FILE* progress = stderr;               // null: silent
+  std::optional<SweepShard> shard;            // set: compute only this shard's configurations
+  bool compute = true;                        // false: compute nothing, only take stock (a merge)
   // Called (from a worker thread, one call at a time) after each configuration is written.
   std::function<void(const std::string& id)> on_finished;
 };
@@ -34,13 +40,25 @@ struct FailedConfig {
   std::string reason;
 };
 
+// A configuration without a result; `reason` says which shard left it and why, or is empty
+// when no shard process has written to the directory.
+struct MissingConfig {
+  std::string id;
+  std::string reason;
+};
+
 struct SweepRunSummary {
-  int total = 0;
-  int resumed = 0;                    // already finished by an earlier run, skipped
+  int total = 0;      // configurations of the whole sweep
+  int this_part = 0;  // of them, those this run is responsible for (its shard's, or all)
+  int resumed = 0;    // of this part, already finished by an earlier run, skipped
   std::vector<std::string> computed;  // ids computed by this run, in finishing order
   int not_run = 0;                    // left unstarted because of cancellation
   std::vector<FailedConfig> failed;   // in expansion order
-  int references_rendered = 0;        // references rendered (not loaded from refs/)
+  // This part's configurations without a result when the run started, with the reason the
+  // shard statuses give, listed when computing nothing (a merge: they stay missing) or when
+  // shards have written to the directory (this run computes what they left).
+  std::vector<MissingConfig> left_by_shards;
+  int references_rendered = 0;  // references rendered (not loaded from refs/)
   bool cancelled = false;
   double seconds = 0.0;  // wall time
   // Per configuration id, the fingerprint (config_fingerprint) a stored result must have to

@@ -34,6 +34,11 @@ struct TechniqueSpec {
                         const FrameLights& lights, sim::Gpu& gpu);
   // The programs it can run, with default uniforms, for `skinsim shaders`.
   std::vector<sim::NamedProfile> (*shaders)();
+  // Host time to emulate one frame per output pixel at default knobs, in nanoseconds: the
+  // slope between `skinsim run --threads 1 --no-reference` at 1024x768 and 2048x1536 (AMD
+  // EPYC, 2026-11-24). Only sweep shards use it, to balance their expected work
+  // (driver/sweep_shard.h); the cost model never does.
+  int host_ns_per_pixel = 0;
 };
 
 // Every technique, in registry order (the first is the default).

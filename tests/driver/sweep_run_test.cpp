@@ -16,11 +16,15 @@
 #include "driver/sweep_results.h"
 #include "driver/sweep_spec.h"
 #include "reports/sweep_table.h"
+#include "sweep_test_support.h"
 
 namespace skinsim::driver {
 namespace {
 
 namespace fs = std::filesystem;
+using test::options;
+using test::out_dir;
+using test::read_file;
 
 SweepSpec tiny_spec() {
   SweepSpec spec;
@@ -29,29 +33,6 @@ SweepSpec tiny_spec() {
   spec.scene.head_triangles = 2000;
   spec.scene.texture_size = 64;
   return spec;
-}
-
-// A fresh directory per test, kept after the run for inspection.
-fs::path out_dir(const std::string& name) {
-  const fs::path dir = fs::path(SKINSIM_TEST_OUT_DIR) / name;
-  fs::remove_all(dir);
-  return dir;
-}
-
-SweepRunOptions options(const fs::path& dir, int threads) {
-  SweepRunOptions o;
-  o.out_dir = dir.string();
-  o.data_dir = SKINSIM_TEST_DATA_DIR;
-  o.threads = threads;
-  o.progress = nullptr;
-  return o;
-}
-
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 // Runs the sweep and writes results.json/csv; returns the table.

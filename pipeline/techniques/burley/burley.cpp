@@ -63,6 +63,7 @@ const TechniqueSpec& burley_technique() {
                                   &PipelineConfig::burley_distance_mm, {0.01, 20.0})},
       .render = render,
       .shaders = programs,
+      .host_ns_per_pixel = 2100,
   };
   return spec;
 }

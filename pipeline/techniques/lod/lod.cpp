@@ -27,6 +27,7 @@ const TechniqueSpec& lod_technique() {
       .knobs = {},
       .render = render,
       .shaders = programs,
+      .host_ns_per_pixel = 480,
   };
   return spec;
 }

@@ -61,6 +61,7 @@ const TechniqueSpec& mobile_technique() {
           },
       .render = render,
       .shaders = programs,
+      .host_ns_per_pixel = 680,
   };
   return spec;
 }

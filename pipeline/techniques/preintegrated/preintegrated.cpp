@@ -128,6 +128,7 @@ const TechniqueSpec& preintegrated_technique() {
           },
       .render = render,
       .shaders = programs,
+      .host_ns_per_pixel = 850,
   };
   return spec;
 }

@@ -54,6 +54,7 @@ const TechniqueSpec& ssss_technique() {
       .knobs = {},
       .render = render,
       .shaders = programs,
+      .host_ns_per_pixel = 3000,
   };
   return spec;
 }

@@ -43,6 +43,7 @@ const TechniqueSpec& wrap_technique() {
                           &PipelineConfig::wrap, {0.0, 1.0})},
       .render = render,
       .shaders = programs,
+      .host_ns_per_pixel = 640,
   };
   return spec;
 }
