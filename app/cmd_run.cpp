@@ -115,6 +115,13 @@ int run(const RunOptions& o) {
              device.name, device.gpu, config.width, config.height, knobs.empty() ? "" : ", ",
              fmt::join(knobs, ", "));
   fmt::print("{}", gpu_model::format_frame_table(result.timing));
+  fmt::print("range {:.3f} to {:.3f} ms over the profile's {} uncertain figures together{}\n",
+             result.range.low, result.range.high, result.range.figures,
+             result.range.left_out
+                 ? fmt::format(" ({} that change what the emulator counts are left out: "
+                               "--sensitivity re-renders them)",
+                               result.range.left_out)
+                 : "");
   written.push_back("result.json");
   run_directory.commit();
   fmt::print("wrote {}/{{{}}}\n", o.out, fmt::join(written, ", "));

@@ -19,7 +19,7 @@
 #include "driver/sweep_run.h"
 #include "driver/sweep_spec.h"
 #include "io/temp_files.h"
-#include "reports/pareto.h"
+#include "reports/recommendation.h"
 
 namespace skinsim::app {
 
@@ -109,16 +109,11 @@ driver::SweepSpec build_spec(const SweepOptions& o, const CLI::App& cmd) {
   return spec;
 }
 
-void print_recommendation(const reports::SweepTable& table) {
-  const std::string metric = driver::recommend_metric(table.rows);
-  const auto knee = reports::pareto_knee(table.rows, metric, false, table.budget_ms);
-  if (!knee) {
-    fmt::print("no configuration fits the {:.1f} ms budget\n", table.budget_ms);
-    return;
+void print_recommendations(const reports::SweepTable& table) {
+  for (const reports::Recommendation& r :
+       reports::recommend(table, driver::recommend_metric(table.rows))) {
+    fmt::print("recommended for {}: {}\n", r.group, r.verdict);
   }
-  const reports::ConfigResult& r = table.rows[*knee];
-  fmt::print("recommended: {} ({}): {:.2f} ms ({:.1f} fps), FLIP over {} {:.4f}\n", r.id, r.label,
-             r.frame_ms, r.fps, metric == "flip_skin" ? "skin" : "the frame", r.quality.at(metric));
 }
 
 // A shard's run: its configurations into the shared directory, no tables or report (the
@@ -233,7 +228,7 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
     written.push_back(report.charts_drawn ? "report.html + charts" : "report.html (no charts)");
   }
   if (!report.note.empty()) fmt::print(stderr, "skinsim sweep: note: {}\n", report.note);
-  print_recommendation(table);
+  print_recommendations(table);
   fmt::print("wrote {}/{{{}}}\n", o.out, fmt::join(written, ", "));
   if (!summary.failed.empty()) {
     fmt::print(stderr, "skinsim sweep: {} of {} configurations failed (reasons above)\n",

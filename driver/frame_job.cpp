@@ -25,6 +25,7 @@ FrameResult run_frame(const pipeline::GpuScene& scene, const pipeline::PipelineC
   r.config = config;
   r.output = pipeline::render_frame(scene, config, gpu);
   r.timing = gpu_model::estimate_frame(r.output.passes, device);
+  r.range = gpu_model::frame_ms_range(r.output.passes, device);
   return r;
 }
 

@@ -13,6 +13,7 @@
 #include "driver/frame_quality.h"
 #include "driver/scene_source.h"
 #include "gpu_model/device_profile.h"
+#include "gpu_model/sensitivity.h"
 #include "gpu_model/timing.h"
 #include "pipeline/config.h"
 #include "pipeline/frame.h"
@@ -24,6 +25,8 @@ struct FrameResult {
   pipeline::PipelineConfig config;  // with the resolution resolved
   pipeline::FrameOutput output;
   gpu_model::FrameTiming timing;
+  // timing.frame_ms over the profile's uncertain figures (gpu_model::frame_ms_range).
+  gpu_model::FrameMsRange range;
 };
 
 // The config with its resolution resolved (default: the device's display), validated: throws

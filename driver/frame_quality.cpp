@@ -36,7 +36,17 @@ FrameQuality evaluate_quality(const sim::RenderTarget& frame, const ReferenceIma
     q.metrics["psnr_skin"] = quality::psnr(test, reference.image, &reference.skin);
     q.metrics["ssim_skin"] = quality::ssim(test, reference.image, &reference.skin);
     q.metrics["flip_skin"] = flip.mean;
+    // The mean hides local artefacts (a halo, a shadow edge): the tail and the visible area
+    // show them (quality::flip_statistics).
+    const quality::FlipStatistics skin = quality::flip_statistics(flip.map, &reference.skin);
+    q.metrics["flip_skin_p95"] = skin.p95;
+    q.metrics["flip_skin_p99"] = skin.p99;
+    q.metrics["visible_skin_pct"] = skin.visible_percent();
+    q.metrics["visible_skin_px"] = static_cast<double>(skin.visible_pixels);
   }
+  const quality::FlipStatistics whole = quality::flip_statistics(flip.map);
+  q.metrics["visible_frame_pct"] = whole.visible_percent();
+  q.metrics["visible_frame_px"] = static_cast<double>(whole.visible_pixels);
   // The FLIP map covers every pixel; only its mean depends on the mask.
   double sum = 0.0;
   for (const float v : flip.map.values) sum += v;

@@ -12,8 +12,10 @@
 namespace skinsim::driver {
 
 struct FrameQuality {
-  // Keys: psnr_frame, ssim_frame, flip_frame, and psnr_skin, ssim_skin, flip_skin when the
-  // reference shows skin (has_skin_metrics).
+  // Keys: psnr_frame, ssim_frame, flip_frame, visible_frame_pct/px, and psnr_skin,
+  // ssim_skin, flip_skin, flip_skin_p95/p99, visible_skin_pct/px when the reference shows skin
+  // (has_skin_metrics). visible_*: pixels whose FLIP error is above
+  // quality::flip_visibility_threshold(), as a percentage of the region and as a count.
   std::map<std::string, double> metrics;
   quality::Image error_map;  // FLIP error, magma colour map
   bool has_skin_metrics() const { return metrics.count("flip_skin") > 0; }

@@ -90,6 +90,10 @@ json frame_result_json(const FrameResult& r, const std::string& scene_label) {
   json counters = json::array();
   for (const sim::PassCounters& p : r.output.passes) counters.push_back(to_json(p));
   json timing = gpu_model::to_json(r.timing);
+  timing["frame_ms_range"] = {{"low", r.range.low},
+                              {"high", r.range.high},
+                              {"uncertain_figures", r.range.figures},
+                              {"figures_needing_rerender_left_out", r.range.left_out}};
   return {{"tool", "skinsim"},    {"scene", scene_label},
           {"config", config},     {"technique", r.output.decisions},
           {"counters", counters}, {"timing", timing}};

@@ -9,12 +9,13 @@
 #include "gpu_model/sensitivity.h"
 #include "gpu_model/timing.h"
 #include "io/read_file.h"
+#include "quality/metrics.h"
 
 namespace skinsim::driver {
 
 namespace {
 
-constexpr int kFormatVersion = 1;
+constexpr int kFormatVersion = 2;  // 2: frame_ms_low/high, FLIP percentiles and visibility
 
 std::map<std::string, double> dram_by_cause(const gpu_model::DramBytes& d) {
   return {{"parameter_write", d.parameter_write},
@@ -30,14 +31,21 @@ std::map<std::string, double> dram_by_cause(const gpu_model::DramBytes& d) {
 
 reports::ConfigResult config_row(const SweepConfig& config, const FrameResult& frame,
                                  const FrameQuality& quality, const std::string& frame_image,
-                                 const std::string& error_image) {
+                                 const std::string& error_image,
+                                 const std::string& reference_image) {
   reports::ConfigResult row;
   row.id = config.id;
   row.label = config.label;
   for (const auto& [knob, value] : all_knobs(config, frame.config.width, frame.config.height)) {
     row.knobs[knob] = value;
   }
+  row.reference_image = reference_image;
+  const double visible_px =
+      quality.metrics.at(quality.has_skin_metrics() ? "visible_skin_px" : "visible_frame_px");
+  row.visible_vs_reference = visible_px >= quality::flip_visible_area_pixels();
   row.frame_ms = frame.timing.frame_ms;
+  row.frame_ms_low = frame.range.low;
+  row.frame_ms_high = frame.range.high;
   row.fps = frame.timing.fps;
   row.dram_bytes = frame.timing.dram_bytes;
   for (const gpu_model::PassTiming& p : frame.timing.passes) {

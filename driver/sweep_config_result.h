@@ -29,10 +29,13 @@ struct StoredConfig {
 inline constexpr const char* kHeatmapPass = "skin";
 
 // The table row of a finished frame: every knob, frame and per-pass cost with DRAM bytes by
-// cause, the quality metrics; image paths relative to the sweep directory.
+// cause, the quality metrics and whether it differs visibly from the reference; image paths
+// relative to the sweep directory. The comparisons with other rows come later
+// (sweep_comparisons.h).
 reports::ConfigResult config_row(const SweepConfig& config, const FrameResult& frame,
                                  const FrameQuality& quality, const std::string& frame_image,
-                                 const std::string& error_image);
+                                 const std::string& error_image,
+                                 const std::string& reference_image);
 
 // Per-tile ms and bottleneck of the pass named `pass` (nullopt if the frame has none).
 std::optional<reports::TileHeatmap> pass_heatmap(const FrameResult& frame, const std::string& pass,

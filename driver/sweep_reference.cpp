@@ -64,13 +64,21 @@ std::string reference_stem(const pipeline::PipelineConfig& resolved, const Scene
                      short_hash(reference_fingerprint(resolved, scene).dump()).substr(0, 8));
 }
 
+std::string reference_image_path(const std::string& stem) {
+  return "refs/" + stem + ".png";
+}
+
+std::string reference_mask_path(const std::string& reference_image) {
+  return std::filesystem::path(reference_image).replace_extension().string() + "_skin.png";
+}
+
 ReferenceImages cached_reference(const pipeline::GpuScene& scene,
                                  const pipeline::PipelineConfig& resolved,
                                  const SceneSource& source, const std::filesystem::path& refs_dir,
                                  int threads, bool* rendered, std::FILE* notes) {
   const std::string stem = reference_stem(resolved, source);
   const std::filesystem::path image_path = refs_dir / (stem + ".png");
-  const std::filesystem::path mask_path = refs_dir / (stem + "_skin.png");
+  const std::filesystem::path mask_path = refs_dir / reference_mask_path(stem + ".png");
   const std::filesystem::path marker = refs_dir / (stem + ".json");
   const nlohmann::json fingerprint = reference_fingerprint(resolved, source);
 

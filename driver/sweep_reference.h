@@ -19,6 +19,11 @@ namespace skinsim::driver {
 // light and framing: pipeline/knob.h), so configurations that differ in other knobs share it.
 std::string reference_stem(const pipeline::PipelineConfig& resolved, const SceneSource& scene);
 
+// refs/<stem>.png, relative to the sweep directory, and its skin mask's path from it
+// (refs/<stem>_skin.png).
+std::string reference_image_path(const std::string& stem);
+std::string reference_mask_path(const std::string& reference_image);
+
 // Loads refs/<stem>.png and its skin mask from `refs_dir` if a complete cached copy exists,
 // else renders the reference with `threads` host threads and writes it there (atomically;
 // the .json marker last). `rendered` (optional) tells which happened. Both paths give

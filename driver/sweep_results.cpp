@@ -8,10 +8,12 @@
 #include <optional>
 #include <set>
 
+#include "driver/sweep_comparisons.h"
 #include "driver/sweep_config_result.h"
+#include "driver/sweep_crops.h"
 #include "driver/sweep_run.h"
 #include "reports/csv_writer.h"
-#include "reports/pareto.h"
+#include "reports/recommendation.h"
 
 namespace skinsim::driver {
 
@@ -64,14 +66,19 @@ reports::SweepTable assemble_sweep_table(const SweepSpec& spec,
   table.resolution = joined(resolutions);
   if (stored.empty()) return table;
 
-  const std::optional<std::size_t> knee =
-      reports::pareto_knee(table.rows, recommend_metric(table.rows), false, table.budget_ms);
-  const StoredConfig& chosen = stored[knee.value_or(0)];
+  const std::string metric = recommend_metric(table.rows);
+  add_comparisons(spec, table, out_dir, metric);
+  const std::vector<reports::Recommendation> recommendations = reports::recommend(table, metric);
+  table.panels = write_comparison_panels(table, recommendations, out_dir, metric == "flip_skin");
+  const std::optional<std::size_t> first = recommendations.front().chosen;
+  const StoredConfig& chosen = stored[first.value_or(0)];
   table.heatmap = chosen.heatmap;
   table.sensitivity = chosen.sensitivity;
-  table.assumptions.push_back(fmt::format(
-      "Device figures, heat map and sensitivity are those of configuration '{}' ({}).",
-      chosen.row.id, knee ? "the recommended one" : "none fits the budget; the first one"));
+  table.assumptions.push_back(
+      fmt::format("Device figures, heat map and sensitivity are those of configuration '{}' ({}).",
+                  chosen.row.id,
+                  first ? fmt::format("the recommended one for {}", recommendations.front().group)
+                        : "none fits the budget; the first one"));
   table.assumptions.insert(table.assumptions.end(), chosen.assumptions.begin(),
                            chosen.assumptions.end());
   return table;

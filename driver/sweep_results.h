@@ -20,9 +20,10 @@ std::string recommend_metric(const std::vector<reports::ConfigResult>& rows);
 
 // Rows for the configurations of `configs` that are finished in `out_dir` with the fingerprint
 // run_sweep expects (`fingerprints`, SweepRunSummary::fingerprints), in expansion order;
-// unfinished ones and another sweep's results stored under the same ids are left out. The heat map,
-// sensitivity and assumptions come from the recommended row (reports::pareto_knee on flip_skin
-// within the budget), else the first.
+// unfinished ones and another sweep's results stored under the same ids are left out. Each row
+// is compared with its group's best configurations (sweep_comparisons.h). The heat map,
+// sensitivity and assumptions come from the first group's recommended row
+// (reports::recommend), else the first row.
 reports::SweepTable assemble_sweep_table(const SweepSpec& spec,
                                          const std::vector<SweepConfig>& configs,
                                          const std::map<std::string, nlohmann::json>& fingerprints,

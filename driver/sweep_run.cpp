@@ -53,6 +53,7 @@ struct Job {
   nlohmann::json fingerprint;
   const pipeline::GpuScene* scene = nullptr;
   const ReferenceImages* reference = nullptr;
+  std::string reference_image;  // relative path of its cached reference PNG
 };
 
 bool cancelled(const SweepRunOptions& o) {
@@ -98,8 +99,8 @@ void compute(const fs::path& dir, const Job& job) {
   quality::save_png(measured.error_map, dir / config_error_path(id));
   StoredConfig stored;
   stored.fingerprint = job.fingerprint;
-  stored.row =
-      config_row(*job.config, frame, measured, config_frame_path(id), config_error_path(id));
+  stored.row = config_row(*job.config, frame, measured, config_frame_path(id),
+                          config_error_path(id), job.reference_image);
   if (const std::string bad = non_finite_figure(stored.row); !bad.empty()) throw SweepError(bad);
   stored.heatmap = pass_heatmap(frame, kHeatmapPass, id);
   add_sensitivity(frame, *job.device, stored);
@@ -205,6 +206,7 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
     }
     job.scene = s.gpu.get();
     const std::string stem = reference_stem(job.resolved, spec.scene);
+    job.reference_image = reference_image_path(stem);
     auto it = references.find(stem);
     if (it == references.end()) {
       bool rendered = false;

@@ -1,5 +1,7 @@
 #include "gpu_model/sensitivity.h"
 
+#include <algorithm>
+
 #include "gpu_model/frame_cost.h"
 
 namespace skinsim::gpu_model {
@@ -41,6 +43,32 @@ std::vector<SensitivityRow> sensitivity(const std::vector<sim::PassCounters>& pa
     rows.push_back(std::move(row));
   }
   return rows;
+}
+
+FrameMsRange frame_ms_range(const std::vector<sim::PassCounters>& passes,
+                            const DeviceProfile& profile) {
+  FrameMsRange range;
+  range.base = estimate_frame(passes, profile).frame_ms;
+  DeviceProfile fastest = profile;
+  DeviceProfile slowest = profile;
+  for (const FigureSpec& spec : figure_specs()) {
+    const Figure& f = profile.*spec.member;
+    if (!f.has_range) continue;
+    if (spec.affects_counters) {
+      ++range.left_out;
+      continue;
+    }
+    ++range.figures;
+    const double at_min = *frame_ms_with(passes, profile, range.base, spec, f.min, {});
+    const double at_max = *frame_ms_with(passes, profile, range.base, spec, f.max, {});
+    (fastest.*spec.member).value = at_min <= at_max ? f.min : f.max;
+    (slowest.*spec.member).value = at_min <= at_max ? f.max : f.min;
+  }
+  // The corners bound the base in practice; min/max keep the stated order if a figure's
+  // effect reverses when others move.
+  range.low = std::min(range.base, estimate_frame(passes, fastest).frame_ms);
+  range.high = std::max(range.base, estimate_frame(passes, slowest).frame_ms);
+  return range;
 }
 
 }  // namespace skinsim::gpu_model

@@ -35,4 +35,21 @@ using Recount = std::function<std::vector<sim::PassCounters>(const DeviceProfile
 std::vector<SensitivityRow> sensitivity(const std::vector<sim::PassCounters>& passes,
                                         const DeviceProfile& profile, const Recount& recount = {});
 
+// The frame time over the profile's uncertain figures together: the cost model evaluated at
+// the corner of the figures' box where the frame is fastest, and where it is slowest. Each
+// figure's end is picked from its own one-at-a-time row (the end that lowers, or raises, the
+// frame time), then all are set at once, so the range includes how the figures compound (two
+// slow units on one pass). Figures that change the emulator's counters (texture cache, tile
+// size) need a re-render per end and are left out (`left_out` counts them): the range is the
+// cost model's uncertainty for the counted work, not the emulator's.
+struct FrameMsRange {
+  double low = 0.0;
+  double base = 0.0;
+  double high = 0.0;
+  int figures = 0;   // uncertain figures included
+  int left_out = 0;  // uncertain figures that need a re-render, not included
+};
+FrameMsRange frame_ms_range(const std::vector<sim::PassCounters>& passes,
+                            const DeviceProfile& profile);
+
 }  // namespace skinsim::gpu_model

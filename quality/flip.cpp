@@ -201,7 +201,29 @@ double max_colour_difference() {
   return std::pow(flip_color::hyab(hunt_lab({0, 1, 0}), hunt_lab({0, 0, 1})), kQc);
 }
 
+// Section 4.3's colour error of a colour difference `hyab` (HyAB in Hunt-adjusted L*a*b*)
+// where there are no edges or points: small differences compressed into [0, pt), large ones
+// into [pt, 1].
+double colour_error(double hyab, double cmax) {
+  const double colour = std::pow(hyab, kQc);
+  const double pccmax = kPc * cmax;
+  return colour < pccmax ? kPt / pccmax * colour
+                         : kPt + (colour - pccmax) / (cmax - pccmax) * (1.0 - kPt);
+}
+
 }  // namespace
+
+double flip_visibility_threshold() {
+  // One just-noticeable difference of lightness, Delta E*ab = 2.3 (Mahy, Van Eycken and
+  // Oosterlinck 1994, as Sharma 2003 quotes it); a pure lightness step has HyAB = |Delta L*|.
+  constexpr double kJndDeltaE = 2.3;
+  return colour_error(kJndDeltaE, max_colour_difference());
+}
+
+double flip_visible_area_pixels(const FlipParams& params) {
+  const double digit = kDigitWidthDegrees * params.pixels_per_degree;
+  return digit * digit;
+}
 
 double pixels_per_degree(double distance_m, double monitor_width_m, int monitor_width_px) {
   return distance_m * (monitor_width_px / monitor_width_m) * (kPi / 180.0);
@@ -221,7 +243,6 @@ FlipResult flip(const Image& test, const Image& reference, const Mask* mask,
   const ImageOutputs reference_outputs = add_image_filters(stream, 1, ppd, features);
 
   const double cmax = max_colour_difference();
-  const double pccmax = kPc * cmax;
   FlipResult result;
   result.map = ScalarMap{test.width, test.height, std::vector<float>(test.pixel_count())};
   const SrgbDecoder decode;
@@ -239,16 +260,12 @@ FlipResult flip(const Image& test, const Image& reference, const Mask* mask,
         out[x] = 0.0f;
         continue;
       }
-      const double colour = std::pow(distance, kQc);
-      // Section 4.3: compress small differences into [0, pt) and large ones into [pt, 1].
-      const double colour_error = colour < pccmax
-                                      ? kPt / pccmax * colour
-                                      : kPt + (colour - pccmax) / (cmax - pccmax) * (1.0 - kPt);
+      const double colour = colour_error(distance, cmax);
       const double feature_difference =
           std::max(std::abs(t.edge - r.edge), std::abs(t.point - r.point));
       const double feature_error = std::sqrt(feature_difference / std::numbers::sqrt2);  // ^qf
       // Section 4.5: features amplify the colour error.
-      out[x] = static_cast<float>(std::pow(colour_error, 1.0 - feature_error));
+      out[x] = static_cast<float>(std::pow(colour, 1.0 - feature_error));
     }
   };
   run_separable_stream(stream, source, sink);

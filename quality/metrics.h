@@ -4,6 +4,8 @@
 // a fixed order. Bad input (size mismatch, empty mask, NaN) throws QualityError.
 #pragma once
 
+#include <cstddef>
+
 #include "quality/image.h"
 
 namespace skinsim::quality {
@@ -38,5 +40,27 @@ struct FlipResult {
 
 FlipResult flip(const Image& test, const Image& reference, const Mask* mask = nullptr,
                 const FlipParams& params = {});
+
+// When a FLIP difference is visible. FLIP has no threshold of its own; skinsim calls a pixel
+// visibly different when its error exceeds what one just-noticeable lightness step
+// (Delta E*ab = 2.3) gives in a uniform region, where FLIP's edge and point terms are zero:
+// about 0.10. A frame differs visibly when such pixels cover at least one FLIP "digit"
+// (0.082 degrees, the feature scale of the paper's section 4.4) squared: about 30 pixels at
+// the default observer's 67 pixels per degree. docs/quality-metrics.md states the rule.
+double flip_visibility_threshold();
+double flip_visible_area_pixels(const FlipParams& params = {});
+
+// Statistics of a FLIP map over a mask (every pixel if null): the mean, the 95th and 99th
+// percentiles (nearest rank), and the pixels above flip_visibility_threshold().
+struct FlipStatistics {
+  double mean = 0.0;
+  double p95 = 0.0;
+  double p99 = 0.0;
+  std::size_t visible_pixels = 0;
+  std::size_t pixels = 0;
+  double visible_percent() const;
+  bool visible(const FlipParams& params = {}) const;  // visible_pixels >= the area above
+};
+FlipStatistics flip_statistics(const ScalarMap& map, const Mask* mask = nullptr);
 
 }  // namespace skinsim::quality

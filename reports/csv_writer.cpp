@@ -49,6 +49,10 @@ std::string number(double v) {
   return fmt::format("{}", v);
 }
 
+std::string yes_no(bool value) {
+  return value ? "yes" : "no";
+}
+
 }  // namespace
 
 std::string csv_field(const std::string& text) {
@@ -65,12 +69,15 @@ std::vector<std::string> sweep_csv_columns(const SweepTable& table) {
   const Columns c = collect_columns(table);
   std::vector<std::string> cols = {"id", "label"};
   cols.insert(cols.end(), c.knobs.begin(), c.knobs.end());
-  cols.insert(cols.end(), {"frame_ms", "fps", "dram_bytes"});
+  cols.insert(cols.end(), {"frame_ms", "frame_ms_low", "frame_ms_high", "fps", "dram_bytes"});
   for (const std::string& p : c.passes) {
     cols.push_back(p + ".ms");
     cols.push_back(p + ".bottleneck");
   }
   cols.insert(cols.end(), c.metrics.begin(), c.metrics.end());
+  cols.insert(cols.end(),
+              {"visible_vs_reference", "group", "finest", "knob_flip", "knob_visible_px",
+               "knob_visible", "best", "vs_best_flip", "vs_best_visible_px", "vs_best_visible"});
   std::set<std::string> seen;
   for (const std::string& col : cols) {
     if (!seen.insert(col).second) {
@@ -90,7 +97,8 @@ std::string sweep_csv(const SweepTable& table) {
     const std::vector<PassCost> passes = merged_passes(r);
     std::vector<std::string> cells = {r.id, r.label};
     for (const std::string& k : c.knobs) cells.push_back(knob_value(r, k));
-    cells.insert(cells.end(), {number(r.frame_ms), number(r.fps), number(r.dram_bytes)});
+    cells.insert(cells.end(), {number(r.frame_ms), number(r.frame_ms_low), number(r.frame_ms_high),
+                               number(r.fps), number(r.dram_bytes)});
     for (const std::string& name : c.passes) {
       auto it = std::find_if(passes.begin(), passes.end(),
                              [&](const PassCost& p) { return p.name == name; });
@@ -100,6 +108,16 @@ std::string sweep_csv(const SweepTable& table) {
     for (const std::string& m : c.metrics) {
       auto it = r.quality.find(m);
       cells.push_back(it == r.quality.end() ? "" : number(it->second));
+    }
+    cells.push_back(r.reference_image.empty() ? "" : yes_no(r.visible_vs_reference));
+    cells.push_back(r.group);
+    for (const std::optional<FrameComparison>& against : {r.vs_finest, r.vs_best}) {
+      if (!against) {
+        cells.insert(cells.end(), {"", "", "", ""});
+        continue;
+      }
+      cells.insert(cells.end(), {against->against, number(against->flip_mean),
+                                 number(against->visible_px), yes_no(against->visible)});
     }
     append_record(out, cells);
   }

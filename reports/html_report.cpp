@@ -11,6 +11,7 @@
 #include "reports/csv_writer.h"
 #include "reports/error.h"
 #include "reports/pareto.h"
+#include "reports/recommendation.h"
 #include "reports/report_charts.h"
 
 namespace skinsim::reports {
@@ -28,6 +29,12 @@ table { border-collapse: collapse; font-size: 0.9em; }
 th, td { border: 1px solid #ccc; padding: 0.25em 0.6em; text-align: right; }
 th { background: #eee; } td.text { text-align: left; }
 tr.chosen { background: #ffe9e9; font-weight: bold; } tr.over { color: #888; }
+.wide { overflow-x: auto; max-width: 100%; }
+.stack { position: relative; max-width: 1024px; } .stack img { width: 100%; display: block; }
+.stack img.over { position: absolute; top: 0; left: 0; }
+input.split { width: 100%; max-width: 1024px; }
+table.crops td { text-align: center; } table.crops th { font-size: 0.8em; max-width: 140px; }
+table.crops img { width: 128px; image-rendering: pixelated; } img.bar { vertical-align: middle; }
 figure { margin: 1.5em 0; } figure img { width: 100%; border: 1px solid #ddd; }
 .thumbs { display: flex; flex-wrap: wrap; gap: 1em; }
 .thumb { font-size: 0.8em; width: 330px; } .thumb img { width: 160px; border: 1px solid #ccc; }
@@ -92,35 +99,114 @@ std::string header_section(const SweepTable& t, const ReportOptions& o) {
 }
 
 std::string recommendation_section(const SweepTable& t, const ReportOptions& o,
-                                   const std::optional<std::size_t>& knee) {
+                                   const std::vector<Recommendation>& recommendations) {
   std::string h = "<h2>Recommendation</h2>\n<div class=\"recommend\">\n";
-  if (knee) {
-    const ConfigResult& r = t.rows[*knee];
-    h += "<p><b>" + esc(name_of(r)) + "</b> (id <code>" + esc(r.id) + "</code>): " +
-         esc(fmt::format("{:.2f} ms, {:.1f} fps, {} = {:.4g}, {:.1f} MB DRAM per frame", r.frame_ms,
-                         r.fps, o.quality_metric, r.quality.at(o.quality_metric),
-                         r.dram_bytes / 1e6)) +
-         ".</p>\n<p>Knobs: ";
-    for (const auto& [k, v] : r.knobs) h += "<code>" + esc(k) + "=" + esc(v) + "</code> ";
-    h += "</p>\n";
-  } else if (std::none_of(t.rows.begin(), t.rows.end(), [&](const ConfigResult& r) {
-               return r.quality.count(o.quality_metric) > 0;
-             })) {
+  if (std::none_of(t.rows.begin(), t.rows.end(),
+                   [&](const ConfigResult& r) { return r.quality.count(o.quality_metric) > 0; })) {
     h += "<p><b>No configuration has the quality metric " + esc(o.quality_metric) +
          ", so none is recommended.</b></p>\n";
-  } else {
-    h += "<p><b>No configuration with " + esc(o.quality_metric) +
-         " fits the frame budget.</b></p>\n";
   }
-  const auto fastest = std::min_element(
-      t.rows.begin(), t.rows.end(),
-      [](const ConfigResult& a, const ConfigResult& b) { return a.frame_ms < b.frame_ms; });
-  if (fastest != t.rows.end()) {
-    h += "<p>For comparison, the fastest configuration is " + esc(name_of(*fastest)) + " at " +
-         ms(fastest->frame_ms) + " ms.</p>\n";
+  for (const Recommendation& rec : recommendations) {
+    h += "<p><b>" + esc(rec.group.empty() ? "All configurations" : rec.group) +
+         "</b>: " + esc(rec.verdict) + ".";
+    if (rec.chosen) {
+      const ConfigResult& r = t.rows[*rec.chosen];
+      h += " " +
+           esc(fmt::format("{:.1f} fps, {} = {:.4g} against the reference, {:.1f} MB DRAM "
+                           "per frame.",
+                           r.fps, o.quality_metric, r.quality.at(o.quality_metric),
+                           r.dram_bytes / 1e6)) +
+           "<br>Knobs: ";
+      for (const auto& [k, v] : r.knobs) h += "<code>" + esc(k) + "=" + esc(v) + "</code> ";
+    }
+    h += "</p>\n";
   }
-  h += "<p><i>How it is chosen:</i> " + esc(knee_rule_text()) + "</p>\n</div>\n";
+  h += "<p><i>How it is chosen:</i> " + esc(recommendation_rule_text()) + "</p>\n";
+  h += "<p><i>Frame-time ranges</i> (low to high) are the cost model re-evaluated with every "
+       "uncertain device figure at the end of its plausible range that makes the frame faster, "
+       "or slower, all at once; figures that change what the emulator counts (texture cache, "
+       "tile size) would need a re-render and are not in the range.</p>\n</div>\n";
   return h;
+}
+
+// A slider between two of the panel's full frames (a self-contained script; no network), then
+// per window the crops at 1:1 and magnified, with the difference's colour scale.
+std::string panel_html(const ComparisonPanel& p, std::size_t index) {
+  const std::vector<std::pair<std::string, std::string>> frames = {
+      {"reference", p.reference_image},
+      {"recommended: " + p.chosen, p.chosen_image},
+      {"best: " + p.best, p.best_image}};
+  const std::size_t count = p.best == p.chosen ? 2 : 3;
+  const auto options = [&](std::size_t selected) {
+    std::string o;
+    for (std::size_t i = 0; i < count; ++i) {
+      o += "<option value=\"" + link(frames[i].second) + "\"" + (i == selected ? " selected" : "") +
+           ">" + esc(frames[i].first) + "</option>";
+    }
+    return o;
+  };
+  const std::string id = fmt::format("cmp{}", index);
+  std::string h = "<h3>" + esc(p.group) + "</h3>\n";
+  h += "<div class=\"compare\" id=\"" + id + "\">\n<p>Left <select class=\"left\">" + options(1) +
+       "</select> right <select class=\"right\">" + options(0) +
+       "</select> <button type=\"button\" class=\"flip\">flip</button> (drag the slider, or "
+       "flip to alternate the two as FLIP's observer does)</p>\n";
+  h += "<div class=\"stack\"><img class=\"under\" src=\"" + link(frames[0].second) +
+       "\" alt=\"right image\"><img class=\"over\" src=\"" + link(frames[1].second) +
+       "\" alt=\"left image\"></div>\n<input type=\"range\" min=\"0\" max=\"100\" "
+       "value=\"50\" class=\"split\">\n</div>\n";
+  for (const CropWindow& w : p.windows) {
+    h += "<p><b>" + esc(w.why) + "</b>: " +
+         esc(fmt::format("{}x{} pixels at ({}, {}); below, the {}x{} pixels at ({}, {}) "
+                         "magnified {}x",
+                         w.size, w.size, w.x, w.y, w.zoom_size, w.zoom_size, w.zoom_x, w.zoom_y,
+                         w.zoom)) +
+         "</p>\n<table class=\"crops\"><tr>";
+    for (const auto& [what, path] : w.images) h += "<th>" + esc(what) + "</th>";
+    h += "</tr>\n";
+    for (const auto* row : {&w.images, &w.zoomed}) {
+      h += "<tr>";
+      for (const auto& [what, path] : *row) {
+        h += "<td><a href=\"" + link(path) + "\"><img src=\"" + link(path) + "\" alt=\"" +
+             esc(what) + "\"></a></td>";
+      }
+      h += "</tr>\n";
+    }
+    h += "</table>\n";
+  }
+  h += "<p>Difference colour scale: <img class=\"bar\" src=\"" + link(p.colour_bar) +
+       "\" alt=\"magma colour scale\"> " +
+       esc(fmt::format("black = identical, brightest = a difference of 1/{:g} of full scale or "
+                       "more (the mean over R, G, B of |recommended - reference| in display "
+                       "values, times {:g})",
+                       p.difference_gain, p.difference_gain)) +
+       "</p>\n";
+  return h;
+}
+
+constexpr const char* kCompareScript = R"(
+document.querySelectorAll('.compare').forEach(function (c) {
+  var over = c.querySelector('img.over'), under = c.querySelector('img.under');
+  var split = c.querySelector('input.split');
+  function clip() { over.style.clipPath = 'inset(0 ' + (100 - split.value) + '% 0 0)'; }
+  split.addEventListener('input', clip);
+  c.querySelector('select.left').addEventListener('change', function () { over.src = this.value; });
+  c.querySelector('select.right').addEventListener('change', function () { under.src = this.value; });
+  c.querySelector('button.flip').addEventListener('click', function () {
+    split.value = split.value > 50 ? 0 : 100; clip();
+  });
+  clip();
+});
+)";
+
+std::string comparison_section(const SweepTable& t) {
+  if (t.panels.empty()) return "";
+  std::string h =
+      "<h2>What the recommendation looks like</h2>\n<p>The reference, the recommended "
+      "configuration and the group's best configuration, whole and where they differ most "
+      "(windows found in the FLIP error over skin). Click any image for full size.</p>\n";
+  for (std::size_t i = 0; i < t.panels.size(); ++i) h += panel_html(t.panels[i], i);
+  return h + "<script>" + kCompareScript + "</script>\n";
 }
 
 std::string charts_section(const std::vector<ReportFigure>& figures, bool drawn) {
@@ -135,8 +221,12 @@ std::string charts_section(const std::vector<ReportFigure>& figures, bool drawn)
   return h;
 }
 
+std::string yes_no(bool v) {
+  return v ? "yes" : "no";
+}
+
 std::string table_section(const SweepTable& t, const ReportOptions& o,
-                          const std::optional<std::size_t>& knee) {
+                          const std::set<std::size_t>& chosen) {
   const auto [varying, fixed] = split_knobs(t);
   const std::vector<std::string> metrics = metric_names(t);
   std::set<std::size_t> front;
@@ -150,30 +240,52 @@ std::string table_section(const SweepTable& t, const ReportOptions& o,
     h += "</p>\n";
   }
   h += "<p>Bold: recommended. Grey: over budget. Pareto: on the front of frame time vs " +
-       esc(o.quality_metric) + ".</p>\n<table>\n<tr><th>configuration</th>";
+       esc(o.quality_metric) +
+       ". Visible: whether the frame differs visibly (the rule under Recommendation) from the "
+       "reference, and from the best configuration of its own technique in its group "
+       "(<i>finest</i>): the knob's cost in quality, apart from what the technique "
+       "approximates.</p>\n<div class=\"wide\"><table>\n<tr><th>configuration</th>";
+  h += "<th>frame ms</th><th>range ms</th><th>" + esc(o.quality_metric) +
+       "</th><th>visible vs reference</th><th>FLIP vs finest</th><th>visible vs finest</th>";
   for (const std::string& k : varying) h += "<th>" + esc(k) + "</th>";
-  h += "<th>frame ms</th><th>fps</th><th>bottleneck</th><th>DRAM MB</th>";
-  for (const std::string& m : metrics) h += "<th>" + esc(m) + "</th>";
+  h += "<th>fps</th><th>bottleneck</th><th>DRAM MB</th>";
+  for (const std::string& m : metrics) {
+    if (m != o.quality_metric) h += "<th>" + esc(m) + "</th>";
+  }
   h += "<th>Pareto</th></tr>\n";
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
     const ConfigResult& r = t.rows[i];
-    const char* cls = knee && *knee == i ? " class=\"chosen\""
-                                         : (r.frame_ms > t.budget_ms ? " class=\"over\"" : "");
+    const char* cls =
+        chosen.count(i) ? " class=\"chosen\"" : (r.frame_ms > t.budget_ms ? " class=\"over\"" : "");
     h += std::string("<tr") + cls + "><td class=\"text\">" + esc(name_of(r)) + "</td>";
+    const auto quality = r.quality.find(o.quality_metric);
+    h += "<td>" + ms(r.frame_ms) + "</td><td>" + ms(r.frame_ms_low) + "&ndash;" +
+         ms(r.frame_ms_high) + "</td><td>" +
+         (quality == r.quality.end() ? std::string("-") : metric_text(quality->second)) +
+         "</td><td class=\"text\">" +
+         (r.reference_image.empty() ? "-" : yes_no(r.visible_vs_reference)) + "</td>";
+    if (r.vs_finest && r.vs_finest->against != r.id) {
+      h += "<td>" + metric_text(r.vs_finest->flip_mean) + "</td><td class=\"text\">" +
+           yes_no(r.vs_finest->visible) + fmt::format(" ({:.0f} px)", r.vs_finest->visible_px) +
+           "</td>";
+    } else {
+      h += std::string("<td>-</td><td class=\"text\">") + (r.vs_finest ? "finest" : "-") + "</td>";
+    }
     for (const std::string& k : varying) {
       const std::string v = knob_value(r, k);  // empty: the configuration does not use it
       h += "<td class=\"text\">" + (v.empty() ? std::string("-") : esc(v)) + "</td>";
     }
-    h += "<td>" + ms(r.frame_ms) + "</td><td>" + fmt::format("{:.1f}", r.fps) +
-         "</td><td class=\"text\">" + esc(dominant_bottleneck(r)) + "</td><td>" +
-         fmt::format("{:.1f}", r.dram_bytes / 1e6) + "</td>";
+    h += "<td>" + fmt::format("{:.1f}", r.fps) + "</td><td class=\"text\">" +
+         esc(dominant_bottleneck(r)) + "</td><td>" + fmt::format("{:.1f}", r.dram_bytes / 1e6) +
+         "</td>";
     for (const std::string& m : metrics) {
+      if (m == o.quality_metric) continue;
       auto it = r.quality.find(m);
       h += "<td>" + (it == r.quality.end() ? std::string("-") : metric_text(it->second)) + "</td>";
     }
     h += std::string("<td>") + (front.count(i) ? "yes" : "") + "</td></tr>\n";
   }
-  return h + "</table>\n";
+  return h + "</table></div>\n";
 }
 
 // One row per technique (when the sweep compares several): its best configuration by the
@@ -227,6 +339,13 @@ std::string techniques_section(const SweepTable& t, const ReportOptions& o) {
 
 std::string thumbnails_section(const SweepTable& t) {
   std::string cells;
+  std::set<std::string> references;
+  for (const ConfigResult& r : t.rows) {
+    if (r.reference_image.empty() || !references.insert(r.reference_image).second) continue;
+    cells += "<div class=\"thumb\"><div><b>reference</b> (" + esc(r.group) + ")</div><a href=\"" +
+             link(r.reference_image) + "\"><img src=\"" + link(r.reference_image) +
+             "\" alt=\"reference\" loading=\"lazy\"></a></div>\n";
+  }
   for (const ConfigResult& r : t.rows) {
     if (r.frame_image.empty() && r.error_image.empty()) continue;
     cells += "<div class=\"thumb\"><div>" + esc(name_of(r)) + "</div>";
@@ -283,9 +402,14 @@ std::string write_report(const SweepTable& table, const std::string& dir,
   fs::create_directories(dir, ec);
   if (ec) throw ReportError("cannot create report directory " + dir + ": " + ec.message());
 
-  const auto knee =
-      pareto_knee(table.rows, options.quality_metric, options.higher_is_better, table.budget_ms);
-  const ConfigResult* dram_row = knee ? &table.rows[*knee] : nullptr;
+  const std::vector<Recommendation> recommendations = recommend(table, options.quality_metric);
+  std::set<std::size_t> chosen;
+  for (const Recommendation& r : recommendations) {
+    if (r.chosen) chosen.insert(*r.chosen);
+  }
+  const ConfigResult* dram_row = !recommendations.empty() && recommendations.front().chosen
+                                     ? &table.rows[*recommendations.front().chosen]
+                                     : nullptr;
   if (!dram_row && !table.rows.empty()) {
     dram_row = &*std::min_element(
         table.rows.begin(), table.rows.end(),
@@ -302,10 +426,11 @@ std::string write_report(const SweepTable& table, const std::string& dir,
 
   std::string page = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
   page += "<title>" + esc(options.title) + "</title>\n<style>" + kStyle + "</style>\n</head>\n";
-  page +=
-      "<body>\n" + header_section(table, options) + recommendation_section(table, options, knee) +
-      charts_section(figures, options.draw_charts) + techniques_section(table, options) +
-      table_section(table, options, knee) + thumbnails_section(table) + assumptions_section(table);
+  page += "<body>\n" + header_section(table, options) +
+          recommendation_section(table, options, recommendations) + comparison_section(table) +
+          charts_section(figures, options.draw_charts) + techniques_section(table, options) +
+          table_section(table, options, chosen) + thumbnails_section(table) +
+          assumptions_section(table);
   if (options.write_data_files) {
     page +=
         "<h2>Data</h2>\n<p><a href=\"results.json\">results.json</a> (everything on this "

@@ -117,12 +117,39 @@ ProgramCost parse_program(const json& j, const std::string& where) {
   return p;
 }
 
+bool req_bool(const json& j, const std::string& where, const std::string& key) {
+  const json& v = require(j, where, key);
+  if (!v.is_boolean()) {
+    throw ReportError(field_path(where, key) + ": expected true or false, got " + v.dump());
+  }
+  return v.get<bool>();
+}
+
+FrameComparison parse_comparison(const json& j, const std::string& where) {
+  FrameComparison c;
+  c.against = req_string(j, where, "against");
+  c.flip_mean = req_number(j, where, "flip_mean");
+  c.flip_p99 = req_number(j, where, "flip_p99");
+  c.visible_px = req_number(j, where, "visible_px");
+  c.visible = req_bool(j, where, "visible");
+  return c;
+}
+
+std::optional<FrameComparison> opt_comparison(const json& j, const std::string& where,
+                                              const std::string& key) {
+  auto it = j.find(key);
+  if (it == j.end() || it->is_null()) return std::nullopt;
+  return parse_comparison(*it, field_path(where, key));
+}
+
 ConfigResult parse_config(const json& j, const std::string& where) {
   ConfigResult c;
   c.id = req_string(j, where, "id");
   c.label = opt_string(j, where, "label");
   if (j.contains("knobs")) c.knobs = map_at<std::string>(j["knobs"], field_path(where, "knobs"));
   c.frame_ms = req_number(j, where, "frame_ms");
+  c.frame_ms_low = req_number(j, where, "frame_ms_low");
+  c.frame_ms_high = req_number(j, where, "frame_ms_high");
   c.fps = req_number(j, where, "fps");
   c.dram_bytes = req_number(j, where, "dram_bytes");
   if (j.contains("passes")) {
@@ -142,6 +169,11 @@ ConfigResult parse_config(const json& j, const std::string& where) {
   if (j.contains("quality")) c.quality = map_at<double>(j["quality"], field_path(where, "quality"));
   c.frame_image = opt_string(j, where, "frame_image");
   c.error_image = opt_string(j, where, "error_image");
+  c.reference_image = opt_string(j, where, "reference_image");
+  c.visible_vs_reference = req_bool(j, where, "visible_vs_reference");
+  c.group = opt_string(j, where, "group");
+  c.vs_finest = opt_comparison(j, where, "vs_finest");
+  c.vs_best = opt_comparison(j, where, "vs_best");
   return c;
 }
 
@@ -174,6 +206,56 @@ SensitivityRow parse_sensitivity(const json& j, const std::string& where) {
   return s;
 }
 
+std::vector<std::pair<std::string, std::string>> parse_labelled_paths(const json& j,
+                                                                      const std::string& where) {
+  std::vector<std::pair<std::string, std::string>> out;
+  const json& items = array_at(j, where);
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const std::string at = index_path(where, i);
+    out.emplace_back(req_string(items[i], at, "what"), req_string(items[i], at, "path"));
+  }
+  return out;
+}
+
+CropWindow parse_window(const json& j, const std::string& where) {
+  CropWindow w;
+  w.why = req_string(j, where, "why");
+  w.x = req_int(j, where, "x");
+  w.y = req_int(j, where, "y");
+  w.size = req_int(j, where, "size");
+  w.zoom_x = req_int(j, where, "zoom_x");
+  w.zoom_y = req_int(j, where, "zoom_y");
+  w.zoom_size = req_int(j, where, "zoom_size");
+  w.zoom = req_int(j, where, "zoom");
+  w.images = parse_labelled_paths(require(j, where, "images"), field_path(where, "images"));
+  w.zoomed = parse_labelled_paths(require(j, where, "zoomed"), field_path(where, "zoomed"));
+  return w;
+}
+
+ComparisonPanel parse_panel(const json& j, const std::string& where) {
+  ComparisonPanel p;
+  p.group = req_string(j, where, "group");
+  p.chosen = req_string(j, where, "chosen");
+  p.best = req_string(j, where, "best");
+  p.reference_image = req_string(j, where, "reference_image");
+  p.chosen_image = req_string(j, where, "chosen_image");
+  p.best_image = req_string(j, where, "best_image");
+  p.difference_gain = req_number(j, where, "difference_gain");
+  p.colour_bar = req_string(j, where, "colour_bar");
+  const std::string at = field_path(where, "windows");
+  const json& windows = array_at(require(j, where, "windows"), at);
+  for (std::size_t i = 0; i < windows.size(); ++i) {
+    p.windows.push_back(parse_window(windows[i], index_path(at, i)));
+  }
+  return p;
+}
+
+json labelled_paths_json(const std::vector<std::pair<std::string, std::string>>& items) {
+  json out = json::array();
+  for (const auto& [what, path] : items) out.push_back({{"what", what}, {"path", path}});
+  return out;
+}
+
 SweepTable parse_table(const json& j) {
   SweepTable t;
   t.device = req_string(j, "", "device");
@@ -192,6 +274,12 @@ SweepTable parse_table(const json& j) {
     const json& sens = array_at(j["sensitivity"], "sensitivity");
     for (std::size_t i = 0; i < sens.size(); ++i) {
       t.sensitivity.push_back(parse_sensitivity(sens[i], index_path("sensitivity", i)));
+    }
+  }
+  if (j.contains("panels")) {
+    const json& panels = array_at(j["panels"], "panels");
+    for (std::size_t i = 0; i < panels.size(); ++i) {
+      t.panels.push_back(parse_panel(panels[i], index_path("panels", i)));
     }
   }
   return t;
@@ -246,13 +334,31 @@ void to_json(json& j, const ConfigResult& v) {
            {"label", v.label},
            {"knobs", v.knobs},
            {"frame_ms", v.frame_ms},
+           {"frame_ms_low", v.frame_ms_low},
+           {"frame_ms_high", v.frame_ms_high},
            {"fps", v.fps},
            {"dram_bytes", v.dram_bytes},
            {"passes", v.passes},
            {"programs", v.programs},
            {"quality", v.quality},
            {"frame_image", v.frame_image},
-           {"error_image", v.error_image}};
+           {"error_image", v.error_image},
+           {"reference_image", v.reference_image},
+           {"visible_vs_reference", v.visible_vs_reference},
+           {"group", v.group},
+           {"vs_finest", v.vs_finest ? json(*v.vs_finest) : json(nullptr)},
+           {"vs_best", v.vs_best ? json(*v.vs_best) : json(nullptr)}};
+}
+
+void to_json(json& j, const FrameComparison& v) {
+  j = json{{"against", v.against},
+           {"flip_mean", v.flip_mean},
+           {"flip_p99", v.flip_p99},
+           {"visible_px", v.visible_px},
+           {"visible", v.visible}};
+}
+void from_json(const json& j, FrameComparison& v) {
+  v = parse_comparison(j, "comparison");
 }
 
 void to_json(json& j, const TileHeatmap& v) {
@@ -281,7 +387,39 @@ void to_json(json& j, const SweepTable& v) {
            {"rows", v.rows},
            {"heatmap", v.heatmap ? json(*v.heatmap) : json(nullptr)},
            {"assumptions", v.assumptions},
-           {"sensitivity", v.sensitivity}};
+           {"sensitivity", v.sensitivity},
+           {"panels", v.panels}};
+}
+
+void to_json(json& j, const CropWindow& v) {
+  j = json{{"why", v.why},
+           {"x", v.x},
+           {"y", v.y},
+           {"size", v.size},
+           {"zoom_x", v.zoom_x},
+           {"zoom_y", v.zoom_y},
+           {"zoom_size", v.zoom_size},
+           {"zoom", v.zoom},
+           {"images", labelled_paths_json(v.images)},
+           {"zoomed", labelled_paths_json(v.zoomed)}};
+}
+void from_json(const json& j, CropWindow& v) {
+  v = parse_window(j, "window");
+}
+
+void to_json(json& j, const ComparisonPanel& v) {
+  j = json{{"group", v.group},
+           {"chosen", v.chosen},
+           {"best", v.best},
+           {"reference_image", v.reference_image},
+           {"chosen_image", v.chosen_image},
+           {"best_image", v.best_image},
+           {"difference_gain", v.difference_gain},
+           {"colour_bar", v.colour_bar},
+           {"windows", v.windows}};
+}
+void from_json(const json& j, ComparisonPanel& v) {
+  v = parse_panel(j, "panel");
 }
 
 void from_json(const json& j, PassCost& v) {
@@ -315,11 +453,24 @@ void validate_sweep_table(const SweepTable& t) {
     if (r.id.empty()) throw ReportError(where + ".id: must not be empty");
     if (!ids.insert(r.id).second) throw ReportError(where + ".id: duplicate id '" + r.id + "'");
     check_time(r.frame_ms, where + ".frame_ms");
+    check_time(r.frame_ms_low, where + ".frame_ms_low");
+    check_time(r.frame_ms_high, where + ".frame_ms_high");
+    if (!(r.frame_ms_low <= r.frame_ms && r.frame_ms <= r.frame_ms_high)) {
+      throw ReportError(where + ": frame_ms_low <= frame_ms <= frame_ms_high does not hold");
+    }
     check_finite(r.fps, where + ".fps");
     check_finite(r.dram_bytes, where + ".dram_bytes");
     for (const auto& [name, value] : r.quality) check_finite(value, where + ".quality." + name);
     check_relative_path(r.frame_image, where + ".frame_image");
     check_relative_path(r.error_image, where + ".error_image");
+    check_relative_path(r.reference_image, where + ".reference_image");
+    for (const auto& [name, c] : {std::pair{"vs_finest", &r.vs_finest}, {"vs_best", &r.vs_best}}) {
+      if (!*c) continue;
+      const std::string at = where + "." + name;
+      check_finite((*c)->flip_mean, at + ".flip_mean");
+      check_finite((*c)->flip_p99, at + ".flip_p99");
+      check_finite((*c)->visible_px, at + ".visible_px");
+    }
     for (std::size_t p = 0; p < r.passes.size(); ++p) {
       check_time(r.passes[p].ms, where + ".passes" + "[" + std::to_string(p) + "].ms");
     }
@@ -339,6 +490,21 @@ void validate_sweep_table(const SweepTable& t) {
                         " entries (or none), got " + std::to_string(h.bottleneck.size()));
     }
     for (std::size_t i = 0; i < n; ++i) check_time(h.ms[i], index_path("heatmap.ms", i));
+  }
+  for (std::size_t p = 0; p < t.panels.size(); ++p) {
+    const ComparisonPanel& panel = t.panels[p];
+    const std::string where = index_path("panels", p);
+    for (const auto& [name, path] : {std::pair{".reference_image", &panel.reference_image},
+                                     {".chosen_image", &panel.chosen_image},
+                                     {".best_image", &panel.best_image},
+                                     {".colour_bar", &panel.colour_bar}}) {
+      check_relative_path(*path, where + name);
+    }
+    for (const CropWindow& w : panel.windows) {
+      for (const auto* list : {&w.images, &w.zoomed}) {
+        for (const auto& [what, path] : *list) check_relative_path(path, where + ".windows");
+      }
+    }
   }
 }
 

@@ -32,6 +32,16 @@ struct ProgramCost {
   int texture_reads_dependent = 0;
 };
 
+// One frame compared with another configuration's frame (both 8-bit, as stored): FLIP over
+// the reference's skin (the whole frame when it shows none).
+struct FrameComparison {
+  std::string against;  // id of the other configuration
+  double flip_mean = 0.0;
+  double flip_p99 = 0.0;
+  double visible_px = 0.0;  // pixels above quality::flip_visibility_threshold()
+  bool visible = false;     // they cover at least quality::flip_visible_area_pixels()
+};
+
 // One configuration of the sweep and what it cost and bought.
 struct ConfigResult {
   std::string id;     // unique within the sweep; used in file names and tables
@@ -39,6 +49,10 @@ struct ConfigResult {
   // Swept parameters: technique, scale, lut, lut_format, blur_iterations, device, resolution...
   std::map<std::string, std::string> knobs;
   double frame_ms = 0.0;
+  // frame_ms with the device profile's uncertain figures all at their fast / slow ends
+  // (gpu_model::frame_ms_range; figures that need a re-render are left out).
+  double frame_ms_low = 0.0;
+  double frame_ms_high = 0.0;
   double fps = 0.0;
   double dram_bytes = 0.0;  // per frame
   std::vector<PassCost> passes;
@@ -47,6 +61,18 @@ struct ConfigResult {
   std::map<std::string, double> quality;
   std::string frame_image;  // relative path inside the sweep directory ("" if none)
   std::string error_image;  // relative path inside the sweep directory ("" if none)
+  // The reference it was measured against (relative path, "" if none), and whether it
+  // differs visibly from it (the FrameComparison rule, against the reference).
+  std::string reference_image;
+  bool visible_vs_reference = false;
+  // The configurations it can be compared with: the same device and reference (resolution,
+  // light, framing), e.g. "ipad4, 2048x1536". Recommendations are made per group.
+  std::string group;
+  // Against the best configuration (lowest FLIP vs the reference) of its own technique in its
+  // group: what its knob values cost on top of what the technique approximates.
+  std::optional<FrameComparison> vs_finest;
+  // Against the best configuration of the group over every technique.
+  std::optional<FrameComparison> vs_best;
 };
 
 // Cost of one pass per screen tile. Row-major, row 0 is the TOP row of the frame:
@@ -74,6 +100,31 @@ struct SensitivityRow {
   double frame_ms_at_max = 0.0;
 };
 
+// One window of the frame cut out of several images, at 1:1 and magnified (paths relative to
+// the sweep directory), for a recommendation's comparison panel.
+struct CropWindow {
+  std::string why;  // e.g. "largest error against the reference"
+  int x = 0, y = 0, size = 0;                 // the 1:1 window, in frame pixels
+  int zoom_x = 0, zoom_y = 0, zoom_size = 0;  // the magnified window, inside it
+  int zoom = 4;                               // magnification (nearest neighbour)
+  std::vector<std::pair<std::string, std::string>> images;  // (what, path) at 1:1
+  std::vector<std::pair<std::string, std::string>> zoomed;  // (what, path) magnified
+};
+
+// What a group's recommended configuration gives up against the best one and the reference:
+// the full frames, and crops of the windows where it differs most.
+struct ComparisonPanel {
+  std::string group;
+  std::string chosen;  // ids
+  std::string best;
+  std::string reference_image;  // full frames, relative paths
+  std::string chosen_image;
+  std::string best_image;
+  double difference_gain = 1.0;  // difference images show |recommended - reference| x gain
+  std::string colour_bar;        // PNG of the difference images' colour scale
+  std::vector<CropWindow> windows;
+};
+
 struct SweepTable {
   std::string device;
   std::string scene;
@@ -83,10 +134,17 @@ struct SweepTable {
   std::optional<TileHeatmap> heatmap;
   std::vector<std::string> assumptions;
   std::vector<SensitivityRow> sensitivity;
+  std::vector<ComparisonPanel> panels;  // one per group with a recommendation
 };
 
 // JSON mapping (nlohmann ADL hooks). from_json throws ReportError naming the field at fault,
 // e.g. "rows[3].frame_ms: expected a number".
+void to_json(nlohmann::json& j, const CropWindow& v);
+void from_json(const nlohmann::json& j, CropWindow& v);
+void to_json(nlohmann::json& j, const ComparisonPanel& v);
+void from_json(const nlohmann::json& j, ComparisonPanel& v);
+void to_json(nlohmann::json& j, const FrameComparison& v);
+void from_json(const nlohmann::json& j, FrameComparison& v);
 void to_json(nlohmann::json& j, const PassCost& v);
 void to_json(nlohmann::json& j, const ProgramCost& v);
 void to_json(nlohmann::json& j, const ConfigResult& v);

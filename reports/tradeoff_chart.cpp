@@ -20,6 +20,7 @@
 #include "reports/error.h"
 #include "reports/knob_order.h"
 #include "reports/pareto.h"
+#include "reports/recommendation.h"
 
 namespace skinsim::reports {
 
@@ -129,16 +130,20 @@ ChartFiles write_tradeoff_chart(const SweepTable& table, const TradeoffSpec& spe
   front->SetMarkerSize(16.0);
   front->SetWidth(3.0);
 
-  // The table's recommendation (the knee over every row, as the report chooses it), marked
-  // where this chart plots it.
-  const auto knee = pareto_knee(table.rows, spec.metric, spec.higher_is_better, table.budget_ms);
-  if (knee && matches(table.rows[*knee], spec.filter) &&
-      on_tradeoff_chart(table.rows[*knee], spec)) {
-    const ConfigResult& r = table.rows[*knee];
-    vtkPlotPoints* mark = add_series(chart, "recommended (knee): " + r.label, {r.frame_ms},
-                                     {r.quality.at(spec.metric)}, {200, 0, 0}, vtkPen::NO_PEN);
-    mark->SetMarkerStyle(vtkPlotPoints::DIAMOND);
-    mark->SetMarkerSize(26.0);
+  // The report's recommendations (one per group of comparable configurations), marked where
+  // this chart plots them. Their rule needs a lower-is-better metric.
+  if (!spec.higher_is_better) {
+    const std::vector<Recommendation> recommendations = recommend(table, spec.metric);
+    for (const Recommendation& rec : recommendations) {
+      if (!rec.chosen) continue;
+      const ConfigResult& r = table.rows[*rec.chosen];
+      if (!matches(r, spec.filter) || !on_tradeoff_chart(r, spec)) continue;
+      const std::string name = recommendations.size() > 1 ? rec.group + ": " + r.label : r.label;
+      vtkPlotPoints* mark = add_series(chart, "recommended: " + name, {r.frame_ms},
+                                       {r.quality.at(spec.metric)}, {200, 0, 0}, vtkPen::NO_PEN);
+      mark->SetMarkerStyle(vtkPlotPoints::DIAMOND);
+      mark->SetMarkerSize(26.0);
+    }
   }
 
   const double pad = y_hi > y_lo ? 0.08 * (y_hi - y_lo) : std::max(1e-3, 0.05 * std::abs(y_hi));

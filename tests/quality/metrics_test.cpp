@@ -139,6 +139,58 @@ TEST(Flip, MatchesTheReferenceImplementation) {
   EXPECT_NEAR(at(79, 59), 0.2234533640, 1e-5);  // image corner (edge padding)
 }
 
+// The sRGB-encoded grey of CIE lightness L* (D65 white, Y = ((L* + 16) / 116)^3 above the
+// linear toe).
+float srgb_grey_of_lightness(double l_star) {
+  const double y = std::pow((l_star + 16.0) / 116.0, 3.0);
+  return static_cast<float>(y <= 0.0031308 ? 12.92 * y : 1.055 * std::pow(y, 1.0 / 2.4) - 0.055);
+}
+
+TEST(FlipVisibility, ThresholdIsWhatAOneJndLightnessStepGivesInAUniformRegion) {
+  // Two flat greys 2.3 L* apart (Mahy et al.'s JND), as 16-bit-exact floats: FLIP's map in
+  // the middle, far from the border, is the threshold.
+  const Image darker = Image::filled(64, 64, glm::vec3(srgb_grey_of_lightness(60.0)));
+  const Image lighter = Image::filled(64, 64, glm::vec3(srgb_grey_of_lightness(62.3)));
+  const FlipResult result = flip(darker, lighter);
+  EXPECT_NEAR(result.map.values[32 * 64 + 32], flip_visibility_threshold(), 2e-3);
+  EXPECT_NEAR(flip_visibility_threshold(), 0.103, 0.002);
+  // A step of half a JND is below it, two JNDs above.
+  const Image half = Image::filled(64, 64, glm::vec3(srgb_grey_of_lightness(61.15)));
+  const Image twice = Image::filled(64, 64, glm::vec3(srgb_grey_of_lightness(64.6)));
+  EXPECT_LT(flip(darker, half).map.values[32 * 64 + 32], flip_visibility_threshold());
+  EXPECT_GT(flip(darker, twice).map.values[32 * 64 + 32], flip_visibility_threshold());
+}
+
+TEST(FlipVisibility, AreaIsOneDigitSquaredAtTheObserversResolution) {
+  EXPECT_NEAR(flip_visible_area_pixels(), std::pow(0.082 * FlipParams{}.pixels_per_degree, 2.0),
+              1e-9);
+  FlipParams closer;
+  closer.pixels_per_degree = 30.0;
+  EXPECT_NEAR(flip_visible_area_pixels(closer), 0.082 * 0.082 * 900.0, 1e-9);
+}
+
+TEST(FlipVisibility, StatisticsCountPercentilesAndVisiblePixelsUnderTheMask) {
+  ScalarMap map{10, 10, std::vector<float>(100, 0.05f)};
+  for (int i = 0; i < 40; ++i) map.values[i] = 0.5f;  // the top four rows clearly visible
+  Mask mask = Mask::filled(10, 10, 1);
+  for (int i = 0; i < 20; ++i) mask.values[i] = 0;  // two of those rows are not skin
+  const FlipStatistics s = flip_statistics(map, &mask);
+  EXPECT_EQ(s.pixels, 80u);
+  EXPECT_EQ(s.visible_pixels, 20u);
+  EXPECT_DOUBLE_EQ(s.visible_percent(), 25.0);
+  EXPECT_NEAR(s.mean, (20 * 0.5 + 60 * 0.05) / 80.0, 1e-6);
+  EXPECT_FLOAT_EQ(static_cast<float>(s.p95), 0.5f);
+  EXPECT_FALSE(s.visible());  // 20 pixels: less than one digit's area (~30)
+  const FlipStatistics all = flip_statistics(map);
+  EXPECT_EQ(all.visible_pixels, 40u);
+  EXPECT_TRUE(all.visible());
+  EXPECT_FLOAT_EQ(static_cast<float>(all.p95), 0.5f);
+  EXPECT_FLOAT_EQ(
+      static_cast<float>(flip_statistics(ScalarMap{10, 10, std::vector<float>(100, 0.05f)}).p99),
+      0.05f);
+  EXPECT_THROW(flip_statistics(map, &(mask = Mask::filled(5, 5, 1))), QualityError);
+}
+
 TEST(Flip, BlackVersusWhiteIsNearOne) {
   const Image black = Image::filled(48, 48, glm::vec3(0.0f));
   const Image white = Image::filled(48, 48, glm::vec3(1.0f));

@@ -22,10 +22,12 @@ TEST(SweepCsv, HeaderListsKnobsTotalsPassesAndMetrics) {
   ASSERT_EQ(lines.size(), 17u);  // header + 16 configurations
   EXPECT_EQ(lines[0],
             "id,label,blur_iterations,device,lut,lut_format,resolution,scale,technique,"
-            "frame_ms,fps,dram_bytes,irradiance.ms,irradiance.bottleneck,blur_h.ms,"
+            "frame_ms,frame_ms_low,frame_ms_high,fps,dram_bytes,irradiance.ms,irradiance."
+            "bottleneck,blur_h.ms,"
             "blur_h.bottleneck,blur_v.ms,blur_v.bottleneck,skin_shade.ms,skin_shade.bottleneck,"
             "eyes_background.ms,eyes_background.bottleneck,flip_skin,psnr_frame,psnr_skin,"
-            "ssim_skin");
+            "ssim_skin,visible_vs_reference,group,finest,knob_flip,knob_visible_px,knob_visible,"
+            "best,vs_best_flip,vs_best_visible_px,vs_best_visible");
 }
 
 TEST(SweepCsv, RowsCarryTheValues) {
@@ -35,6 +37,8 @@ TEST(SweepCsv, RowsCarryTheValues) {
   r.label = "scale 0.5, \"big\" LUT";
   r.knobs = {{"scale", "0.5"}};
   r.frame_ms = 12.5;
+  r.frame_ms_low = 11;
+  r.frame_ms_high = 15;
   r.fps = 80;
   r.dram_bytes = 1e6;
   r.passes = {
@@ -43,16 +47,21 @@ TEST(SweepCsv, RowsCarryTheValues) {
   ConfigResult s;
   s.id = "b";
   s.frame_ms = 3;
+  s.frame_ms_low = 3;
+  s.frame_ms_high = 3;
   s.fps = 333;
   sweep.rows = {r, s};
   const std::vector<std::string> lines = lines_of(sweep_csv(sweep));
   ASSERT_EQ(lines.size(), 3u);
   EXPECT_EQ(lines[0],
-            "id,label,scale,frame_ms,fps,dram_bytes,shade.ms,shade.bottleneck,blur.ms,"
-            "blur.bottleneck,flip_skin");
+            "id,label,scale,frame_ms,frame_ms_low,frame_ms_high,fps,dram_bytes,shade.ms,shade."
+            "bottleneck,blur.ms,"
+            "blur.bottleneck,flip_skin,visible_vs_reference,group,finest,knob_flip,knob_visible_px,"
+            "knob_visible,best,vs_best_flip,vs_best_visible_px,vs_best_visible");
   EXPECT_EQ(lines[1],
-            "a,\"scale 0.5, \"\"big\"\" LUT\",0.5,12.5,80,1000000,10,alu,2.5,texture,0.125");
-  EXPECT_EQ(lines[2], "b,,,3,333,0,,,,,");
+            "a,\"scale 0.5, \"\"big\"\" LUT\",0.5,12.5,11,15,80,1000000,10,alu,2.5,texture,0.125,"
+            ",,,,,,,,,");
+  EXPECT_EQ(lines[2], "b,,,3,3,3,333,0,,,,,,,,,,,,,,,");
 }
 
 TEST(SweepCsv, CollidingColumnNamesAreAnError) {

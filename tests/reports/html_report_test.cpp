@@ -1,6 +1,7 @@
 // report.html: links resolve, strings are escaped, the recommendation is the knee.
 #include "reports/html_report.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -11,6 +12,7 @@
 #include "reports/display_check.h"
 #include "reports/error.h"
 #include "reports/pareto.h"
+#include "reports/recommendation.h"
 #include "tests/reports/synthetic_sweep.h"
 #include "tests/reports/test_output_dir.h"
 
@@ -93,22 +95,29 @@ TEST(HtmlReport, LinkCheckDecodesFileNames) {
   EXPECT_EQ(missing_report_links(dir), std::vector<std::string>{"frames/odd name & more.png"});
 }
 
-TEST(HtmlReport, NamesTheKneeAsRecommendation) {
+TEST(HtmlReport, StatesTheRecommendationWithItsRangeAndRule) {
   const SweepTable sweep = synthetic_sweep();
-  const auto knee = pareto_knee(sweep.rows, "flip_skin", false, sweep.budget_ms);
-  ASSERT_TRUE(knee);
+  const std::vector<Recommendation> recommendations = recommend(sweep, "flip_skin");
+  ASSERT_EQ(recommendations.size(), 1u);
+  ASSERT_TRUE(recommendations[0].chosen);
+  const ConfigResult& chosen = sweep.rows[*recommendations[0].chosen];
   const std::string html = read_text(write_report(sweep, fresh_output_dir(), no_charts()));
   const std::size_t section = html.find("<h2>Recommendation</h2>");
   ASSERT_NE(section, std::string::npos);
-  EXPECT_EQ(html.find(sweep.rows[*knee].label, section),
-            html.find("<b>", section) + 3);  // the first bold name in the section is the knee
+  const std::size_t next = html.find("<h2>", section + 1);
+  const std::string text = html.substr(section, next - section);
+  EXPECT_NE(text.find(html_escape(recommendations[0].verdict)), std::string::npos) << text;
+  EXPECT_NE(text.find(fmt::format("{:.2f} to {:.2f}", chosen.frame_ms_low, chosen.frame_ms_high)),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("How it is chosen"), std::string::npos);
 }
 
 TEST(HtmlReport, SaysSoWhenNothingFitsTheBudget) {
   SweepTable sweep = synthetic_sweep();
   sweep.budget_ms = 1.0;
   const std::string html = read_text(write_report(sweep, fresh_output_dir(), no_charts()));
-  EXPECT_NE(html.find("No configuration with flip_skin fits the frame budget"), std::string::npos);
+  EXPECT_NE(html.find("no configuration fits the 1.0 ms budget"), std::string::npos);
 }
 
 TEST(HtmlReport, ComparesTechniquesWithTheirProgramsWhenThereAreSeveral) {

@@ -10,6 +10,8 @@ ConfigResult row(const std::string& id, double ms, double flip) {
   ConfigResult r;
   r.id = id;
   r.frame_ms = ms;
+  r.frame_ms_low = ms;
+  r.frame_ms_high = ms;
   r.quality["flip"] = flip;
   return r;
 }

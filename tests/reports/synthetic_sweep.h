@@ -47,6 +47,8 @@ inline ConfigResult synthetic_config(double scale, int lut_w, int lut_h) {
     for (const auto& [cause, bytes] : p.dram_bytes_by_cause) c.dram_bytes += bytes;
   }
   c.fps = 1000.0 / c.frame_ms;
+  c.frame_ms_low = 0.9 * c.frame_ms;  // a profile's uncertain figures: -10% / +40%
+  c.frame_ms_high = 1.4 * c.frame_ms;
   const double flip = 0.03 + 0.09 * std::pow(1.0 - scale, 1.5) + 0.04 / (1.0 + lut_steps);
   c.quality = {{"flip_skin", flip},
                {"ssim_skin", 1.0 - 1.6 * flip},

@@ -1,0 +1,26 @@
+// The comparison panel of each recommendation: the windows of the frame where the recommended
+// configuration differs most from the reference and from the group's best configuration,
+// cut out of the reference, the best frame, the recommended frame and their amplified
+// difference, at 1:1 and magnified 4x, written to compare/ in the sweep directory.
+#pragma once
+
+#include <filesystem>
+#include <vector>
+
+#include "reports/recommendation.h"
+#include "reports/sweep_table.h"
+
+namespace skinsim::driver {
+
+// Difference images show |recommended - reference| per pixel (the mean over R, G and B of the
+// display-encoded values) times this gain, on the magma scale: a difference of 1/8 of full
+// scale or more is the brightest colour.
+inline constexpr double kDifferenceGain = 8.0;
+
+// Writes the crops and returns one panel per recommendation with a chosen configuration.
+// `over_skin`: windows are found in the FLIP error over the reference's skin mask.
+std::vector<reports::ComparisonPanel> write_comparison_panels(
+    const reports::SweepTable& table, const std::vector<reports::Recommendation>& recommendations,
+    const std::filesystem::path& sweep_dir, bool over_skin);
+
+}  // namespace skinsim::driver

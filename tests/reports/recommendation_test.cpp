@@ -1,0 +1,83 @@
+// One recommendation per group; invisible differences are ties won by the cheaper row.
+#include "reports/recommendation.h"
+
+#include <gtest/gtest.h>
+
+namespace skinsim::reports {
+namespace {
+
+// A row of `group` at `ms` with FLIP `flip` against the reference; `visible_vs_best`: whether
+// its frame differs visibly from the group's best row (`best`).
+ConfigResult row(const std::string& id, const std::string& group, double ms, double flip,
+                 const std::string& best, bool visible_vs_best) {
+  ConfigResult r;
+  r.id = id;
+  r.group = group;
+  r.frame_ms = ms;
+  r.frame_ms_low = ms * 0.9;
+  r.frame_ms_high = ms * 1.3;
+  r.quality["flip_skin"] = flip;
+  r.vs_best = FrameComparison{best, id == best ? 0.0 : 0.01, 0.05, visible_vs_best ? 500.0 : 3.0,
+                              visible_vs_best};
+  return r;
+}
+
+TEST(Recommendation, AnInvisibleDifferenceIsATieAndTheCheaperWins) {
+  SweepTable t;
+  t.budget_ms = 30.0;
+  t.rows = {row("fine", "ipad4", 25.0, 0.0800, "fine", false),
+            row("cheap", "ipad4", 12.0, 0.0801, "fine", false),  // 0.0001 worse: noise
+            row("cheaper_visible", "ipad4", 10.0, 0.0900, "fine", true)};
+  const std::vector<Recommendation> r = recommend(t, "flip_skin");
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_EQ(r[0].chosen, 1u);
+  EXPECT_EQ(r[0].best, 0u);
+  EXPECT_TRUE(r[0].indistinguishable);
+  EXPECT_NE(r[0].verdict.find("not visibly different from the best, fine"), std::string::npos)
+      << r[0].verdict;
+  EXPECT_NE(r[0].verdict.find("saves 13.00 ms"), std::string::npos) << r[0].verdict;
+  EXPECT_NE(r[0].verdict.find("12.00 ms (10.80 to 15.60)"), std::string::npos) << r[0].verdict;
+}
+
+TEST(Recommendation, DevicesAreNeverComparedAcrossGroups) {
+  SweepTable t;
+  t.budget_ms = 30.0;
+  t.rows = {row("a_ipad", "ipad4", 20.0, 0.08, "a_ipad", false),
+            row("a_iphone", "iphone5", 28.0, 0.07, "b_iphone", false),
+            row("b_ipad", "ipad4", 15.0, 0.081, "a_ipad", false),
+            row("b_iphone", "iphone5", 35.0, 0.069, "b_iphone", false)};
+  const std::vector<Recommendation> r = recommend(t, "flip_skin");
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_EQ(r[0].group, "ipad4");
+  EXPECT_EQ(r[0].chosen, 2u);  // b_ipad: cheaper, not visibly worse
+  EXPECT_EQ(r[1].group, "iphone5");
+  // The iPhone's best row (b_iphone) is over budget; a_iphone is not visibly different from
+  // it and fits. The iPad's rows play no part.
+  EXPECT_EQ(r[1].best, 3u);
+  EXPECT_EQ(r[1].chosen, 1u);
+}
+
+TEST(Recommendation, WhenEverythingInBudgetIsVisiblyWorseTheKneeIsChosenAndSaidSo) {
+  SweepTable t;
+  t.budget_ms = 20.0;
+  t.rows = {row("best", "g", 40.0, 0.05, "best", false),  // over budget
+            row("mid", "g", 18.0, 0.07, "best", true), row("low", "g", 8.0, 0.09, "best", true)};
+  const std::vector<Recommendation> r = recommend(t, "flip_skin");
+  ASSERT_EQ(r.size(), 1u);
+  ASSERT_TRUE(r[0].chosen.has_value());
+  EXPECT_FALSE(r[0].indistinguishable);
+  EXPECT_NE(r[0].verdict.find("differs visibly"), std::string::npos) << r[0].verdict;
+}
+
+TEST(Recommendation, NothingWithinBudgetIsNoRecommendation) {
+  SweepTable t;
+  t.budget_ms = 5.0;
+  t.rows = {row("a", "g", 10.0, 0.05, "a", false)};
+  const std::vector<Recommendation> r = recommend(t, "flip_skin");
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_FALSE(r[0].chosen.has_value());
+  EXPECT_NE(r[0].verdict.find("no configuration fits the 5.0 ms budget"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace skinsim::reports
