@@ -34,7 +34,8 @@ glm::vec3 dipole_rd(const DipoleTerms& t, float r_mm) {
     const glm::vec3 d = glm::sqrt(r_mm * r_mm + z * z);
     return z * (1.0f + t.sigma_tr * d) * glm::exp(-t.sigma_tr * d) / (d * d * d);
   };
-  return t.alpha_prime / (4.0f * std::numbers::pi_v<float>)*(pole(t.z_real) + pole(t.z_virtual));
+  const float inv_4pi = 0.25f / std::numbers::pi_v<float>;
+  return inv_4pi * t.alpha_prime * (pole(t.z_real) + pole(t.z_virtual));
 }
 
 glm::vec3 dipole_total_rd(const DipoleTerms& t) {
@@ -51,19 +52,38 @@ glm::vec3 dipole_cdf(const DipoleTerms& t, float r_mm) {
   return 1.0f - (outside(t.z_real) + outside(t.z_virtual)) / all;
 }
 
-float dipole_mean_radius(const DipoleTerms& t, float u) {
-  const auto mean_cdf = [&](float r) {
-    const glm::vec3 c = dipole_cdf(t, r);
-    return (c.r + c.g + c.b) / 3.0f;
-  };
-  // Bisection: the CDF rises monotonically from 0 at r = 0.
-  float lo = 0.0f, hi = 1.0f;
-  while (mean_cdf(hi) < u) hi *= 2.0f;
+namespace {
+// Where a monotonically decreasing f crosses `value` within [lo, hi], by bisection.
+template <class F>
+float decreasing_crossing(const F& f, float value, float lo, float hi) {
   for (int i = 0; i < 60; ++i) {
     const float mid = 0.5f * (lo + hi);
-    (mean_cdf(mid) < u ? lo : hi) = mid;
+    (f(mid) > value ? lo : hi) = mid;
   }
   return 0.5f * (lo + hi);
+}
+}  // namespace
+
+float dipole_mean_radius(const DipoleTerms& t, float u) {
+  const auto mean_outside = [&](float r) {
+    const glm::vec3 c = dipole_cdf(t, r);
+    return 1.0f - (c.r + c.g + c.b) / 3.0f;
+  };
+  float hi = 1.0f;
+  while (mean_outside(hi) > 1.0f - u) hi *= 2.0f;
+  return decreasing_crossing(mean_outside, 1.0f - u, 0.0f, hi);
+}
+
+float dipole_mean_density(const DipoleTerms& t, float r_mm) {
+  const glm::vec3 d = dipole_rd(t, r_mm) / dipole_total_rd(t);
+  return (d.r + d.g + d.b) / 3.0f;
+}
+
+float dipole_ring_radius(const DipoleTerms& t, float u0, float u1) {
+  const float inner = dipole_mean_radius(t, u0), outer = dipole_mean_radius(t, u1);
+  const float average = (u1 - u0) / (std::numbers::pi_v<float> * (outer * outer - inner * inner));
+  return decreasing_crossing([&](float r) { return dipole_mean_density(t, r); }, average, inner,
+                             outer);
 }
 
 }  // namespace skinsim::bake

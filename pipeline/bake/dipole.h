@@ -62,4 +62,14 @@ glm::vec3 dipole_cdf(const DipoleTerms& t, float r_mm);
 // integrate it (techniques/kernels.h, reference/dipole_diffusion.h).
 float dipole_mean_radius(const DipoleTerms& t, float u);
 
+// The mean over the channels of R_d(r) / R_d(total), 1/mm^2: the density whose CDF
+// dipole_mean_radius inverts.
+float dipole_mean_density(const DipoleTerms& t, float r_mm);
+
+// The radius within the ring between the mean-CDF shares u0 < u1 at which the mean density
+// equals its average over the ring, (u1 - u0) / ring area: one sample there, weighted by the
+// ring's area, integrates the mean profile over the ring exactly (a midpoint would
+// overweight the wide outer rings, over which the profile falls steeply).
+float dipole_ring_radius(const DipoleTerms& t, float u0, float u1);
+
 }  // namespace skinsim::bake
