@@ -63,7 +63,9 @@ const TechniqueSpec& dipole_technique() {
                              &PipelineConfig::dipole_samples, 4, kMaxDipoleSamples)},
       .render = render,
       .shaders = programs,
-      .host_ns_per_pixel = 2100,
+      // Measured 9870 ns against burley's 3380 in the same loaded session (burley's spec:
+      // 2100), so scaled to the others' conditions.
+      .host_ns_per_pixel = 6100,
   };
   return spec;
 }
