@@ -79,6 +79,16 @@ const char* shadow_depth_name(sim::TexelFormat format) {
   return sim::format_name(format);
 }
 
+ReferenceProfile parse_reference_profile(const std::string& text) {
+  if (text == "six_gaussian") return ReferenceProfile::kSixGaussian;
+  if (text == "dipole") return ReferenceProfile::kDipole;
+  throw ConfigError("reference_profile: expected 'six_gaussian' or 'dipole', got '" + text + "'");
+}
+
+const char* reference_profile_name(ReferenceProfile profile) {
+  return profile == ReferenceProfile::kSixGaussian ? "six_gaussian" : "dipole";
+}
+
 bool parse_switch(const std::string& text) {
   if (text == "on") return true;
   if (text == "off") return false;

@@ -34,6 +34,10 @@ enum class CurvatureSource { kVertex, kDerivatives };
 // filtered by the hardware (EXT_shadow_samplers with a linear filter on iOS).
 enum class ShadowFilter { kNearest, kPcf2x2 };
 
+// The diffusion profile of the reference renderer (pipeline/reference/): d'Eon & Luebke's
+// six Gaussians, or Jensen et al. 2001's dipole with their Skin1 measurements.
+enum class ReferenceProfile { kSixGaussian, kDipole };
+
 struct SpecularLobe {
   float roughness;  // Beckmann m
   float weight;
@@ -42,6 +46,10 @@ struct SpecularLobe {
 // Size of the Burley shader's uniform tap array (each tap: a vec2 offset and an RGB weight,
 // two uniform vectors; 64 taps fit the SGX's fragment uniform file).
 inline constexpr int kMaxBurleySamples = 64;
+
+// Size of the dipole shader's uniform tap arrays (a vec2 offset and an area per tap: one
+// uniform vector).
+inline constexpr int kMaxDipoleSamples = 64;
 
 struct PipelineConfig {
   std::string technique = "mobile";  // a name from the registry (technique.h)
@@ -84,6 +92,9 @@ struct PipelineConfig {
   std::optional<glm::vec3> shadow_tint;  // light left in full shadow per channel; unset: none
   bool transmission = true;
 
+  // The ground truth every technique is measured against (reference.h).
+  ReferenceProfile reference_profile = ReferenceProfile::kSixGaussian;
+
   // Technique knobs (docs/techniques.md). Specular model of every technique's skin shader;
   // only ks_lut reads the BRDF LUT, so the lut and lut_format knobs matter only with it.
   SpecularModel specular = SpecularModel::kKsLut;
@@ -95,6 +106,8 @@ struct PipelineConfig {
   // Burley scattering distance d per channel (mm); by default fitted to the six-Gaussian
   // profile's mean scattering radius (techniques/kernels.h).
   std::optional<glm::vec3> burley_distance_mm;
+  // Dipole taps per pixel, the centre included (the Unity article's 30 directions).
+  int dipole_samples = 30;
   int texture_space_size = 1024;  // texture-space diffusion buffers, texels per axis
   bool shadow_scatter = true;     // pre-integrated: Penner's penumbra scattering
 
@@ -122,6 +135,8 @@ ShadowFilter parse_shadow_filter(const std::string& text);
 const char* shadow_filter_name(ShadowFilter filter);
 sim::TexelFormat parse_shadow_depth(const std::string& text);
 const char* shadow_depth_name(sim::TexelFormat format);
+ReferenceProfile parse_reference_profile(const std::string& text);
+const char* reference_profile_name(ReferenceProfile profile);
 bool parse_switch(const std::string& text);  // on/off
 const char* switch_name(bool on);
 

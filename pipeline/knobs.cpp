@@ -146,6 +146,12 @@ const std::vector<KnobSpec>& common_knobs() {
         specular_knob(),
         std::move(lut),
         lut_format_knob(),
+        shapes_reference(choice_knob(
+            "reference_profile", "--reference-profile",
+            "Diffusion profile of the reference every technique is measured against: d'Eon & "
+            "Luebke's six Gaussians or Jensen et al. 2001's dipole (Skin1)",
+            "six_gaussian or dipole", &PipelineConfig::reference_profile, parse_reference_profile,
+            reference_profile_name)),
     };
     for (KnobSpec& k : light_knobs()) rows.push_back(std::move(k));
     return rows;

@@ -6,12 +6,14 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <optional>
 
 #include "pipeline/bake/brdf_lut.h"
 #include "pipeline/bake/skin_profile.h"
 #include "pipeline/bake/specular.h"
 #include "pipeline/brdf_lut_texture.h"
 #include "pipeline/frame_lights.h"
+#include "pipeline/reference/dipole_diffusion.h"
 #include "pipeline/reference/gbuffer_shaders.h"
 #include "pipeline/shaders/background.h"
 #include "pipeline/shaders/eye.h"
@@ -352,7 +354,15 @@ ReferenceFrame render_reference(const GpuScene& gs, const PipelineConfig& config
     }
   });
 
-  const Diffusion diffusion(g, irradiance, view, sc.units_per_mm);
+  const Diffusion gaussians(g, irradiance, view, sc.units_per_mm);
+  std::optional<DipoleDiffusion> dipole;
+  if (config.reference_profile == ReferenceProfile::kDipole) {
+    dipole.emplace(g.position, reference::kKindSkin, irradiance, view, sc.units_per_mm,
+                   bake::dipole_terms(bake::jensen_skin1()));
+  }
+  const auto diffused = [&](int x, int y) {
+    return dipole ? dipole->at(x, y) : gaussians.at(x, y);
+  };
   const bake::BrdfLutParams lut_params = brdf_lut_params(config);
   const DirectionalTable directional(lut_params);
   ReferenceFrame out{sim::RenderTarget("reference", w, h, sim::TexelFormat::kRGBA32F),
@@ -372,7 +382,7 @@ ReferenceFrame render_reference(const GpuScene& gs, const PipelineConfig& config
       const glm::vec3 albedo(g.albedo.at(x, y));
       float energy = 0.0f, fresnel = 0.0f;
       directional.at(n_dot_v, energy, fresnel);
-      const glm::vec3 diffuse = albedo * diffusion.at(x, y) * energy;
+      const glm::vec3 diffuse = albedo * diffused(x, y) * energy;
       glm::vec3 specular(0.0f);
       for (std::size_t i = 0; i < lights.size(); ++i) {
         const scene::DirectionalLight& light = lights[i];

@@ -6,9 +6,10 @@
 //     Embree against every mesh towards a disc light 1 degree in radius (soft edges), and
 //     light transmitted through thin parts from the baked thickness and the profile's
 //     transmittance (as shaders/lights.h), whatever the shadows / transmission knobs;
-//   - subsurface diffusion with the six-Gaussian skin profile (d'Eon & Luebke) as a 2D
-//     convolution whose kernel is evaluated on the world-space distance between surface
-//     points (so it does not bleed across depth discontinuities), normalised over skin;
+//   - subsurface diffusion with the six-Gaussian skin profile (d'Eon & Luebke), or with
+//     Jensen et al.'s dipole (reference_profile, dipole_diffusion.h), as a 2D convolution
+//     whose kernel is evaluated on the world-space distance between surface points (so it
+//     does not bleed across depth discontinuities), normalised over skin;
 //   - dual-lobe Kelemen/Szirmay-Kalos specular (Beckmann, Schlick Fresnel with the half
 //     vector, 1/|L+V|^2 geometry) evaluated analytically per pixel;
 //   - the diffuse energy-conservation term evaluated analytically per pixel (no LUT);

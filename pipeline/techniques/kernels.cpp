@@ -42,6 +42,25 @@ BurleyKernel burley_kernel(int samples, const glm::vec3& d) {
   return k;
 }
 
+DipoleKernel dipole_kernel(int samples, const bake::DipoleTerms& terms) {
+  const float golden = std::numbers::pi_v<float> * (3.0f - std::sqrt(5.0f));
+  const auto share = [&](int i) { return kDipoleCoverage * i / static_cast<float>(samples); };
+  const auto disc = [&](int i) {
+    const float r = bake::dipole_mean_radius(terms, share(i));
+    return std::numbers::pi_v<float> * r * r;
+  };
+  DipoleKernel k;
+  k.offsets_mm.emplace_back(0.0f, 0.0f);
+  k.areas_mm2.push_back(share(1) / bake::dipole_mean_density(terms, 0.0f));
+  for (int i = 1; i < samples; ++i) {
+    const float r = bake::dipole_ring_radius(terms, share(i), share(i + 1));
+    const float angle = golden * static_cast<float>(i);
+    k.offsets_mm.emplace_back(r * std::cos(angle), r * std::sin(angle));
+    k.areas_mm2.push_back(disc(i + 1) - disc(i));
+  }
+  return k;
+}
+
 SeparableKernel separable_kernel() {
   constexpr int n = shaders::kSsssTaps;
   std::array<float, n> offsets{};

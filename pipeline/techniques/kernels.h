@@ -8,6 +8,7 @@
 #include <glm/vec3.hpp>
 #include <vector>
 
+#include "pipeline/bake/dipole.h"
 #include "pipeline/shaders/screen_diffusion.h"
 #include "pipeline/shaders/texture_space.h"
 
@@ -26,6 +27,20 @@ struct BurleyKernel {
   std::vector<glm::vec3> weights;
 };
 BurleyKernel burley_kernel(int samples, const glm::vec3& distance_mm);
+
+// The dipole's taps: the disc around the pixel cut into `samples` rings that hold equal
+// shares of the mean of the three channels' normalised R_d (bake/dipole.h: red's long tail and
+// blue's sharp core both get taps), out to where they hold kDipoleCoverage. Tap 0 is the
+// centre, weighted so that R_d(0) times its weight is the innermost share; tap i sits in ring
+// i at the radius where the mean profile equals its ring average
+// (bake::dipole_ring_radius), at i golden angles, weighted by the ring's area. A fixed
+// pattern (the shader turns it per pixel); the same for every thread count.
+struct DipoleKernel {
+  std::vector<glm::vec2> offsets_mm;
+  std::vector<float> areas_mm2;  // the quadrature weight of each tap, mm^2
+};
+inline constexpr float kDipoleCoverage = 0.999f;
+DipoleKernel dipole_kernel(int samples, const bake::DipoleTerms& terms);
 
 // Jimenez's separable SSS kernel (SeparableSSS, 2015) fitted to the six-Gaussian profile:
 // 1D offsets distributed as range * sign(o) * o^2 (dense near the centre), each weighted by

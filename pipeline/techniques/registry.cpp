@@ -12,11 +12,12 @@ const TechniqueSpec& wrap_technique();           // techniques/wrap/
 const TechniqueSpec& burley_technique();         // techniques/burley/
 const TechniqueSpec& ssss_technique();           // techniques/ssss/
 const TechniqueSpec& texture_space_technique();  // techniques/texture_space/
+const TechniqueSpec& dipole_technique();         // techniques/dipole/
 
 const std::vector<const TechniqueSpec*>& all_techniques() {
   static const std::vector<const TechniqueSpec*> all = {
       &mobile_technique(), &lod_technique(),  &preintegrated_technique(), &wrap_technique(),
-      &burley_technique(), &ssss_technique(), &texture_space_technique(),
+      &burley_technique(), &ssss_technique(), &texture_space_technique(), &dipole_technique(),
   };
   return all;
 }

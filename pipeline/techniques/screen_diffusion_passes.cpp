@@ -3,6 +3,7 @@
 #include "pipeline/shader_variants.h"
 #include "pipeline/shaders/diffused_skin.h"
 #include "pipeline/techniques/diffused_skin_pass.h"
+#include "pipeline/techniques/frame_setup.h"
 #include "pipeline/techniques/screen_quad.h"
 #include "pipeline/techniques/skin_pass.h"
 
@@ -86,6 +87,20 @@ void finish_screen_diffusion_frame(const GpuScene& gs, const PipelineConfig& cfg
       gs, out.view, cfg, lights, shaders::DiffusionSource::kScreen, diffused, out.frame, gpu));
   out.intermediates.push_back({"diffuse", std::move(diffuse), kScreenBufferDisplayScale});
   out.intermediates.push_back({"diffused", std::move(diffused), kScreenBufferDisplayScale});
+}
+
+FrameOutput one_kernel_frame(const GpuScene& gs, const PipelineConfig& cfg,
+                             const FrameLights& lights, sim::Gpu& gpu,
+                             const KernelProgramFor& kernel) {
+  FrameOutput out = start_frame(gs, cfg);
+  sim::RenderTarget diffuse = screen_buffer("diffuse", cfg);
+  sim::RenderTarget diffused = screen_buffer("diffused", cfg);
+  out.passes.push_back(diffuse_pass(gs, out.view, lights, diffuse, gpu));
+  if (out.view.skin_visible) {
+    out.passes.push_back(kernel_pass("sss", kernel(out.view), diffuse, diffused, out.view, gpu));
+  }
+  finish_screen_diffusion_frame(gs, cfg, lights, std::move(diffuse), std::move(diffused), out, gpu);
+  return out;
 }
 
 std::vector<sim::NamedProfile> screen_diffusion_programs() {

@@ -3,6 +3,7 @@
 // and kernel passes over the skin's screen rectangle.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -40,6 +41,14 @@ std::shared_ptr<const sim::FragmentProgram> kernel_program(const View& view, con
 void finish_screen_diffusion_frame(const GpuScene& gs, const PipelineConfig& cfg,
                                    const FrameLights& lights, sim::RenderTarget diffuse,
                                    sim::RenderTarget diffused, FrameOutput& out, sim::Gpu& gpu);
+
+// A whole frame with one kernel pass, `sss`: diffuse -> sss -> skin (burley, dipole). `kernel`
+// makes the pass's program for the frame's view (run only when skin is visible).
+using KernelProgramFor =
+    std::function<std::shared_ptr<const sim::FragmentProgram>(const View& view)>;
+FrameOutput one_kernel_frame(const GpuScene& gs, const PipelineConfig& cfg,
+                             const FrameLights& lights, sim::Gpu& gpu,
+                             const KernelProgramFor& kernel);
 
 // The programs every screen-space diffusion technique runs besides its kernel: the diffuse
 // pass (perspective and orthographic), the kernel quad's vertex shader and the skin render.

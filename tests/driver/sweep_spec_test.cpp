@@ -116,7 +116,7 @@ TEST(SweepSpec, AllTechniquesOverTheDefaultAxes) {
   set_axis(spec, "technique", pipeline::technique_names(), "--techniques");
   const std::vector<SweepConfig> configs = expand_sweep(spec);
   // mobile: 4 scales x 4 LUTs; every other technique reads the LUT but has no buffer: 4.
-  ASSERT_EQ(configs.size(), 16u + 6u * 4u);
+  ASSERT_EQ(configs.size(), 16u + 7u * 4u);
   std::map<std::string, int> per_technique;
   std::set<std::string> ids;
   for (const SweepConfig& c : configs) {
@@ -126,6 +126,7 @@ TEST(SweepSpec, AllTechniquesOverTheDefaultAxes) {
   EXPECT_EQ(ids.size(), configs.size());
   EXPECT_EQ(per_technique["mobile"], 16);
   EXPECT_EQ(per_technique["texture-space"], 4);
+  EXPECT_EQ(per_technique["dipole"], 4);
   EXPECT_TRUE(ids.count("scale0.5_lut16x64_texture-space"));
 }
 

@@ -14,7 +14,7 @@ namespace {
 TEST(TechniqueConfig, EveryTechniqueRoundTrips) {
   const std::vector<std::string> names = technique_names();
   EXPECT_EQ(names, (std::vector<std::string>{"mobile", "lod", "preintegrated", "wrap", "burley",
-                                             "ssss", "texture-space"}));
+                                             "ssss", "texture-space", "dipole"}));
   for (const std::string& name : names) {
     PipelineConfig c;
     set_config_field(c, "technique", name);
@@ -35,7 +35,8 @@ TEST(TechniqueConfig, KnobsRoundTrip) {
       {"burley_samples", "24"},
       {"burley_distance_mm", "1,0.5,0.25"},
       {"burley_distance_mm", "auto"},
-      {"texture_space_size", "512"}};
+      {"texture_space_size", "512"},
+      {"dipole_samples", "12"}};
   for (const auto& [key, value] : knobs) {
     PipelineConfig c;
     set_config_field(c, key, value);
@@ -131,6 +132,8 @@ TEST(TechniqueConfig, BadValuesNameTheKey) {
   expect_error("wrap", "abc", "wrap");
   expect_error("burley_samples", "2", "burley_samples");
   expect_error("burley_samples", "65", "burley_samples");
+  expect_error("dipole_samples", "3", "dipole_samples");
+  expect_error("dipole_samples", "65", "dipole_samples");
   expect_error("burley_distance_mm", "1,2", "burley_distance_mm");
   expect_error("burley_distance_mm", "1,0,1", "burley_distance_mm");
   expect_error("texture_space_size", "1000", "texture_space_size");

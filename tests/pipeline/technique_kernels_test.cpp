@@ -58,6 +58,30 @@ TEST(BurleyKernel, RadiiGrowAlongTheSpiral) {
   }
 }
 
+TEST(DipoleKernel, CentreFirstRingsIntegrateTheProfile) {
+  const bake::DipoleTerms t = bake::dipole_terms(bake::jensen_skin1());
+  const DipoleKernel k = dipole_kernel(30, t);
+  ASSERT_EQ(k.offsets_mm.size(), 30u);
+  EXPECT_EQ(k.offsets_mm[0], glm::vec2(0.0f));
+  const float reach = bake::dipole_mean_radius(t, kDipoleCoverage);
+  for (std::size_t i = 1; i < k.offsets_mm.size(); ++i) {
+    EXPECT_GT(glm::length(k.offsets_mm[i]), glm::length(k.offsets_mm[i - 1]));
+    EXPECT_LT(glm::length(k.offsets_mm[i]), reach);
+  }
+  // As a quadrature: the mean normalised profile exactly (kDipoleCoverage of it), each
+  // channel's total reflectance within 5% (one sample per ring).
+  float mean = 0.0f;
+  glm::vec3 total(0.0f);
+  for (std::size_t i = 0; i < k.offsets_mm.size(); ++i) {
+    const float r = glm::length(k.offsets_mm[i]);
+    mean += bake::dipole_mean_density(t, r) * k.areas_mm2[i];
+    total += bake::dipole_rd(t, r) * k.areas_mm2[i];
+  }
+  EXPECT_NEAR(mean, kDipoleCoverage, 1e-3f);
+  const glm::vec3 exact = bake::dipole_total_rd(t);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(total[c], exact[c], 0.05f * exact[c]) << c;
+}
+
 TEST(SeparableKernel, CentreFirstSymmetricAndNormalised) {
   const SeparableKernel k = separable_kernel();
   EXPECT_EQ(k.offsets_mm[0], 0.0f);

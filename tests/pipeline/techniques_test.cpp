@@ -60,6 +60,7 @@ INSTANTIATE_TEST_SUITE_P(
         Expected{"wrap", {"shadow", "skin"}, "wrap_fs", 4, 2},
         Expected{"burley", {"shadow", "diffuse", "sss", "skin"}, "diffused_skin_fs", 5, 2},
         Expected{"ssss", {"shadow", "diffuse", "sss_h", "sss_v", "skin"}, "diffused_skin_fs", 5, 2},
+        Expected{"dipole", {"shadow", "diffuse", "sss", "skin"}, "diffused_skin_fs", 5, 2},
         Expected{"texture-space",
                  {"shadow", "uv_irradiance", "uv_blur_1_h", "uv_blur_1_v", "uv_blur_2_h",
                   "uv_blur_2_v", "uv_blur_3_h", "uv_blur_3_v", "uv_blur_4_h", "uv_blur_4_v",
@@ -87,6 +88,20 @@ TEST(TechniqueReads, BurleyTapsAreDependentAndFollowTheSampleCount) {
   const sim::OpProfile& p = draw_named(out, "sss").fragment_profile;
   EXPECT_EQ(p.texture_reads_independent, 1u);  // the centre
   EXPECT_EQ(p.texture_reads_dependent, 12u);
+}
+
+TEST(TechniqueReads, DipoleEvaluatesTheProfileAtEveryTap) {
+  const auto sss = [](const std::string& samples) {
+    PipelineConfig c = small_config("dipole");
+    set_config_field(c, "dipole_samples", samples);
+    return draw_named(render(c), "sss").fragment_profile;
+  };
+  const sim::OpProfile p12 = sss("12"), p13 = sss("13");
+  EXPECT_EQ(p12.texture_reads_independent, 1u);  // the centre
+  EXPECT_EQ(p12.texture_reads_dependent, 11u);
+  // Each tap evaluates R_d in the shader: two poles, each an rsqrt and an exp2 per channel.
+  EXPECT_EQ(p13.transcendental_ops - p12.transcendental_ops, 12u);
+  EXPECT_GT(p13.vector_ops - p12.vector_ops, 15u);
 }
 
 TEST(TechniqueReads, SsssAxisHasSixteenDependentTaps) {

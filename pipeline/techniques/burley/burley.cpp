@@ -7,7 +7,6 @@
 #include "pipeline/knob_types.h"
 #include "pipeline/shader_variants.h"
 #include "pipeline/technique.h"
-#include "pipeline/techniques/frame_setup.h"
 #include "pipeline/techniques/kernels.h"
 #include "pipeline/techniques/screen_diffusion_passes.h"
 
@@ -17,24 +16,16 @@ namespace {
 
 FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLights& lights,
                    sim::Gpu& gpu) {
-  FrameOutput out = start_frame(gs, cfg);
-  sim::RenderTarget diffuse = screen_buffer("diffuse", cfg);
-  sim::RenderTarget diffused = screen_buffer("diffused", cfg);
-  out.passes.push_back(diffuse_pass(gs, out.view, lights, diffuse, gpu));
-  if (out.view.skin_visible) {
+  return one_kernel_frame(gs, cfg, lights, gpu, [&](const View& view) {
     const BurleyKernel kernel =
         burley_kernel(cfg.burley_samples, cfg.burley_distance_mm.value_or(burley_distance_fit()));
     shaders::BurleyFS::Uniforms u;
-    static_cast<shaders::ScreenKernelUniforms&>(u) =
-        kernel_uniforms(out.view, gs.scene().units_per_mm);
+    static_cast<shaders::ScreenKernelUniforms&>(u) = kernel_uniforms(view, gs.scene().units_per_mm);
     u.count = cfg.burley_samples;
     std::copy(kernel.offsets_mm.begin(), kernel.offsets_mm.end(), u.offsets_mm.begin());
     std::copy(kernel.weights.begin(), kernel.weights.end(), u.weights.begin());
-    out.passes.push_back(kernel_pass("sss", kernel_program<shaders::BurleyFSFor>(out.view, u),
-                                     diffuse, diffused, out.view, gpu));
-  }
-  finish_screen_diffusion_frame(gs, cfg, lights, std::move(diffuse), std::move(diffused), out, gpu);
-  return out;
+    return kernel_program<shaders::BurleyFSFor>(view, u);
+  });
 }
 
 std::vector<sim::NamedProfile> programs() {

@@ -10,10 +10,14 @@
 namespace skinsim::pipeline {
 namespace {
 
-TEST(ReferenceAgreement, FlatLitPatchMatchesThePipeline) {
+class FlatPatch : public ::testing::TestWithParam<ReferenceProfile> {};
+
+// Either profile is normalised over skin: uniform light stays uniform.
+TEST_P(FlatPatch, MatchesThePipeline) {
   const scene::Scene s = testing::flat_skin_patch(0.6f, 0.05f);
   const GpuScene gs(s);
   PipelineConfig c;
+  c.reference_profile = GetParam();
   c.width = 128;
   c.height = 96;
   c.gamma = GammaMode::kSrgb;  // the reference encodes exact sRGB
@@ -34,6 +38,13 @@ TEST(ReferenceAgreement, FlatLitPatchMatchesThePipeline) {
   EXPECT_GT(compared, 1000);
 }
 
+INSTANTIATE_TEST_SUITE_P(ReferenceAgreement, FlatPatch,
+                         ::testing::Values(ReferenceProfile::kSixGaussian,
+                                           ReferenceProfile::kDipole),
+                         [](const ::testing::TestParamInfo<ReferenceProfile>& p) {
+                           return std::string(reference_profile_name(p.param));
+                         });
+
 TEST(ReferenceAgreement, HeadQualityIsHighButNotPerfect) {
   const scene::Scene s = testing::small_head();
   const GpuScene gs(s);
@@ -48,6 +59,25 @@ TEST(ReferenceAgreement, HeadQualityIsHighButNotPerfect) {
   EXPECT_LT(q.metrics.at("ssim_skin"), 1.0);
   EXPECT_GT(q.metrics.at("flip_skin"), 0.0);
   EXPECT_LT(q.metrics.at("flip_skin"), 0.3);
+}
+
+// The dipole technique is judged closer to the ground truth with its own profile (Jensen's
+// Skin1 dipole) than to the six Gaussians: the choice of reference moves the score.
+TEST(ReferenceAgreement, DipoleTechniqueIsCloserToTheDipoleReference) {
+  const scene::Scene s = testing::small_head();
+  const GpuScene gs(s);
+  PipelineConfig c;
+  c.technique = "dipole";
+  c.width = 256;
+  c.height = 192;
+  sim::Gpu gpu(sim::GpuConfig{});
+  const FrameOutput f = render_frame(gs, c, gpu);
+  const auto flip = [&](ReferenceProfile profile) {
+    c.reference_profile = profile;
+    const driver::ReferenceImages ref = driver::reference_images(render_reference(gs, c, 0));
+    return driver::evaluate_quality(f.frame, ref).metrics.at("flip_skin");
+  };
+  EXPECT_LT(flip(ReferenceProfile::kDipole), flip(ReferenceProfile::kSixGaussian));
 }
 
 }  // namespace
