@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <chrono>
 #include <fstream>
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
@@ -96,7 +97,17 @@ ReferenceImages cached_reference(const pipeline::GpuScene& scene,
     if (rendered) *rendered = false;
     return images;
   }
+  // The reference takes tens of seconds at full resolution: say so, or the sweep looks hung.
+  if (notes) {
+    fmt::print(notes, "rendering the reference {}x{} (cached in {} for later runs) ...\n",
+               resolved.width, resolved.height, refs_dir.string());
+  }
+  const auto start = std::chrono::steady_clock::now();
   images = reference_images(pipeline::render_reference(scene, resolved, threads));
+  if (notes) {
+    fmt::print(notes, "reference {}x{} rendered in {:.1f} s\n", resolved.width, resolved.height,
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
   quality::save_png(images.image, image_path);
   quality::save_mask_png(images.skin, mask_path);
   io::write_file_atomically(marker.string(),

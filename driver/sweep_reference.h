@@ -29,6 +29,7 @@ std::string reference_mask_path(const std::string& reference_image);
 // the .json marker last). `rendered` (optional) tells which happened. Both paths give
 // bit-identical images. Processes sharing `refs_dir` take turns through a lock file
 // (refs/<stem>.lock): one renders, the others wait (saying so on `notes`, if given) and load.
+// A render says when it starts and how long it took on `notes`.
 ReferenceImages cached_reference(const pipeline::GpuScene& scene,
                                  const pipeline::PipelineConfig& resolved,
                                  const SceneSource& source, const std::filesystem::path& refs_dir,
