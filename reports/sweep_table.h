@@ -103,7 +103,7 @@ struct SensitivityRow {
 // One window of the frame cut out of several images, at 1:1 and magnified (paths relative to
 // the sweep directory), for a recommendation's comparison panel.
 struct CropWindow {
-  std::string why;  // e.g. "largest error against the reference"
+  std::string why;                            // e.g. "largest error against the reference"
   int x = 0, y = 0, size = 0;                 // the 1:1 window, in frame pixels
   int zoom_x = 0, zoom_y = 0, zoom_size = 0;  // the magnified window, inside it
   int zoom = 4;                               // magnification (nearest neighbour)
