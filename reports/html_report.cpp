@@ -33,7 +33,8 @@ tr.chosen { background: #ffe9e9; font-weight: bold; } tr.over { color: #888; }
 .stack { position: relative; max-width: 1024px; } .stack img { width: 100%; display: block; }
 .stack img.over { position: absolute; top: 0; left: 0; }
 input.split { width: 100%; max-width: 1024px; }
-table.crops td { text-align: center; } table.crops th { font-size: 0.8em; max-width: 140px; }
+table.crops td { text-align: center; }
+table.crops th { font-size: 0.8em; max-width: 140px; overflow-wrap: anywhere; }
 table.crops img { width: 128px; image-rendering: pixelated; } img.bar { vertical-align: middle; }
 figure { margin: 1.5em 0; } figure img { width: 100%; border: 1px solid #ddd; }
 .thumbs { display: flex; flex-wrap: wrap; gap: 1em; }

@@ -12,6 +12,7 @@ packages=(
   glslang-tools  # glslangValidator checks the exported GLSL ES in the tests
   python3  # the budget CLI test parses JUnit XML with its standard library
   slurmctld slurmd slurm-client munge  # tests/slurm: a throwaway single-node Slurm cluster
+  chromium  # tests/reports: report.html checked in a real (headless) browser
   # Debian's OpenImageIO CMake config references these files (iconvert, PyImath) and
   # lists /usr/include/opencv4 as an include directory of OpenImageIO::OpenImageIO.
   openimageio-tools python3-imath libopencv-core-dev
