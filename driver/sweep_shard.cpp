@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <charconv>
@@ -13,6 +12,7 @@
 #include "driver/sweep_spec.h"
 #include "io/atomic_file.h"
 #include "io/read_file.h"
+#include "io/temp_files.h"
 
 namespace skinsim::driver {
 
@@ -27,12 +27,6 @@ bool parse_int(std::string_view text, int& value) {
   const char* end = text.data() + text.size();
   const auto [ptr, ec] = std::from_chars(text.data(), end, value);
   return !text.empty() && ec == std::errc() && ptr == end;
-}
-
-std::string this_host() {
-  char buffer[256] = {};
-  if (::gethostname(buffer, sizeof(buffer) - 1) != 0) return "unknown";
-  return buffer[0] ? buffer : "unknown";
 }
 
 fs::path status_path(const fs::path& dir, const SweepShard& shard) {
@@ -88,7 +82,7 @@ void write_shard_status(const fs::path& sweep_dir, const ShardStatus& status) {
   const nlohmann::json j = {{"shard", status.shard.index},
                             {"count", status.shard.count},
                             {"state", status.state},
-                            {"host", status.host.empty() ? this_host() : status.host},
+                            {"host", status.host.empty() ? io::host_name() : status.host},
                             {"configurations", status.configurations},
                             {"failed", failed}};
   fs::create_directories(sweep_dir / "shards");

@@ -22,14 +22,12 @@ constexpr const char* kMarker = ".skinsim-tmp.";
 constexpr auto kForeignHostMaxAge = std::chrono::hours(24);
 
 // The host name with dots replaced, so the fields of a temporary's name stay dot-separated.
-std::string host_name() {
-  char buffer[256] = {};
-  if (::gethostname(buffer, sizeof(buffer) - 1) != 0) return "unknown";
-  std::string host(buffer);
+std::string host_field() {
+  std::string host = host_name();
   for (char& c : host) {
     if (c == '.' || c == '/') c = '_';
   }
-  return host.empty() ? "unknown" : host;
+  return host;
 }
 
 struct TemporaryOwner {
@@ -69,10 +67,16 @@ bool process_is_gone(long long pid) {
 
 }  // namespace
 
+std::string host_name() {
+  char buffer[256] = {};
+  if (::gethostname(buffer, sizeof(buffer) - 1) != 0 || buffer[0] == '\0') return "unknown";
+  return buffer;
+}
+
 fs::path temporary_path_beside(const fs::path& target) {
   static std::atomic<unsigned long> counter{0};
   const std::string name = fmt::format(".{}{}{}.{}.{}", target.filename().string(), kMarker,
-                                       host_name(), ::getpid(), counter++);
+                                       host_field(), ::getpid(), counter++);
   return target.parent_path() / name;
 }
 
@@ -84,7 +88,7 @@ int remove_stale_temporaries(const fs::path& dir) {
   std::error_code ec;
   fs::directory_iterator it(dir.empty() ? fs::path(".") : dir, ec);
   if (ec) return 0;
-  const std::string host = host_name();
+  const std::string host = host_field();
   int removed = 0;
   for (const fs::directory_entry& entry : it) {
     const std::string name = entry.path().filename().string();

@@ -7,6 +7,9 @@
 
 namespace skinsim::io {
 
+// This machine's host name (gethostname), or "unknown".
+std::string host_name();
+
 // ".NAME.skinsim-tmp.HOST.PID.N" in `target`'s directory: hidden, unique within this process
 // (N counts up), and naming the host and process that own it.
 std::filesystem::path temporary_path_beside(const std::filesystem::path& target);
