@@ -9,6 +9,7 @@
 #include "app/cli_options.h"
 #include "app/commands.h"
 #include "driver/frame_job.h"
+#include "driver/frame_passes.h"
 #include "driver/frame_quality.h"
 #include "driver/images.h"
 #include "driver/result_json.h"
@@ -21,6 +22,7 @@
 #include "pipeline/brdf_lut_texture.h"
 #include "pipeline/technique.h"
 #include "quality/json_value.h"
+#include "reports/timeline_svg.h"
 
 namespace skinsim::app {
 
@@ -68,6 +70,13 @@ int run(const RunOptions& o) {
     pipeline::BrdfLutTexture::shared(config)->write_png((out / "brdf_lut.png").string());
     written.push_back("brdf_lut.png");
   }
+
+  const std::vector<reports::PassCost> passes = driver::pass_costs(result.timing);
+  std::vector<std::string> pass_names;
+  for (const reports::PassCost& p : passes) pass_names.push_back(p.name);
+  io::write_file_atomically((out / "timeline.svg").string(),
+                            reports::timeline_svg(passes, pass_names));
+  written.push_back("timeline.svg");
 
   nlohmann::json json = driver::frame_result_json(result, o.scene.label());
   json["device"] = device.name;
@@ -122,6 +131,7 @@ int run(const RunOptions& o) {
                                "--sensitivity re-renders them)",
                                result.range.left_out)
                  : "");
+  fmt::print("{}", gpu_model::frame_table_legend());
   written.push_back("result.json");
   run_directory.commit();
   fmt::print("wrote {}/{{{}}}\n", o.out, fmt::join(written, ", "));

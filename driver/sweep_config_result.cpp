@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fstream>
 
+#include "driver/frame_passes.h"
 #include "gpu_model/sensitivity.h"
 #include "gpu_model/timing.h"
 #include "io/read_file.h"
@@ -15,17 +16,9 @@ namespace skinsim::driver {
 
 namespace {
 
-constexpr int kFormatVersion = 2;  // 2: frame_ms_low/high, FLIP percentiles and visibility
-
-std::map<std::string, double> dram_by_cause(const gpu_model::DramBytes& d) {
-  return {{"parameter_write", d.parameter_write},
-          {"parameter_read", d.parameter_read},
-          {"texture", d.texture},
-          {"color_load", d.color_load},
-          {"color_store", d.color_store},
-          {"depth_load", d.depth_load},
-          {"depth_store", d.depth_store}};
-}
+// 2: frame_ms_low/high, FLIP percentiles and visibility; 3: pass ms = share of the frame, the
+// pass schedule, dram_wait
+constexpr int kFormatVersion = 3;
 
 }  // namespace
 
@@ -48,9 +41,7 @@ reports::ConfigResult config_row(const SweepConfig& config, const FrameResult& f
   row.frame_ms_high = frame.range.high;
   row.fps = frame.timing.fps;
   row.dram_bytes = frame.timing.dram_bytes;
-  for (const gpu_model::PassTiming& p : frame.timing.passes) {
-    row.passes.push_back({p.name, p.ms, gpu_model::unit_name(p.bottleneck), dram_by_cause(p.dram)});
-  }
+  row.passes = pass_costs(frame.timing);
   for (const sim::PassCounters& pass : frame.output.passes) {
     for (const sim::DrawCounters& d : pass.draws) {
       if (d.fragments_shaded == 0) continue;

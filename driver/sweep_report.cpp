@@ -1,6 +1,7 @@
 #include "driver/sweep_report.h"
 
 #include "driver/sweep_results.h"
+#include "driver/sweep_thumbnails.h"
 #include "reports/display_check.h"
 #include "reports/html_report.h"
 
@@ -23,6 +24,7 @@ SweepReportOutcome write_sweep_report(const reports::SweepTable& table, const st
   options.higher_is_better = false;
   options.draw_charts = charts;
   options.write_data_files = false;  // write_sweep_data writes results.json / results.csv
+  write_thumbnails(table, out_dir);
   outcome.report_path = reports::write_report(table, out_dir, options);
   outcome.charts_drawn = charts;
   return outcome;

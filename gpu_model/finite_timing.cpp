@@ -22,7 +22,7 @@ void check_finite(const PassTiming& t) {
                 std::isfinite(t.ta.ms));
   SKINSIM_CHECK(std::isfinite(t.ta_ms) && std::isfinite(t.makespan_ms) &&
                 std::isfinite(t.render_bandwidth_ms) && std::isfinite(t.render_ms) &&
-                std::isfinite(t.ms) && std::isfinite(t.balance));
+                std::isfinite(t.standalone_ms) && std::isfinite(t.balance));
   for (int u = 0; u < kUnitCount; ++u) {
     SKINSIM_CHECK(std::isfinite(t.busy_ms[u]) && std::isfinite(t.utilisation[u]));
   }
@@ -43,7 +43,8 @@ void check_finite(const FrameTiming& f) {
   }
   check_finite(f.dram);
   SKINSIM_CHECK(std::isfinite(f.pipeline_ms) && std::isfinite(f.bandwidth_ms) &&
-                std::isfinite(f.frame_ms) && std::isfinite(f.fps) && std::isfinite(f.dram_bytes));
+                std::isfinite(f.frame_ms) && std::isfinite(f.fps) && std::isfinite(f.dram_bytes) &&
+                std::isfinite(f.dram_wait_ms));
 }
 
 }  // namespace skinsim::gpu_model

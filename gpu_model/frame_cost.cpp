@@ -1,10 +1,12 @@
 #include "gpu_model/frame_cost.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "gpu_model/finite_timing.h"
 #include "gpu_model/model_terms.h"
 #include "gpu_model/pass_cost.h"
+#include "util/check.h"
 
 namespace skinsim::gpu_model {
 
@@ -44,8 +46,12 @@ FrameTiming estimate_frame(const std::vector<sim::PassCounters>& passes,
   // Overlapping stages share one DRAM: the frame is no faster than all its bytes.
   f.bandwidth_ms = f.dram_bytes / dram_bytes_per_ms(profile);
   f.frame_ms = std::max(f.pipeline_ms, f.bandwidth_ms);
+  f.dram_wait_ms = f.frame_ms - f.pipeline_ms;
   f.fps = f.frame_ms > 0.0 ? 1000.0 / f.frame_ms : 0.0;
   check_finite(f);
+  double passes_ms = f.dram_wait_ms;
+  for (const PassSlot& s : f.schedule) passes_ms += s.exposed_ms;
+  SKINSIM_CHECK_LE(std::abs(passes_ms - f.frame_ms), 1e-9 * f.frame_ms);
   return f;
 }
 

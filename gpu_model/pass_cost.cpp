@@ -70,7 +70,7 @@ PassTiming estimate_pass(const sim::PassCounters& pass, const DeviceProfile& p) 
   // On its own, a pass can be no faster than either stage, nor than all its bytes (TA and 3D
   // share the DRAM).
   const double all_bandwidth_ms = t.dram.total() / bpm;
-  t.ms = std::max({t.ta_ms, t.render_ms, all_bandwidth_ms});
+  t.standalone_ms = std::max({t.ta_ms, t.render_ms, all_bandwidth_ms});
 
   for (double busy : schedule.core_busy) t.core_busy_ms.push_back(busy / cpm);
   double mean_busy = 0.0;
@@ -88,7 +88,7 @@ PassTiming estimate_pass(const sim::PassCounters& pass, const DeviceProfile& p) 
   int most = 0;
   for (int u = 0; u < kUnitCount; ++u) {
     if (t.busy_ms[u] > t.busy_ms[most]) most = u;  // first unit wins ties
-    t.utilisation[u] = t.ms > 0.0 ? t.busy_ms[u] / t.ms : 0.0;
+    t.utilisation[u] = t.standalone_ms > 0.0 ? t.busy_ms[u] / t.standalone_ms : 0.0;
   }
   t.bottleneck = static_cast<Unit>(most);
   check_finite(t);

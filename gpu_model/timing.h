@@ -61,12 +61,14 @@ struct PassTiming {
   double makespan_ms = 0.0;          // tiles over cores, list schedule
   double render_bandwidth_ms = 0.0;  // renderer DRAM bytes at achievable bandwidth
   double render_ms = 0.0;            // 3D stage: max(makespan, bandwidth) + per-render overhead
-  double ms = 0.0;                   // pass on its own: max(ta, render, all bytes / bandwidth)
+  // The pass alone, nothing overlapping it: max(ta, render, all bytes / bandwidth). Not the
+  // pass's share of a frame (PassSlot::exposed_ms); the denominator of `utilisation`.
+  double standalone_ms = 0.0;
   // Mean-to-max core balance: mean core busy time / makespan (1 = perfectly balanced).
   double balance = 1.0;
   Unit bottleneck = Unit::kOverhead;
   std::array<double, kUnitCount> busy_ms{};      // per unit; per-core units averaged over cores
-  std::array<double, kUnitCount> utilisation{};  // busy_ms / ms
+  std::array<double, kUnitCount> utilisation{};  // busy_ms / standalone_ms
   DramBytes dram;
   std::vector<double> core_busy_ms;
   std::vector<TileTiming> tiles;  // row-major, as in the counters
@@ -78,8 +80,13 @@ struct PassSlot {
   double ta_end_ms = 0.0;
   double render_start_ms = 0.0;
   double render_end_ms = 0.0;
-  double exposed_ms = 0.0;  // render_end - previous render_end: the pass's share of the frame
+  // render_end - previous render_end: the pass's share of the frame, what every output calls
+  // the pass's "ms". The passes' exposed_ms plus FrameTiming::dram_wait_ms add up to frame_ms.
+  double exposed_ms = 0.0;
 };
+
+// The name under which outputs list FrameTiming::dram_wait_ms beside the passes.
+inline constexpr const char* kDramWaitRow = "dram_wait";
 
 struct FrameTiming {
   std::string device;
@@ -88,6 +95,9 @@ struct FrameTiming {
   double pipeline_ms = 0.0;        // end of the last render
   double bandwidth_ms = 0.0;       // all frame bytes at achievable bandwidth
   double frame_ms = 0.0;           // max(pipeline_ms, bandwidth_ms)
+  // frame_ms - pipeline_ms: the time the frame's DRAM traffic outlasts the pipeline (0 unless
+  // the frame is bandwidth-bound). Reported beside the passes so that they add up to frame_ms.
+  double dram_wait_ms = 0.0;
   double fps = 0.0;
   DramBytes dram;
   double dram_bytes = 0.0;

@@ -33,8 +33,8 @@ nlohmann::json to_json(const FrameTiming& frame) {
     const PassSlot& s = frame.schedule[i];
     passes.push_back({
         {"name", p.name},
-        {"ms", p.ms},
-        {"exposed_ms", s.exposed_ms},
+        {"ms", s.exposed_ms},
+        {"standalone_ms", p.standalone_ms},
         {"ta_ms", p.ta_ms},
         {"render_ms", p.render_ms},
         {"makespan_ms", p.makespan_ms},
@@ -55,6 +55,7 @@ nlohmann::json to_json(const FrameTiming& frame) {
           {"fps", frame.fps},
           {"pipeline_ms", frame.pipeline_ms},
           {"bandwidth_ms", frame.bandwidth_ms},
+          {"dram_wait_ms", frame.dram_wait_ms},
           {"dram_bytes", to_json(frame.dram)},
           {"passes", passes}};
 }

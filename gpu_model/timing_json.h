@@ -10,8 +10,10 @@
 namespace skinsim::gpu_model {
 
 nlohmann::json to_json(const DramBytes& bytes);  // by cause, plus "total"
-// Per pass: name, ms, exposed_ms, ta_ms, render_ms, bottleneck, utilisation and busy_ms per
-// unit, dram_bytes by cause, schedule. Per frame: device, frame_ms, fps, dram_bytes.
+// Per pass: name, ms (its share of the frame, PassSlot::exposed_ms), standalone_ms, ta_ms,
+// render_ms, bottleneck, utilisation (of standalone_ms) and busy_ms per unit, dram_bytes by
+// cause, schedule. Per frame: device, frame_ms, fps, pipeline_ms, bandwidth_ms, dram_wait_ms
+// (the passes' ms plus dram_wait_ms add up to frame_ms), dram_bytes.
 nlohmann::json to_json(const FrameTiming& frame);
 // Per tile: x, y, core, start_ms, ms, bottleneck (for heat maps).
 nlohmann::json tiles_to_json(const PassTiming& pass);

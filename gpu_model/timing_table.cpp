@@ -21,24 +21,38 @@ std::string ms_or_dash(const std::optional<double>& ms) {
 
 std::string format_frame_table(const FrameTiming& frame) {
   std::string out = fmt::format(
-      "{:<24} {:>8} {:>8} {:>8} {:>10} {:>5} {:>5} {:>5} {:>5} {:>5} {:>9}\n", "pass", "TA ms",
-      "3D ms", "exposed", "bottleneck", "ALU%", "TEX%", "ISP%", "BW%", "bal%", "DRAM MB");
+      "{:<24} {:>8} {:>10} {:>8} {:>8} {:>8} {:>5} {:>5} {:>5} {:>5} {:>5} {:>9}\n", "pass", "ms",
+      "bottleneck", "TA ms", "3D ms", "alone ms", "ALU%", "TEX%", "ISP%", "BW%", "bal%", "DRAM MB");
   for (std::size_t i = 0; i < frame.passes.size(); ++i) {
     const PassTiming& p = frame.passes[i];
     out += fmt::format(
-        "{:<24} {:>8.3f} {:>8.3f} {:>8.3f} {:>10} {:>5.0f} {:>5.0f} {:>5.0f} {:>5.0f} {:>5.0f} "
-        "{:>9.2f}\n",
-        p.name, p.ta_ms, p.render_ms, frame.schedule[i].exposed_ms, unit_name(p.bottleneck),
-        util(p, Unit::kAlu), util(p, Unit::kTexture), util(p, Unit::kIsp),
+        "{:<24} {:>8.3f} {:>10} {:>8.3f} {:>8.3f} {:>8.3f} {:>5.0f} {:>5.0f} {:>5.0f} {:>5.0f} "
+        "{:>5.0f} {:>9.2f}\n",
+        p.name, frame.schedule[i].exposed_ms, unit_name(p.bottleneck), p.ta_ms, p.render_ms,
+        p.standalone_ms, util(p, Unit::kAlu), util(p, Unit::kTexture), util(p, Unit::kIsp),
         util(p, Unit::kBandwidth), 100.0 * p.balance, p.dram.total() / kMegabyte);
   }
-  out +=
-      fmt::format("{:<24} {:>8} {:>8} {:>8.3f} {:>10} {:>29} {:>9.2f}\n", "frame", "", "",
-                  frame.frame_ms, frame.bandwidth_ms > frame.pipeline_ms ? "bandwidth" : "pipeline",
-                  "", frame.dram_bytes / kMegabyte);
+  if (frame.dram_wait_ms > 0.0) {
+    out += fmt::format("{:<24} {:>8.3f} {:>10}\n", kDramWaitRow, frame.dram_wait_ms, "bandwidth");
+  }
+  out += fmt::format("{:<24} {:>8.3f} {:>10} {:>66.2f}\n", "frame", frame.frame_ms,
+                     frame.dram_wait_ms > 0.0 ? "bandwidth" : "pipeline",
+                     frame.dram_bytes / kMegabyte);
   out += fmt::format("{} at {:.1f} fps on {}\n", fmt::format("{:.3f} ms", frame.frame_ms),
                      frame.fps, frame.device);
   return out;
+}
+
+std::string frame_table_legend() {
+  return std::string(
+             "columns: ms = the pass's share of the frame (render end - previous render end); "
+             "the rows add up to the frame\n"
+             "  TA ms, 3D ms = tiler and renderer stage times; alone ms = the pass with nothing "
+             "overlapping it\n"
+             "  ALU% TEX% ISP% BW% = unit busy time / alone ms; bottleneck = the busiest unit; "
+             "bal% = mean / busiest 3D core\n  ") +
+         kDramWaitRow +
+         " (when > 0) = the frame's DRAM traffic outlasting the pipeline; docs/cost-model.md\n";
 }
 
 std::string format_sensitivity_table(const std::vector<SensitivityRow>& rows) {

@@ -34,8 +34,8 @@ struct MicrobenchResult {
   std::string peak_basis;  // how the peak follows from the profile
   double ratio = 0.0;      // value / peak
   gpu_model::Unit bottleneck = gpu_model::Unit::kOverhead;  // unit the model named
-  double pass_ms = 0.0;
-  std::string shows;  // what the result shows, with the pass's own numbers
+  double pass_ms = 0.0;  // the test pass alone, its stages in steady state (standalone_ms)
+  std::string shows;     // what the result shows, with the pass's own numbers
   sim::PassCounters counters;
   gpu_model::PassTiming timing;
 };

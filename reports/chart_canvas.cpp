@@ -31,14 +31,6 @@ namespace skinsim::reports {
 
 namespace fs = std::filesystem;
 
-Rgb palette_colour(std::size_t i) {
-  // Tableau 10 (Tableau Software's default categorical palette): distinct, colour-blind aware.
-  static constexpr Rgb kPalette[] = {
-      {78, 121, 167}, {242, 142, 43},  {225, 87, 89},   {118, 183, 178}, {89, 161, 79},
-      {237, 201, 72}, {176, 122, 161}, {255, 157, 167}, {156, 117, 95},  {186, 176, 172}};
-  return kPalette[i % std::size(kPalette)];
-}
-
 vtkSmartPointer<vtkContextView> make_chart_view(const ChartOptions& options) {
   require_charts_available();  // VTK aborts the process if it cannot open a display
   if (options.width < 200 || options.height < 150) {
@@ -102,6 +94,15 @@ void add_vertical_line(vtkChartXY* chart, double at, double y_lo, double y_hi,
   line->SetColor(colour[0], colour[1], colour[2], 255);
   line->SetWidth(3.0);
   line->GetPen()->SetLineType(vtkPen::DASH_LINE);
+}
+
+void place_legend_outside(vtkChartXY* chart, const ChartOptions& options) {
+  chart->SetShowLegend(true);
+  vtkChartLegend* legend = chart->GetLegend();
+  legend->SetInline(false);
+  legend->SetLabelSize(options.legend_font_size);
+  legend->SetHorizontalAlignment(vtkChartLegend::RIGHT);
+  legend->SetVerticalAlignment(vtkChartLegend::TOP);
 }
 
 namespace {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "reports/charts.h"
+#include "reports/palette.h"
 
 class vtkAxis;
 class vtkChart;
@@ -18,11 +19,6 @@ class vtkChartXY;
 class vtkContextView;
 
 namespace skinsim::reports {
-
-using Rgb = std::array<unsigned char, 3>;
-
-// Colour i of a 10-colour qualitative palette (Tableau 10), cycling.
-Rgb palette_colour(std::size_t i);
 
 // An offscreen context view of options.width x options.height on a white background.
 // Throws ReportError (before any VTK window exists) if there is no X display.
@@ -43,6 +39,10 @@ void set_ticks(vtkAxis* axis, const std::vector<double>& positions,
 // A vertical line x = at spanning [y_lo, y_hi] with the given legend text, added to `chart`.
 void add_vertical_line(vtkChartXY* chart, double at, double y_lo, double y_hi,
                        const std::string& legend, const Rgb& colour);
+
+// The chart's legend to the right of the plot area, never over the data (VTK reserves a
+// border for a legend that is not inline).
+void place_legend_outside(vtkChartXY* chart, const ChartOptions& options);
 
 // Renders the view and writes <stem>.png (and <stem>.svg if options.write_svg).
 ChartFiles save_chart(vtkContextView* view, const std::string& path_stem,

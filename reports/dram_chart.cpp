@@ -1,6 +1,5 @@
 // Where one configuration's DRAM traffic comes from: per pass, split by cause.
 #include <vtkAxis.h>
-#include <vtkChartLegend.h>
 #include <vtkChartXY.h>
 #include <vtkColorSeries.h>
 #include <vtkContextScene.h>
@@ -87,10 +86,7 @@ ChartFiles write_dram_by_cause_chart(const ConfigResult& row, const std::string&
   value_axis->SetBehavior(vtkAxis::FIXED);
   value_axis->SetRange(0.0, y_hi > 0.0 ? y_hi * 1.1 : 1.0);
 
-  chart->SetShowLegend(true);
-  chart->GetLegend()->SetLabelSize(options.legend_font_size);
-  chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
-  chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
+  place_legend_outside(chart, options);
   return save_chart(view, path_stem, options);
 }
 

@@ -10,9 +10,11 @@
 #include "io/atomic_file.h"
 #include "reports/csv_writer.h"
 #include "reports/error.h"
+#include "reports/palette.h"
 #include "reports/pareto.h"
 #include "reports/recommendation.h"
 #include "reports/report_charts.h"
+#include "reports/timeline_svg.h"
 
 namespace skinsim::reports {
 
@@ -39,6 +41,7 @@ table.crops img { width: 128px; image-rendering: pixelated; } img.bar { vertical
 figure { margin: 1.5em 0; } figure img { width: 100%; border: 1px solid #ddd; }
 .thumbs { display: flex; flex-wrap: wrap; gap: 1em; }
 .thumb { font-size: 0.8em; width: 330px; } .thumb img { width: 160px; border: 1px solid #ccc; }
+details summary { cursor: pointer; margin: 0.3em 0; } svg.timeline { max-width: 100%; height: auto; }
 )";
 
 std::string esc(const std::string& s) {
@@ -338,14 +341,21 @@ std::string techniques_section(const SweepTable& t, const ReportOptions& o) {
   return h + "</table>\n";
 }
 
-std::string thumbnails_section(const SweepTable& t) {
+// A thumbnail linking its full-size image; the small copy when the sweep wrote one.
+std::string thumbnail(const std::string& dir, const std::string& image, const std::string& alt) {
+  const std::string small = thumbnail_path(image);
+  const std::string shown = fs::exists(fs::path(dir) / small) ? small : image;
+  return "<a href=\"" + link(image) + "\"><img src=\"" + link(shown) + "\" alt=\"" + esc(alt) +
+         "\" loading=\"lazy\"></a> ";
+}
+
+std::string thumbnails_section(const SweepTable& t, const std::string& dir) {
   std::string cells;
   std::set<std::string> references;
   for (const ConfigResult& r : t.rows) {
     if (r.reference_image.empty() || !references.insert(r.reference_image).second) continue;
-    cells += "<div class=\"thumb\"><div><b>reference</b> (" + esc(r.group) + ")</div><a href=\"" +
-             link(r.reference_image) + "\"><img src=\"" + link(r.reference_image) +
-             "\" alt=\"reference\" loading=\"lazy\"></a></div>\n";
+    cells += "<div class=\"thumb\"><div><b>reference</b> (" + esc(r.group) + ")</div>" +
+             thumbnail(dir, r.reference_image, "reference") + "</div>\n";
   }
   for (const ConfigResult& r : t.rows) {
     if (r.frame_image.empty() && r.error_image.empty()) continue;
@@ -353,8 +363,7 @@ std::string thumbnails_section(const SweepTable& t) {
     for (const std::string* path : {&r.frame_image, &r.error_image}) {
       if (path->empty()) continue;
       const char* what = path == &r.frame_image ? "frame" : "error map";
-      cells += "<a href=\"" + link(*path) + "\"><img src=\"" + link(*path) + "\" alt=\"" +
-               esc(std::string(what) + " of " + name_of(r)) + "\" loading=\"lazy\"></a> ";
+      cells += thumbnail(dir, *path, std::string(what) + " of " + name_of(r));
     }
     cells += "</div>\n";
   }
@@ -362,6 +371,28 @@ std::string thumbnails_section(const SweepTable& t) {
   return "<h2>Frames and error maps</h2>\n<p>Left: rendered frame; right: error map against the "
          "reference. Click for full size.</p>\n<div class=\"thumbs\">\n" +
          cells + "</div>\n";
+}
+
+// Each configuration's frame on the GPU's two stages (PVRTune's view): the recommended ones
+// open, the others folded.
+std::string timeline_section(const SweepTable& t, const std::set<std::size_t>& chosen) {
+  const std::vector<std::string> order = pass_order(t);
+  std::string h =
+      "<h2>Where the frame's time goes: TA and 3D</h2>\n<p>Each pass on the tiler (TA: vertex "
+      "shading, binning) and the renderer (3D: hidden-surface removal, shading, resolve) over "
+      "the frame, as the cost model schedules them: the TA of a pass runs while the 3D renders "
+      "the previous one, so a pass's <i>ms</i> everywhere in this report is its share of the "
+      "frame (its render's end minus the previous render's end), and the passes add up to the "
+      "frame time. A grey <code>dram_wait</code> at the end is the time the frame's DRAM traffic "
+      "outlasts the pipeline. Hover a box for its stage times.</p>\n";
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    const ConfigResult& r = t.rows[i];
+    if (r.passes.empty()) continue;
+    h += std::string("<details") + (chosen.count(i) ? " open" : "") + "><summary>" +
+         esc(name_of(r)) + (chosen.count(i) ? " (recommended)" : "") + ": " + ms(r.frame_ms) +
+         " ms</summary>\n" + timeline_svg(r.passes, order) + "</details>\n";
+  }
+  return h;
 }
 
 std::string assumptions_section(const SweepTable& t) {
@@ -429,9 +460,9 @@ std::string write_report(const SweepTable& table, const std::string& dir,
   page += "<title>" + esc(options.title) + "</title>\n<style>" + kStyle + "</style>\n</head>\n";
   page += "<body>\n" + header_section(table, options) +
           recommendation_section(table, options, recommendations) + comparison_section(table) +
-          charts_section(figures, options.draw_charts) + techniques_section(table, options) +
-          table_section(table, options, chosen) + thumbnails_section(table) +
-          assumptions_section(table);
+          charts_section(figures, options.draw_charts) + timeline_section(table, chosen) +
+          techniques_section(table, options) + table_section(table, options, chosen) +
+          thumbnails_section(table, dir) + assumptions_section(table);
   if (options.write_data_files) {
     page +=
         "<h2>Data</h2>\n<p><a href=\"results.json\">results.json</a> (everything on this "

@@ -1,8 +1,8 @@
-// Escaping for the HTML report: text and attributes (html_escape) and link targets
-// (url_encode_path).
+#include "reports/html_text.h"
+
 #include <fmt/format.h>
 
-#include "reports/html_report.h"
+#include <algorithm>
 
 namespace skinsim::reports {
 
@@ -42,6 +42,12 @@ std::string url_encode_path(const std::string& path) {
     out += keep ? std::string(1, static_cast<char>(ch)) : fmt::format("%{:02X}", ch);
   }
   return out;
+}
+
+std::string thumbnail_path(const std::string& image) {
+  std::string name = image;
+  std::replace(name.begin(), name.end(), '/', '_');
+  return "thumbs/" + name;
 }
 
 }  // namespace skinsim::reports

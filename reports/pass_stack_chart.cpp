@@ -1,6 +1,5 @@
 // Where each configuration's frame time goes: stacked per-pass bars.
 #include <vtkAxis.h>
-#include <vtkChartLegend.h>
 #include <vtkChartXY.h>
 #include <vtkColorSeries.h>
 #include <vtkContextScene.h>
@@ -18,26 +17,12 @@
 
 namespace skinsim::reports {
 
-namespace {
-
-std::vector<std::string> pass_names(const std::vector<std::vector<PassCost>>& merged) {
-  std::vector<std::string> names;
-  for (const auto& passes : merged) {
-    for (const PassCost& p : passes) {
-      if (std::find(names.begin(), names.end(), p.name) == names.end()) names.push_back(p.name);
-    }
-  }
-  return names;
-}
-
-}  // namespace
-
 ChartFiles write_pass_stack_chart(const SweepTable& table, const std::string& path_stem,
                                   const ChartOptions& options) {
   if (table.rows.empty()) throw ReportError("pass chart " + path_stem + ": the sweep has no rows");
   std::vector<std::vector<PassCost>> merged;
   for (const ConfigResult& r : table.rows) merged.push_back(merged_passes(r));
-  const std::vector<std::string> names = pass_names(merged);
+  const std::vector<std::string> names = pass_order(table);
   if (names.empty()) throw ReportError("pass chart " + path_stem + ": no row has passes");
 
   // Row 0 at the top: bar i sits at y = n - 1 - i.
@@ -81,7 +66,7 @@ ChartFiles write_pass_stack_chart(const SweepTable& table, const std::string& pa
   colours->ClearColors();
   vtkNew<vtkStringArray> legend;
   for (std::size_t k = 0; k < names.size(); ++k) {
-    const Rgb c = palette_colour(k);
+    const Rgb c = pass_colour(names[k], names);
     colours->AddColor(vtkColor3ub(c[0], c[1], c[2]));
     legend->InsertNextValue(names[k]);
   }
@@ -104,10 +89,7 @@ ChartFiles write_pass_stack_chart(const SweepTable& table, const std::string& pa
   set_ticks(config_axis, position, labels);
   config_axis->SetGridVisible(false);
 
-  chart->SetShowLegend(true);
-  chart->GetLegend()->SetLabelSize(options.legend_font_size);
-  chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
-  chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
+  place_legend_outside(chart, options);
   return save_chart(view, path_stem, options);
 }
 

@@ -97,6 +97,10 @@ PassCost parse_pass(const json& j, const std::string& where) {
   p.name = req_string(j, where, "name");
   p.ms = req_number(j, where, "ms");
   p.bottleneck = opt_string(j, where, "bottleneck");
+  p.ta_start_ms = req_number(j, where, "ta_start_ms");
+  p.ta_end_ms = req_number(j, where, "ta_end_ms");
+  p.render_start_ms = req_number(j, where, "render_start_ms");
+  p.render_end_ms = req_number(j, where, "render_end_ms");
   if (j.contains("dram_bytes_by_cause")) {
     p.dram_bytes_by_cause =
         map_at<double>(j["dram_bytes_by_cause"], field_path(where, "dram_bytes_by_cause"));
@@ -315,7 +319,11 @@ void to_json(json& j, const PassCost& v) {
   j = json{{"name", v.name},
            {"ms", v.ms},
            {"bottleneck", v.bottleneck},
-           {"dram_bytes_by_cause", v.dram_bytes_by_cause}};
+           {"dram_bytes_by_cause", v.dram_bytes_by_cause},
+           {"ta_start_ms", v.ta_start_ms},
+           {"ta_end_ms", v.ta_end_ms},
+           {"render_start_ms", v.render_start_ms},
+           {"render_end_ms", v.render_end_ms}};
 }
 
 void to_json(json& j, const ProgramCost& v) {
@@ -472,7 +480,18 @@ void validate_sweep_table(const SweepTable& t) {
       check_finite((*c)->visible_px, at + ".visible_px");
     }
     for (std::size_t p = 0; p < r.passes.size(); ++p) {
-      check_time(r.passes[p].ms, where + ".passes" + "[" + std::to_string(p) + "].ms");
+      const PassCost& pass = r.passes[p];
+      const std::string at = index_path(where + ".passes", p);
+      check_time(pass.ms, at + ".ms");
+      for (const auto& [name, value] : {std::pair{"ta_start_ms", pass.ta_start_ms},
+                                        {"ta_end_ms", pass.ta_end_ms},
+                                        {"render_start_ms", pass.render_start_ms},
+                                        {"render_end_ms", pass.render_end_ms}}) {
+        check_time(value, at + "." + name);
+      }
+      if (pass.ta_end_ms < pass.ta_start_ms || pass.render_end_ms < pass.render_start_ms) {
+        throw ReportError(at + ": a stage ends before it starts");
+      }
     }
   }
   if (t.heatmap) {

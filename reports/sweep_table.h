@@ -11,12 +11,20 @@
 
 namespace skinsim::reports {
 
-// Modelled cost of one render pass of one configuration.
+// Modelled cost of one render pass of one configuration. A frame's passes, plus a "dram_wait"
+// entry when its DRAM traffic outlasts the pipeline (gpu_model::kDramWaitRow), add up to its
+// frame_ms.
 struct PassCost {
-  std::string name;        // e.g. "irradiance", "blur_h", "blur_v", "skin_shade"
-  double ms = 0.0;         // modelled pass time
-  std::string bottleneck;  // unit that bounds the pass, e.g. "alu", "texture", "dram"
-  std::map<std::string, double> dram_bytes_by_cause;  // e.g. "color_store", "texture_miss"
+  std::string name;        // e.g. "irradiance", "blur_h", "blur_v", "skin"
+  double ms = 0.0;         // its share of the frame (gpu_model::PassSlot::exposed_ms)
+  std::string bottleneck;  // unit that bounds the pass, e.g. "alu", "texture", "bandwidth"
+  std::map<std::string, double> dram_bytes_by_cause;  // e.g. "color_store", "texture"
+  // Where it sits in the frame's two-stage pipeline, ms from the frame's start: its tiler
+  // (TA) stage and its renderer (3D) stage (docs/cost-model.md, "Frame").
+  double ta_start_ms = 0.0;
+  double ta_end_ms = 0.0;
+  double render_start_ms = 0.0;
+  double render_end_ms = 0.0;
 };
 
 // A fragment program one configuration ran: where, on how many fragments, and its op profile

@@ -1,7 +1,6 @@
 // Frame time vs quality: the chart a lead uses to pick a configuration.
 #include <fmt/format.h>
 #include <vtkAxis.h>
-#include <vtkChartLegend.h>
 #include <vtkChartXY.h>
 #include <vtkContextScene.h>
 #include <vtkContextView.h>
@@ -60,6 +59,12 @@ vtkPlotPoints* add_series(vtkChartXY* chart, const std::string& name, const std:
   return plot;
 }
 
+// Rows of the group that do not differ visibly from its best configuration (ConfigResult::
+// vs_best; the best itself included).
+bool ties_with_best(const ConfigResult& r) {
+  return r.vs_best && !r.vs_best->visible;
+}
+
 }  // namespace
 
 bool on_tradeoff_chart(const ConfigResult& row, const TradeoffSpec& spec) {
@@ -85,6 +90,12 @@ ChartFiles write_tradeoff_chart(const SweepTable& table, const TradeoffSpec& spe
         (spec.order_knob.empty() ? "" : " and " + spec.order_knob) + " has quality metric '" +
         spec.metric + "'" + (spec.filter.empty() ? "" : " (after the knob filter)"));
   }
+  // Lines join configurations of one group only: a millisecond on one device or framing is not
+  // one on another (recommendation.h).
+  std::vector<std::string> groups;
+  for (const ConfigResult& r : rows) {
+    if (std::find(groups.begin(), groups.end(), r.group) == groups.end()) groups.push_back(r.group);
+  }
   std::set<std::string, decltype(&knob_value_less)> series(&knob_value_less);
   for (const ConfigResult& r : rows) series.insert(knob_value(r, spec.series_knob));
 
@@ -94,29 +105,102 @@ ChartFiles write_tradeoff_chart(const SweepTable& table, const TradeoffSpec& spe
   style_chart(chart, spec.title.empty() ? default_title(spec) : spec.title, options);
 
   double y_lo = INFINITY, y_hi = -INFINITY, x_lo = table.budget_ms, x_hi = table.budget_ms;
-  std::size_t colour = 0;
-  for (const std::string& value : series) {
-    std::vector<const ConfigResult*> members;
+  for (const ConfigResult& r : rows) {
+    y_lo = std::min(y_lo, r.quality.at(spec.metric));
+    y_hi = std::max(y_hi, r.quality.at(spec.metric));
+    x_lo = std::min(x_lo, r.frame_ms_low);
+    x_hi = std::max(x_hi, r.frame_ms_high);
+  }
+  // Log time axis when the times span more than 10x, so cheap candidates do not collapse
+  // into one blob next to an expensive technique.
+  const bool log_x = x_hi > 10.0 * x_lo && x_lo > 0.0;
+  const double x_min = log_x ? x_lo / 1.15 : std::max(0.0, x_lo - 0.06 * (x_hi - x_lo) - 0.5);
+  const double x_max = log_x ? x_hi * 1.15 : x_hi + 0.06 * (x_hi - x_lo) + 0.5;
+  // The axis spans at least 10% of the largest value, centred on the data: differences of a
+  // fraction of a percent (frames 60 dB apart) stay flat instead of filling the chart, and the
+  // band and crosses below say which differences are visible.
+  const double min_span = 0.10 * std::max(std::abs(y_lo), std::abs(y_hi));
+  const double span = std::max(1.16 * (y_hi - y_lo), std::max(min_span, 1e-6));
+  const double mid = (y_lo + y_hi) / 2.0;
+  y_lo = mid - span / 2.0;
+  y_hi = mid + span / 2.0;
+  if (!spec.higher_is_better && y_lo < 0.0) {  // an error is never negative
+    y_hi -= y_lo;
+    y_lo = 0.0;
+  }
+
+  // Behind the lines: per group, the band of configurations that do not differ visibly from
+  // the group's best.
+  for (const std::string& group : groups) {
+    double lo = INFINITY, hi = -INFINITY;
     for (const ConfigResult& r : rows) {
-      if (knob_value(r, spec.series_knob) == value && r.quality.count(spec.metric)) {
-        members.push_back(&r);
+      if (r.group != group || !ties_with_best(r)) continue;
+      lo = std::min(lo, r.quality.at(spec.metric));
+      hi = std::max(hi, r.quality.at(spec.metric));
+    }
+    if (lo > hi) continue;
+    // A wide translucent line over the chart's width, as tall as the rows' values spread (in
+    // pixels of the plot area, about 80% of the chart's height) and at least 10 px.
+    const double plot_px = 0.8 * options.height;
+    const double thickness = std::max(10.0, (hi - lo) / (y_hi - y_lo) * plot_px);
+    vtkPlotPoints* band = add_series(
+        chart,
+        (groups.size() > 1 ? group + ": " : std::string()) + "not visibly different from the best",
+        {x_min, x_max}, {(lo + hi) / 2.0, (lo + hi) / 2.0}, {89, 161, 79}, vtkPen::SOLID_LINE);
+    band->SetColor(89, 161, 79, 70);
+    band->SetWidth(static_cast<float>(thickness));
+    band->SetMarkerStyle(vtkPlotPoints::NONE);
+  }
+  // Frame time ranges over the profile's uncertain figures, as horizontal error bars.
+  bool first_range = true;
+  for (const ConfigResult& r : rows) {
+    const double y = r.quality.at(spec.metric);
+    vtkPlotPoints* bar =
+        add_series(chart, "frame ms range (profile's uncertain figures)",
+                   {r.frame_ms_low, r.frame_ms_high}, {y, y}, {150, 150, 150}, vtkPen::SOLID_LINE);
+    bar->SetColor(150, 150, 150, 140);  // light: the ranges overlap and must not hide the points
+    bar->SetMarkerStyle(vtkPlotPoints::PLUS);
+    bar->SetMarkerSize(8.0);
+    bar->SetWidth(1.0);
+    bar->SetLegendVisibility(first_range);
+    first_range = false;
+  }
+
+  std::size_t colour = 0;
+  for (const std::string& group : groups) {
+    for (const std::string& value : series) {
+      std::vector<const ConfigResult*> members;
+      for (const ConfigResult& r : rows) {
+        if (r.group == group && knob_value(r, spec.series_knob) == value) members.push_back(&r);
       }
+      if (members.empty()) continue;
+      std::stable_sort(members.begin(), members.end(), [&](const auto* a, const auto* b) {
+        if (spec.order_knob.empty()) return a->frame_ms < b->frame_ms;
+        return knob_value_less(knob_value(*a, spec.order_knob), knob_value(*b, spec.order_knob));
+      });
+      std::vector<double> x, y;
+      for (const ConfigResult* r : members) {
+        x.push_back(r->frame_ms);
+        y.push_back(r->quality.at(spec.metric));
+      }
+      const std::string name =
+          (groups.size() > 1 ? group + ": " : std::string()) + spec.series_knob + " = " + value;
+      add_series(chart, name, x, y, palette_colour(colour++), vtkPen::SOLID_LINE);
     }
-    std::stable_sort(members.begin(), members.end(), [&](const auto* a, const auto* b) {
-      if (spec.order_knob.empty()) return a->frame_ms < b->frame_ms;
-      return knob_value_less(knob_value(*a, spec.order_knob), knob_value(*b, spec.order_knob));
-    });
-    std::vector<double> x, y;
-    for (const ConfigResult* r : members) {
-      x.push_back(r->frame_ms);
-      y.push_back(r->quality.at(spec.metric));
-      y_lo = std::min(y_lo, y.back());
-      y_hi = std::max(y_hi, y.back());
-      x_lo = std::min(x_lo, x.back());
-      x_hi = std::max(x_hi, x.back());
+  }
+
+  std::vector<double> visible_x, visible_y;
+  for (const ConfigResult& r : rows) {
+    if (r.vs_best && r.vs_best->visible) {
+      visible_x.push_back(r.frame_ms);
+      visible_y.push_back(r.quality.at(spec.metric));
     }
-    const std::string name = spec.series_knob + " = " + value;
-    add_series(chart, name, x, y, palette_colour(colour++), vtkPen::SOLID_LINE);
+  }
+  if (!visible_x.empty()) {
+    vtkPlotPoints* cross = add_series(chart, "visibly different from the best", visible_x,
+                                      visible_y, {20, 20, 20}, vtkPen::NO_PEN);
+    cross->SetMarkerStyle(vtkPlotPoints::CROSS);
+    cross->SetMarkerSize(18.0);
   }
 
   std::vector<double> front_x, front_y;
@@ -146,28 +230,21 @@ ChartFiles write_tradeoff_chart(const SweepTable& table, const TradeoffSpec& spe
     }
   }
 
-  const double pad = y_hi > y_lo ? 0.08 * (y_hi - y_lo) : std::max(1e-3, 0.05 * std::abs(y_hi));
-  y_lo -= pad;
-  y_hi += pad;
   add_vertical_line(chart, table.budget_ms, y_lo, y_hi, "budget " + budget_label(table.budget_ms),
                     {200, 0, 0});
 
   vtkAxis* x_axis = chart->GetAxis(vtkAxis::BOTTOM);
-  style_axis(x_axis, "frame time (ms)", options);
+  style_axis(x_axis, log_x ? "frame time (ms, log scale)" : "frame time (ms)", options);
   x_axis->SetBehavior(vtkAxis::FIXED);
-  const double x_pad = 0.06 * (x_hi - x_lo) + 0.5;
-  x_axis->SetRange(std::max(0.0, x_lo - x_pad), x_hi + x_pad);
+  x_axis->SetLogScale(log_x);
+  x_axis->SetRange(x_min, x_max);
   vtkAxis* y_axis = chart->GetAxis(vtkAxis::LEFT);
   style_axis(y_axis, spec.metric_label.empty() ? default_metric_label(spec) : spec.metric_label,
              options);
   y_axis->SetBehavior(vtkAxis::FIXED);
   y_axis->SetRange(y_lo, y_hi);
 
-  chart->SetShowLegend(true);
-  chart->GetLegend()->SetLabelSize(options.legend_font_size);
-  chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
-  chart->GetLegend()->SetVerticalAlignment(spec.higher_is_better ? vtkChartLegend::BOTTOM
-                                                                 : vtkChartLegend::TOP);
+  place_legend_outside(chart, options);
   return save_chart(view, path_stem, options);
 }
 

@@ -81,6 +81,16 @@ TEST(SweepRun, WritesOneRowPerConfigurationWithCostAndQuality) {
   ASSERT_EQ(read.rows[0].passes.at(1).name, "irradiance");
   EXPECT_LT(read.rows[1].passes.at(1).dram_bytes_by_cause.at("color_store"),
             read.rows[0].passes.at(1).dram_bytes_by_cause.at("color_store"));
+  for (const reports::ConfigResult& r : read.rows) {
+    // A pass's ms is its share of the frame: with the DRAM wait, if any, they add up to it.
+    double sum = 0.0;
+    for (const reports::PassCost& p : r.passes) {
+      sum += p.ms;
+      EXPECT_LE(p.ta_start_ms, p.ta_end_ms) << r.id << " " << p.name;
+      EXPECT_LE(p.render_end_ms, r.frame_ms * (1.0 + 1e-12)) << r.id << " " << p.name;
+    }
+    EXPECT_NEAR(sum, r.frame_ms, 1e-9 * r.frame_ms) << r.id;
+  }
   ASSERT_TRUE(read.heatmap.has_value());
   EXPECT_EQ(read.heatmap->pass_name, "skin");
   EXPECT_EQ(read.heatmap->tiles_x, 8);

@@ -52,7 +52,8 @@ void expect_finite(const FrameTiming& f, const std::string& what) {
   EXPECT_TRUE(std::isfinite(f.fps)) << what;
   EXPECT_TRUE(std::isfinite(f.dram_bytes)) << what;
   for (const PassTiming& t : f.passes) {
-    EXPECT_TRUE(std::isfinite(t.ms) && std::isfinite(t.ta_ms) && std::isfinite(t.render_ms))
+    EXPECT_TRUE(std::isfinite(t.standalone_ms) && std::isfinite(t.ta_ms) &&
+                std::isfinite(t.render_ms))
         << what;
     for (double u : t.utilisation) EXPECT_TRUE(std::isfinite(u)) << what;
   }

@@ -114,6 +114,23 @@ TEST(FrameCost, OverlappedStagesShareTheDram) {
   EXPECT_DOUBLE_EQ(f.bandwidth_ms, (10'000'000.0 + 8'000'000.0 + 4096.0) / bytes_per_ms);
   EXPECT_GT(f.bandwidth_ms, f.pipeline_ms);
   EXPECT_DOUBLE_EQ(f.frame_ms, f.bandwidth_ms);
+  // The passes' ms (their shares of the pipeline) and the DRAM wait add up to the frame, in
+  // the struct, the table and the JSON.
+  EXPECT_DOUBLE_EQ(f.dram_wait_ms, f.bandwidth_ms - f.pipeline_ms);
+  EXPECT_NEAR(f.schedule[0].exposed_ms + f.schedule[1].exposed_ms + f.dram_wait_ms, f.frame_ms,
+              1e-12);
+  EXPECT_NE(
+      format_frame_table(f).find(fmt::format("{:<24} {:>8.3f}", kDramWaitRow, f.dram_wait_ms)),
+      std::string::npos)
+      << format_frame_table(f);
+  EXPECT_DOUBLE_EQ(to_json(f)["dram_wait_ms"].get<double>(), f.dram_wait_ms);
+}
+
+TEST(FrameCost, PipelineBoundFrameHasNoDramWaitRow) {
+  const FrameTiming f = estimate_frame(two_passes(), round_profile());
+  ASSERT_GE(f.pipeline_ms, f.bandwidth_ms);
+  EXPECT_DOUBLE_EQ(f.dram_wait_ms, 0.0);
+  EXPECT_EQ(format_frame_table(f).find(kDramWaitRow), std::string::npos);
 }
 
 TEST(FrameCost, JsonCarriesPassesAndFrameTotals) {
@@ -126,6 +143,8 @@ TEST(FrameCost, JsonCarriesPassesAndFrameTotals) {
   const auto& pass = j["passes"][0];
   EXPECT_EQ(pass["name"], "irradiance");
   EXPECT_EQ(pass["bottleneck"], unit_name(f.passes[0].bottleneck));
+  EXPECT_DOUBLE_EQ(pass["ms"].get<double>(), f.schedule[0].exposed_ms);
+  EXPECT_DOUBLE_EQ(pass["standalone_ms"].get<double>(), f.passes[0].standalone_ms);
   for (const char* unit : {"alu", "texture", "isp", "bandwidth", "tiler", "overhead"}) {
     EXPECT_TRUE(pass["utilisation"].contains(unit)) << unit;
   }

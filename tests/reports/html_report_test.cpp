@@ -74,6 +74,36 @@ TEST(HtmlReport, LinksResolveWithoutCharts) {
   EXPECT_FALSE(fs::exists(dir + "/pass_times.png"));
 }
 
+TEST(HtmlReport, ShowsThumbnailsWhereTheyExistAndLinksTheFullImages) {
+  const SweepTable sweep = synthetic_sweep();
+  const std::string dir = fresh_output_dir();
+  touch_images(sweep, dir);
+  const std::string small = thumbnail_path(sweep.rows[0].frame_image);
+  fs::create_directories((fs::path(dir) / small).parent_path());
+  std::ofstream(fs::path(dir) / small) << "thumb";
+  const std::string html = read_text(write_report(sweep, dir, no_charts()));
+  EXPECT_NE(html.find("<a href=\"" + url_encode_path(sweep.rows[0].frame_image) + "\"><img src=\"" +
+                      url_encode_path(small) + "\""),
+            std::string::npos)
+      << html;
+  // No small copy of row 1's frame: the page shows the full-size one.
+  EXPECT_NE(html.find("<img src=\"" + url_encode_path(sweep.rows[1].frame_image) + "\""),
+            std::string::npos);
+  EXPECT_TRUE(missing_report_links(dir).empty());
+}
+
+TEST(HtmlReport, DrawsATimelinePerConfigurationWithTheRecommendedOneOpen) {
+  const SweepTable sweep = synthetic_sweep();
+  const std::string html = read_text(write_report(sweep, fresh_output_dir(), no_charts()));
+  std::size_t timelines = 0;
+  for (std::size_t at = html.find("<svg class=\"timeline\""); at != std::string::npos;
+       at = html.find("<svg class=\"timeline\"", at + 1)) {
+    ++timelines;
+  }
+  EXPECT_EQ(timelines, sweep.rows.size());
+  EXPECT_NE(html.find("<details open><summary>"), std::string::npos);
+}
+
 TEST(HtmlReport, MissingImagesAreReported) {
   const SweepTable sweep = synthetic_sweep();
   const std::string dir = fresh_output_dir();

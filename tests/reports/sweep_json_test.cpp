@@ -44,6 +44,7 @@ TEST(SweepJson, RoundTripIsExact) {
   EXPECT_EQ(back.rows[5].passes[3].dram_bytes_by_cause,
             sweep.rows[5].passes[3].dram_bytes_by_cause);
   EXPECT_DOUBLE_EQ(back.rows[5].frame_ms, sweep.rows[5].frame_ms);
+  EXPECT_DOUBLE_EQ(back.rows[5].passes[3].render_end_ms, sweep.rows[5].passes[3].render_end_ms);
   EXPECT_EQ(back.rows[5].knobs.at("lut"), "32x128");
   ASSERT_EQ(back.rows[2].programs.size(), 1u);
   EXPECT_EQ(back.rows[2].programs[0].texture_reads_dependent, 1);
@@ -83,6 +84,15 @@ TEST(SweepJson, ErrorsNameTheField) {
   j = testing::synthetic_sweep();
   j["rows"][0]["passes"][1]["ms"] = -1.0;
   EXPECT_NE(error_of(j).find("rows[0].passes[1].ms"), std::string::npos) << error_of(j);
+
+  j = testing::synthetic_sweep();
+  j["rows"][0]["passes"][1]["render_end_ms"] = 0.0;
+  EXPECT_NE(error_of(j).find("rows[0].passes[1]: a stage ends before it starts"), std::string::npos)
+      << error_of(j);
+
+  j = testing::synthetic_sweep();
+  j["rows"][0]["passes"][1].erase("ta_start_ms");
+  EXPECT_NE(error_of(j).find("rows[0].passes[1]"), std::string::npos) << error_of(j);
 
   j = testing::synthetic_sweep();
   j["rows"][4]["error_image"] = "../../etc/passwd";

@@ -1,0 +1,51 @@
+#include "driver/sweep_thumbnails.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "quality/resize.h"
+#include "reports/html_text.h"
+
+namespace skinsim::driver {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+bool up_to_date(const fs::path& thumb, const fs::path& image) {
+  std::error_code ec;
+  const auto thumb_time = fs::last_write_time(thumb, ec);
+  if (ec) return false;
+  return thumb_time >= fs::last_write_time(image, ec) && !ec;
+}
+
+}  // namespace
+
+void write_thumbnails(const reports::SweepTable& table, const fs::path& sweep_dir) {
+  std::set<std::string> images;
+  for (const reports::ConfigResult& r : table.rows) {
+    for (const std::string* image : {&r.reference_image, &r.frame_image, &r.error_image}) {
+      if (!image->empty()) images.insert(*image);
+    }
+  }
+  std::vector<std::string> todo;
+  for (const std::string& image : images) {
+    const fs::path full = sweep_dir / image;
+    if (fs::exists(full) && !up_to_date(sweep_dir / reports::thumbnail_path(image), full)) {
+      todo.push_back(image);
+    }
+  }
+  if (todo.empty()) return;
+  fs::create_directories(sweep_dir / "thumbs");
+  tbb::parallel_for(std::size_t{0}, todo.size(), [&](std::size_t i) {
+    const quality::Image full = quality::load_png(sweep_dir / todo[i]);
+    quality::save_png(quality::resized(full, std::min(kThumbnailWidth, full.width)),
+                      sweep_dir / reports::thumbnail_path(todo[i]));
+  });
+}
+
+}  // namespace skinsim::driver

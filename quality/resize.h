@@ -1,0 +1,13 @@
+// Resampling display images, e.g. the small thumbnails a report page loads.
+#pragma once
+
+#include "quality/image.h"
+
+namespace skinsim::quality {
+
+// `image` resampled to `width` pixels wide, the height in proportion (at least 1), with
+// OpenImageIO's default filtered resize (a windowed filter, not point sampling, so thin
+// features do not alias away). `width` and the image's size must be at least 1.
+Image resized(const Image& image, int width);
+
+}  // namespace skinsim::quality

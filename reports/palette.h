@@ -1,0 +1,28 @@
+// Colours shared by the charts and the SVG timeline, so a pass has one colour everywhere.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "reports/sweep_table.h"
+
+namespace skinsim::reports {
+
+using Rgb = std::array<unsigned char, 3>;
+
+// Colour i of a 10-colour qualitative palette (Tableau 10), cycling.
+Rgb palette_colour(std::size_t i);
+
+// The pass names of a sweep in first-appearance order (rows, then passes).
+std::vector<std::string> pass_order(const SweepTable& table);
+
+// A pass's colour: palette_colour of its index in `order` (the next free index if it is not
+// there); the frame's DRAM wait (gpu_model::kDramWaitRow) is always grey.
+Rgb pass_colour(const std::string& pass, const std::vector<std::string>& order);
+
+// "#rrggbb".
+std::string css_colour(const Rgb& colour);
+
+}  // namespace skinsim::reports
