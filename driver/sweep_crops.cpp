@@ -6,6 +6,7 @@
 #include <cmath>
 #include <optional>
 
+#include "driver/crop_landmarks.h"
 #include "driver/sweep_reference.h"
 #include "quality/error_map.h"
 #include "quality/image.h"
@@ -76,6 +77,11 @@ Window zoom_window(const quality::ScalarMap& error, const Window& window) {
   const int size = window.size / kZoom;
   return {std::clamp(px - size / 2, window.x, window.x + window.size - size),
           std::clamp(py - size / 2, window.y, window.y + window.size - size), size};
+}
+
+// The size x size window centred on (x, y) as far as the area [x0, x1) x [y0, y1) allows.
+Window centred(int x, int y, int size, int x0, int y0, int x1, int y1) {
+  return {std::clamp(x - size / 2, x0, x1 - size), std::clamp(y - size / 2, y0, y1 - size), size};
 }
 
 quality::Image crop(const quality::Image& image, const Window& w, int magnify) {
@@ -160,39 +166,46 @@ std::vector<reports::ComparisonPanel> write_comparison_panels(
       searches.emplace_back("largest difference from the best configuration",
                             flip_map(chosen_frame, best_frame, mask));
     }
-    std::optional<Window> previous;
-    for (std::size_t s = 0; s < searches.size() && size >= kZoom; ++s) {
-      const std::optional<Window> window = worst_window(searches[s].second, size, previous);
-      if (!window) continue;
-      previous = window;
-      const Window zoom = zoom_window(searches[s].second, *window);
-      reports::CropWindow crop_window{searches[s].first,
-                                      window->x,
-                                      window->y,
-                                      window->size,
-                                      zoom.x,
-                                      zoom.y,
-                                      zoom.size,
-                                      kZoom,
-                                      {},
-                                      {}};
-      const std::vector<std::pair<std::string, const quality::Image*>> sources = {
-          {"reference", &reference},
-          {"best: " + best.id, &best_frame},
-          {"recommended: " + chosen.id, &chosen_frame}};
-      const quality::Image difference = amplified_difference(chosen_frame, reference);
-      std::vector<std::pair<std::string, const quality::Image*>> all = sources;
-      all.emplace_back(fmt::format("|recommended - reference| x {:g}", kDifferenceGain),
-                       &difference);
-      if (*rec.chosen == *rec.best) all.erase(all.begin() + 1);  // best == recommended
-      for (std::size_t k = 0; k < all.size(); ++k) {
-        const std::string stem = fmt::format("compare/g{}_w{}_{}", g, s, k);
-        quality::save_png(crop(*all[k].second, *window, 1), sweep_dir / (stem + ".png"));
-        quality::save_png(crop(*all[k].second, zoom, kZoom), sweep_dir / (stem + "_x4.png"));
-        crop_window.images.emplace_back(all[k].first, stem + ".png");
-        crop_window.zoomed.emplace_back(all[k].first, stem + "_x4.png");
+    const quality::Image difference = amplified_difference(chosen_frame, reference);
+    std::vector<std::pair<std::string, const quality::Image*>> sources = {
+        {"reference", &reference},
+        {"best: " + best.id, &best_frame},
+        {"recommended: " + chosen.id, &chosen_frame},
+        {fmt::format("|recommended - reference| x {:g}", kDifferenceGain), &difference}};
+    if (*rec.chosen == *rec.best) sources.erase(sources.begin() + 1);  // best == recommended
+    const auto add_window = [&](const std::string& why, const Window& window, const Window& zoom) {
+      const std::size_t w = panel.windows.size();
+      reports::CropWindow crop_window{why,    window.x,  window.y, window.size, zoom.x,
+                                      zoom.y, zoom.size, kZoom,    {},          {}};
+      for (std::size_t k = 0; k < sources.size(); ++k) {
+        const std::string stem = fmt::format("compare/g{}_w{}_{}", g, w, k);
+        quality::save_png(crop(*sources[k].second, window, 1), sweep_dir / (stem + ".png"));
+        quality::save_png(crop(*sources[k].second, zoom, kZoom), sweep_dir / (stem + "_x4.png"));
+        crop_window.images.emplace_back(sources[k].first, stem + ".png");
+        crop_window.zoomed.emplace_back(sources[k].first, stem + "_x4.png");
       }
       panel.windows.push_back(std::move(crop_window));
+    };
+    if (size < kZoom) {
+      panels.push_back(std::move(panel));
+      continue;
+    }
+    // The fixed places first (an eye, the lips, a shadow edge, the silhouette), then where the
+    // error is worst.
+    if (mask) {
+      for (const Landmark& l : find_landmarks(reference, *mask)) {
+        const Window window = centred(l.x, l.y, size, 0, 0, reference.width, reference.height);
+        add_window(
+            l.why, window,
+            centred(l.x, l.y, size / kZoom, window.x, window.y, window.x + size, window.y + size));
+      }
+    }
+    std::optional<Window> previous;
+    for (const auto& [why, error] : searches) {
+      const std::optional<Window> window = worst_window(error, size, previous);
+      if (!window) continue;
+      previous = window;
+      add_window(why, *window, zoom_window(error, *window));
     }
     panels.push_back(std::move(panel));
   }
