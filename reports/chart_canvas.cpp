@@ -1,5 +1,6 @@
 #include "reports/chart_canvas.h"
 
+#include <unistd.h>
 #include <vtkAxis.h>
 #include <vtkChartLegend.h>
 #include <vtkChartXY.h>
@@ -19,6 +20,8 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 
 #include "io/atomic_file.h"
@@ -107,6 +110,38 @@ void place_legend_outside(vtkChartXY* chart, const ChartOptions& options) {
 
 namespace {
 
+// Debian's libgl2ps prints "GL2PS warning: GL2PS must be compiled with PNG support ..." on
+// stderr for every SVG (the background image it cannot embed, see write_svg). It is expected
+// and harmless, so while GL2PS runs stderr goes to a temporary file, and everything in it but
+// that warning is printed again afterwards (another thread's message is delayed, not lost).
+class Gl2psWarningFilter {
+ public:
+  Gl2psWarningFilter() : file_(std::tmpfile()) {
+    std::fflush(stderr);
+    saved_ = file_ ? dup(STDERR_FILENO) : -1;
+    if (saved_ >= 0) dup2(fileno(file_), STDERR_FILENO);
+  }
+  ~Gl2psWarningFilter() {
+    if (saved_ >= 0) {
+      std::fflush(stderr);
+      dup2(saved_, STDERR_FILENO);
+      close(saved_);
+      std::rewind(file_);
+      char line[4096];
+      while (std::fgets(line, sizeof line, file_)) {
+        if (!std::strstr(line, "must be compiled with PNG support")) std::fputs(line, stderr);
+      }
+    }
+    if (file_) std::fclose(file_);
+  }
+  Gl2psWarningFilter(const Gl2psWarningFilter&) = delete;
+  Gl2psWarningFilter& operator=(const Gl2psWarningFilter&) = delete;
+
+ private:
+  std::FILE* file_;
+  int saved_ = -1;
+};
+
 void write_png(vtkRenderWindow* window, const std::string& path) {
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);
@@ -141,7 +176,10 @@ void write_svg(vtkRenderWindow* window, const std::string& path) {
   // The OpenGL2 backend always hands GL2PS the background as an image, which Debian's libgl2ps
   // (built without PNG) cannot embed: it warns once and the SVG background stays transparent.
   exporter->UsePainterSettings();  // chart items are painted back to front: no depth sort
-  exporter->Write();
+  {
+    const Gl2psWarningFilter quiet;
+    exporter->Write();
+  }
   std::string svg;
   try {
     svg = io::read_regular_file(tmp, "exported chart");
