@@ -22,7 +22,8 @@ SweepReportOutcome write_sweep_report(const reports::SweepTable& table, const st
   reports::ReportOptions options;
   options.quality_metric = recommend_metric(table.rows);
   if (options.quality_metric == "flip_frame") {
-    options.metric_label = "FLIP mean over the frame (lower is better; the reference shows no skin)";
+    options.metric_label =
+        "FLIP mean over the frame (lower is better; the reference shows no skin)";
   }
   options.higher_is_better = false;
   options.draw_charts = charts;
