@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "reports/charts.h"
+#include "reports/html_text.h"
 #include "reports/sweep_table.h"
 
 namespace skinsim::reports {
@@ -37,11 +38,5 @@ std::string write_report(const SweepTable& table, const std::string& dir,
 // link text (URL-decoded). External links (http:, https:, mailto:, data:, #anchors) are not
 // checked. Throws ReportError if dir/report.html cannot be read.
 std::vector<std::string> missing_report_links(const std::string& dir);
-
-// Escapes &, <, >, " and ' for HTML text and attribute values.
-std::string html_escape(const std::string& text);
-
-// Percent-encodes a relative path for use as a URL (keeps A-Z a-z 0-9 - . _ ~ /).
-std::string url_encode_path(const std::string& path);
 
 }  // namespace skinsim::reports
