@@ -30,8 +30,7 @@ std::string number(const std::optional<double>& v) {
 std::string summary(const Comparison& c) {
   const bool different = c.different();
   std::string h = std::string("<div class=\"") + (different ? "different" : "same") + "\">\n";
-  h += "<b>A:</b> <code>" + esc(c.a) + "</code><br>\n<b>B:</b> <code>" + esc(c.b) +
-       "</code> (two " + esc(c.kind) + "s)<br>\n";
+  h += "<b>A:</b> <code>" + esc(c.a) + "</code><br>\n<b>B:</b> <code>" + esc(c.b) + "</code><br>\n";
   h += "<b>Result:</b> " +
        std::string(different ? "different beyond tolerances (exit status 1)"
                              : "the same within tolerances (exit status 0)") +
@@ -46,7 +45,8 @@ std::string summary(const Comparison& c) {
 std::string changes_section(const Comparison& c) {
   std::string h = "<h2>What changed</h2>\n";
   if (c.changes.empty()) return h + "<p>Nothing: " + esc(kNoChangeText) + ".</p>\n";
-  h += "<table>\n<tr><th>setting</th><th>A</th><th>B</th></tr>\n";
+  h += "<table>\n<tr><th class=\"text\">setting</th><th class=\"text\">A</th><th "
+       "class=\"text\">B</th></tr>\n";
   for (const SettingChange& s : c.changes) {
     h += "<tr><td class=\"text\"><b>" + esc(s.name) + "</b></td><td class=\"text\">" + esc(s.a) +
          "</td><td class=\"text\">" + esc(s.b) + "</td></tr>\n";
@@ -61,7 +61,8 @@ std::string moved_table(const ConfigDiff& d) {
   }
   std::string h = fmt::format(
       "<p>{} of {} values moved beyond their tolerance, largest relative change first.</p>\n"
-      "<div class=\"wide\"><table>\n<tr><th>value</th><th>kind</th><th>A</th><th>B</th>"
+      "<div class=\"wide\"><table>\n<tr><th class=\"text\">value</th><th "
+      "class=\"text\">kind</th><th>A</th><th>B</th>"
       "<th>change</th></tr>\n",
       d.moved.size(), d.values_compared);
   for (const ValueDelta& v : d.moved) {
@@ -104,8 +105,10 @@ std::string sweep_sections(const Comparison& c) {
     for (const std::string& id : *ids) h += "<code>" + esc(id) + "</code> ";
     h += "</p>\n";
   }
-  h += "<div class=\"wide\"><table>\n<tr><th>configuration</th><th>frame time A -&gt; B</th>"
-       "<th>values moved</th><th>largest move</th><th>frames</th></tr>\n";
+  h += "<div class=\"wide\"><table>\n<tr><th class=\"text\">configuration</th><th>frame time A "
+       "-&gt; B</th>"
+       "<th>values moved</th><th class=\"text\">largest move</th><th "
+       "class=\"text\">frames</th></tr>\n";
   for (const ConfigDiff& d : c.configs) {
     const std::string largest =
         d.moved.empty() ? "-" : d.moved.front().name + " " + change_text(d.moved.front());

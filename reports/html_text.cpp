@@ -10,7 +10,7 @@ body { font-family: system-ui, sans-serif; margin: 2em auto; max-width: 1400px; 
 h1 { font-size: 1.6em; } h2 { margin-top: 1.6em; border-bottom: 1px solid #ccc; }
 table { border-collapse: collapse; font-size: 0.9em; }
 th, td { border: 1px solid #ccc; padding: 0.25em 0.6em; text-align: right; }
-th { background: #eee; } td.text { text-align: left; }
+th { background: #eee; } th.text, td.text { text-align: left; }
 .wide { overflow-x: auto; max-width: 100%; }
 )";
 

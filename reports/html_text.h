@@ -6,7 +6,7 @@
 
 namespace skinsim::reports {
 
-// CSS for body text, headings and right-aligned number tables (td.text: left-aligned text;
+// CSS for body text, headings and right-aligned number tables (.text: left-aligned text;
 // .wide: a table that scrolls inside the page).
 extern const char* const kPageStyle;
 
