@@ -55,6 +55,8 @@ nlohmann::json read_result(const fs::path& dir) {
           fmt::format("{}: no \"{}\" (not a skinsim run's result.json)", path.string(), field));
     }
   }
+  if (!j["config"].is_object())
+    throw io::InputError(path.string() + ": \"config\" is not an object");
   return j;
 }
 
@@ -67,8 +69,8 @@ std::string setting_text(const nlohmann::json* j) {
 std::vector<reports::SettingChange> setting_changes(const nlohmann::json& a,
                                                     const nlohmann::json& b) {
   std::set<std::string> knobs;
-  for (const auto& [k, v] : a["config"].items()) knobs.insert(k);
-  for (const auto& [k, v] : b["config"].items()) knobs.insert(k);
+  for (const auto& [k, v] : a.at("config").items()) knobs.insert(k);
+  for (const auto& [k, v] : b.at("config").items()) knobs.insert(k);
   std::vector<reports::SettingChange> changes;
   const auto add = [&](const std::string& name, const nlohmann::json& ja, const nlohmann::json& jb,
                        const std::string& key) {
@@ -76,7 +78,7 @@ std::vector<reports::SettingChange> setting_changes(const nlohmann::json& a,
     const std::string vb = setting_text(jb.contains(key) ? &jb[key] : nullptr);
     if (va != vb) changes.push_back({name, va, vb});
   };
-  for (const std::string& k : knobs) add(k, a["config"], b["config"], k);
+  for (const std::string& k : knobs) add(k, a.at("config"), b.at("config"), k);
   for (const char* k : {"device", "scene"}) add(k, a, b, k);
   return changes;
 }
