@@ -29,7 +29,8 @@ reports::ImageDiff diff_frames(const std::filesystem::path& a, const std::filesy
   diff.flip = compare_frames(frame_b, frame_a, mask);
   diff.threshold = quality::flip_visibility_threshold();
   diff.visible_area_px = quality::flip_visible_area_pixels();
-  diff.flip.against = "A";
+  // B against A; not `= "A"`, which GCC 12 misreports as -Wrestrict (cmake/warnings.cmake)
+  diff.flip.against = std::string(1, 'A');
   if (out_dir.empty()) return diff;
 
   const quality::Image difference = amplified_difference(frame_b, frame_a);
