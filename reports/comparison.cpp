@@ -94,7 +94,8 @@ void to_json(nlohmann::json& j, const Comparison& v) {
        {"added", v.added},
        {"removed", v.removed},
        {"configs", v.configs},
-       {"difference_gain", v.difference_gain}};
+       {"difference_gain", v.difference_gain},
+       {"colour_bar", v.colour_bar}};
 }
 
 }  // namespace skinsim::reports
