@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <glm/common.hpp>
+
 #include "driver/crop_windows.h"
 #include "driver/frame_comparison.h"
 #include "quality/metrics.h"
@@ -44,6 +47,24 @@ reports::ImageDiff diff_frames(const std::filesystem::path& a, const std::filesy
        {fmt::format("|B - A| x {:g}", kDifferenceGain), &difference}},
       out_dir, stem);
   return diff;
+}
+
+reports::ImageChange diff_pixels(const std::filesystem::path& a, const std::filesystem::path& b) {
+  const quality::Image image_a = quality::load_png(a);
+  const quality::Image image_b = quality::load_png(b);
+  reports::ImageChange change;
+  if (image_a.width != image_b.width || image_a.height != image_b.height) {
+    change.size_mismatch =
+        fmt::format("{}x{} vs {}x{}", image_a.width, image_a.height, image_b.width, image_b.height);
+    return change;
+  }
+  for (std::size_t i = 0; i < image_a.rgb.size(); ++i) {
+    const glm::vec3 d = glm::abs(image_b.rgb[i] - image_a.rgb[i]);
+    const double largest = std::max({d.r, d.g, d.b});
+    change.differing_px += largest > 0.0;
+    change.max_difference = std::max(change.max_difference, largest);
+  }
+  return change;
 }
 
 }  // namespace skinsim::driver

@@ -1,5 +1,6 @@
-// Two frames of `skinsim compare`: identical pixels, or FLIP of B against A with the sweep's
-// visibility verdict, and crops of the windows where they differ most.
+// Images of `skinsim compare`: two frames, identical pixels or FLIP of B against A with the
+// sweep's visibility verdict and crops of the windows where they differ most; any other two
+// images, which pixels differ.
 #pragma once
 
 #include <filesystem>
@@ -18,5 +19,9 @@ namespace skinsim::driver {
 reports::ImageDiff diff_frames(const std::filesystem::path& a, const std::filesystem::path& b,
                                const quality::Mask* mask, const std::string& over,
                                const std::filesystem::path& out_dir, const std::string& stem);
+
+// Which pixels of two images differ, and by how much at most (no verdict); names and links are
+// left for the caller.
+reports::ImageChange diff_pixels(const std::filesystem::path& a, const std::filesystem::path& b);
 
 }  // namespace skinsim::driver

@@ -83,6 +83,31 @@ std::vector<reports::SettingChange> setting_changes(const nlohmann::json& a,
   return changes;
 }
 
+// Every PNG of either run but the frame, sorted by name.
+std::vector<reports::ImageChange> other_images(const fs::path& a, const fs::path& b,
+                                               const fs::path& out_dir) {
+  std::set<std::string> names;
+  for (const fs::path& dir : {a, b}) {
+    for (const fs::directory_entry& e : fs::directory_iterator(dir)) {
+      const std::string name = e.path().filename().string();
+      if (e.is_regular_file() && e.path().extension() == ".png" && name != "frame.png") {
+        names.insert(name);
+      }
+    }
+  }
+  std::vector<reports::ImageChange> changes;
+  for (const std::string& name : names) {
+    const bool in_a = fs::exists(a / name), in_b = fs::exists(b / name);
+    reports::ImageChange change =
+        in_a && in_b ? diff_pixels(a / name, b / name) : reports::ImageChange{};
+    change.name = name;
+    if (in_a) change.a_image = link_from(out_dir, a / name);
+    if (in_b) change.b_image = link_from(out_dir, b / name);
+    changes.push_back(std::move(change));
+  }
+  return changes;
+}
+
 reports::Comparison compare_runs(const fs::path& a, const fs::path& b,
                                  const reports::Tolerances& tolerances, const fs::path& out_dir) {
   const nlohmann::json ja = read_result(a);
@@ -97,6 +122,7 @@ reports::Comparison compare_runs(const fs::path& a, const fs::path& b,
       diff_frames(a / "frame.png", b / "frame.png", nullptr, "the whole frame", out_dir, "frame");
   run.image->a_image = link_from(out_dir, a / "frame.png");
   run.image->b_image = link_from(out_dir, b / "frame.png");
+  run.other_images = other_images(a, b, out_dir);
   c.configs.push_back(std::move(run));
   return c;
 }

@@ -84,10 +84,31 @@ std::string image_section(const Comparison& c, const ImageDiff& d) {
   return h;
 }
 
+// The runs' other images with links to both, for which pass changed; no verdict.
+std::string other_images_section(const std::vector<ImageChange>& images) {
+  if (images.empty()) return "";
+  std::string h =
+      "<h2>Other images</h2>\n<p>Which pixels moved in the runs' other images (largest change "
+      "of a channel in display values); shown to tell which pass changed, not judged.</p>\n"
+      "<table>\n<tr><th class=\"text\">image</th><th class=\"text\">pixels</th>"
+      "<th class=\"text\">A</th><th class=\"text\">B</th></tr>\n";
+  const auto link = [](const std::string& path, const char* side) {
+    if (path.empty()) return std::string("-");
+    return "<a href=\"" + esc(url_encode_path(path)) + "\">" + side + "</a>";
+  };
+  for (const ImageChange& i : images) {
+    h += "<tr><td class=\"text\">" + esc(i.name) + "</td><td class=\"text\">" +
+         esc(image_change_text(i)) + "</td><td class=\"text\">" + link(i.a_image, "A") +
+         "</td><td class=\"text\">" + link(i.b_image, "B") + "</td></tr>\n";
+  }
+  return h + "</table>\n";
+}
+
 std::string run_sections(const Comparison& c) {
   const ConfigDiff& run = c.configs.front();
   return "<h2>What moved</h2>\n" + moved_table(run) + "<h2>Frames</h2>\n" +
-         (run.image ? image_section(c, *run.image) : "<p>No frames to compare.</p>\n");
+         (run.image ? image_section(c, *run.image) : "<p>No frames to compare.</p>\n") +
+         other_images_section(run.other_images);
 }
 
 std::string anchor(const std::string& id) {
@@ -139,7 +160,8 @@ std::string compare_page_html(const Comparison& c) {
   page += c.kind == "run" ? run_sections(c) : sweep_sections(c);
   page += "<h2>How frames are judged</h2>\n<p>" +
           esc("B's frame is compared with A's by FLIP (8-bit frames as stored). " +
-              visibility_rule_text("the counted pixels")) +
+              visibility_rule_text(
+                  "the pixels its verdict names (the whole frame, or A's reference skin)")) +
           " Crops show the windows of the FLIP error where they differ most; click any image "
           "for full size.</p>\n";
   page +=

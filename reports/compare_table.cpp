@@ -54,6 +54,12 @@ std::string run_text(const Comparison& c, std::size_t max_values) {
                     moved_table(c.configs.front(), max_values);
   const std::optional<ImageDiff>& image = c.configs.front().image;
   if (image) out += "Frame: " + image_verdict_text(*image) + "\n";
+  if (!c.configs.front().other_images.empty()) {
+    out += "Other images (shown, not judged):\n";
+    for (const ImageChange& i : c.configs.front().other_images) {
+      out += fmt::format("  {}: {}\n", i.name, image_change_text(i));
+    }
+  }
   return out;
 }
 
@@ -100,6 +106,14 @@ std::string image_verdict_text(const ImageDiff& d) {
       "from {:.0f} px)",
       d.flip.visible ? "visibly different" : "not visibly different", d.over, d.flip.flip_mean,
       d.flip.flip_p99, d.flip.visible_px, d.threshold, d.visible_area_px);
+}
+
+std::string image_change_text(const ImageChange& c) {
+  if (c.a_image.empty()) return "only in B";
+  if (c.b_image.empty()) return "only in A";
+  if (!c.size_mismatch.empty()) return "different sizes (" + c.size_mismatch + ")";
+  if (c.differing_px == 0) return "identical";
+  return fmt::format("{} px differ (largest {:.3f})", c.differing_px, c.max_difference);
 }
 
 std::string image_verdict_short(const ImageDiff& d) {

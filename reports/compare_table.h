@@ -26,6 +26,10 @@ std::string frame_time_text(const ConfigDiff& d);
 // "visibly different: FLIP mean 0.012, ..." for the frames of one run or configuration.
 std::string image_verdict_text(const ImageDiff& d);
 
+// "identical", "1234 px differ (largest 0.120)", "different sizes (32x128 vs 8x32)",
+// "only in A", "only in B".
+std::string image_change_text(const ImageChange& c);
+
 // The verdict alone, for one row of a table: "visibly different (6675 px above 0.10)".
 std::string image_verdict_short(const ImageDiff& d);
 

@@ -68,12 +68,22 @@ void to_json(nlohmann::json& j, const ImageDiff& v) {
   if (!v.difference_image.empty()) j["difference_image"] = v.difference_image;
 }
 
+void to_json(nlohmann::json& j, const ImageChange& v) {
+  j = {{"name", v.name},
+       {"a", v.a_image},
+       {"b", v.b_image},
+       {"differing_px", v.differing_px},
+       {"max_difference", v.max_difference}};
+  if (!v.size_mismatch.empty()) j["size_mismatch"] = v.size_mismatch;
+}
+
 void to_json(nlohmann::json& j, const ConfigDiff& v) {
   j = {{"id", v.id},
        {"different", v.different()},
        {"frame_ms", {{"a", optional_number(v.frame_ms_a)}, {"b", optional_number(v.frame_ms_b)}}},
        {"values_compared", v.values_compared},
-       {"moved", v.moved}};
+       {"moved", v.moved},
+       {"other_images", v.other_images}};
   if (v.image) j["image"] = *v.image;
 }
 

@@ -58,6 +58,18 @@ struct ImageDiff {
   bool different() const { return !size_mismatch.empty() || flip.visible; }
 };
 
+// Another image of two runs (intermediates, the LUT, the reference, the error map): whether its
+// pixels moved. Shown for what it tells (which pass changed), not judged: the frame's verdict
+// and the counters decide whether the runs differ.
+struct ImageChange {
+  std::string name;     // file name, e.g. "irradiance.png"
+  std::string a_image;  // links relative to the output directory ("" when only on one side)
+  std::string b_image;
+  std::string size_mismatch;     // e.g. "32x128 vs 8x32"
+  std::size_t differing_px = 0;  // pixels whose stored value differs
+  double max_difference = 0.0;   // largest |B - A| of a channel, in display values [0, 1]
+};
+
 // One run, or one configuration present in both sweeps.
 struct ConfigDiff {
   std::string id;                    // the sweep configuration's id; "run" for two runs
@@ -66,6 +78,7 @@ struct ConfigDiff {
   std::size_t values_compared = 0;
   std::vector<ValueDelta> moved;  // sorted by |relative change|, largest first
   std::optional<ImageDiff> image;
+  std::vector<ImageChange> other_images;  // runs only
 
   bool different() const { return !moved.empty() || (image && image->different()); }
 };
@@ -92,6 +105,7 @@ std::string visibility_rule_text(const std::string& over);
 
 void to_json(nlohmann::json& j, const ValueDelta& v);
 void to_json(nlohmann::json& j, const ImageDiff& v);
+void to_json(nlohmann::json& j, const ImageChange& v);
 void to_json(nlohmann::json& j, const ConfigDiff& v);
 void to_json(nlohmann::json& j, const Comparison& v);
 

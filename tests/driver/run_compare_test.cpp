@@ -115,6 +115,25 @@ TEST(RunCompare, OneKnobNamedWhatMovedAndTheFramesVerdictWithCrops) {
   EXPECT_TRUE(fs::exists(out / c.colour_bar));
 }
 
+TEST(RunCompare, OtherImagesSayWhichPixelsMovedWithoutAVerdict) {
+  const fs::path a = make_run("other_a", result(2.0, 100.0, "8x32"));
+  const fs::path b = make_run("other_b", result(2.0, 100.0, "8x32"));
+  quality::Image irradiance = quality::Image::filled(8, 8, glm::vec3(0.5f));
+  quality::save_png(irradiance, a / "irradiance.png");
+  irradiance.at(3, 4) = glm::vec3(0.75f);
+  quality::save_png(irradiance, b / "irradiance.png");
+  quality::save_png(irradiance, a / "brdf_lut.png");
+  const reports::Comparison c = compare_outputs(a, b, {}, {});
+  EXPECT_FALSE(c.different());  // the frame and every value are the same
+  const std::vector<reports::ImageChange>& images = c.configs.at(0).other_images;
+  ASSERT_EQ(images.size(), 2u);  // sorted by name; frame.png is the verdict's
+  EXPECT_EQ(images[0].name, "brdf_lut.png");
+  EXPECT_TRUE(images[0].b_image.empty());
+  EXPECT_EQ(images[1].name, "irradiance.png");
+  EXPECT_EQ(images[1].differing_px, 1u);
+  EXPECT_NEAR(images[1].max_difference, 0.25, 1.0 / 255.0);
+}
+
 TEST(RunCompare, BadInputNamesTheFile) {
   const fs::path a = make_run("bad_a", result(2.0, 100.0, "8x32"));
   const fs::path missing = scratch("bad_missing") / "nowhere";
