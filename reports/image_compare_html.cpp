@@ -10,7 +10,7 @@ const char* const kImageCompareStyle = R"(
 .stack { position: relative; max-width: 1024px; } .stack img { width: 100%; display: block; }
 .stack img.over { position: absolute; top: 0; left: 0; }
 input.split { width: 100%; max-width: 1024px; }
-table.crops td { text-align: center; }
+table.crops th, table.crops td { text-align: center; }
 table.crops th { font-size: 0.8em; max-width: 140px; overflow-wrap: anywhere; }
 table.crops img { width: 128px; image-rendering: pixelated; } img.bar { vertical-align: middle; }
 )";
