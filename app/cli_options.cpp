@@ -25,14 +25,27 @@ CLI::Validator integer_in(int lo, int hi) {
       fmt::format("INT in [{} - {}]", lo, hi));
 }
 
-CLI::Validator positive_real(double max) {
+namespace {
+
+CLI::Validator real_in(double max, bool zero_allowed) {
+  const char open = zero_allowed ? '[' : '(';
   return CLI::Validator(
-      [max](std::string& text) -> std::string {
+      [max, zero_allowed, open](std::string& text) -> std::string {
         const auto v = parse_real<double>(text);
-        if (v && *v > 0.0 && *v <= max) return "";
-        return fmt::format("expected a decimal number in (0, {:g}], got '{}'", max, text);
+        if (v && (*v > 0.0 || (zero_allowed && *v == 0.0)) && *v <= max) return "";
+        return fmt::format("expected a decimal number in {}0, {:g}], got '{}'", open, max, text);
       },
-      fmt::format("NUMBER in (0, {:g}]", max));
+      fmt::format("NUMBER in {}0, {:g}]", open, max));
+}
+
+}  // namespace
+
+CLI::Validator positive_real(double max) {
+  return real_in(max, false);
+}
+
+CLI::Validator non_negative_real(double max) {
+  return real_in(max, true);
 }
 
 void add_device_options(CLI::App& cmd, DeviceOptions& o) {

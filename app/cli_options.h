@@ -25,6 +25,7 @@ void add_pipeline_options(CLI::App& cmd, pipeline::PipelineConfig& config);
 // only what skinsim::parse_integer / parse_real accept, within range.
 CLI::Validator integer_in(int lo, int hi);
 CLI::Validator positive_real(double max);
+CLI::Validator non_negative_real(double max);
 
 // The shipped data directory: $SKINSIM_DATA_DIR, else the source tree's data/.
 std::string default_data_dir();

@@ -18,5 +18,6 @@ Command add_check_command(CLI::App& app);
 Command add_baseline_command(CLI::App& app);
 Command add_techniques_command(CLI::App& app);
 Command add_knobs_command(CLI::App& app);
+Command add_compare_command(CLI::App& app);
 
 }  // namespace skinsim::app

@@ -15,6 +15,13 @@ namespace {
 
 using Row = std::array<std::string, 6>;
 
+// `skinsim check` renders in memory and keeps no run directories, so there is none to name.
+constexpr const char* kCompareHint =
+    "\nTo see every counter, time and pixel that moved: `skinsim check` keeps no run "
+    "directories, so render the failing budget's frame (its device, resolution and knobs) with "
+    "`skinsim run --out base` at the baseline's skinsim version and `skinsim run --out new` "
+    "now, then run `skinsim compare base new` (docs/reports.md).\n";
+
 std::string limit_cell(const LimitResult& r) {
   const std::string bound = format_value(r.limit.metric, r.bound);
   if (!r.limit.uses_baseline())
@@ -63,6 +70,7 @@ std::string format_check_table(const CheckReport& report) {
       if (!r.passed) out += fmt::format("\nFAIL {} / {}: {}\n", b.name, r.limit.metric, r.message);
     }
   }
+  if (!report.passed()) out += kCompareHint;
   out += fmt::format("\n{} of {} limits in {} budgets passed{}\n",
                      report.limit_count() - report.failure_count(), report.limit_count(),
                      report.budgets.size(),

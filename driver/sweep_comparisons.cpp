@@ -7,12 +7,12 @@
 #include <map>
 #include <optional>
 
+#include "driver/frame_comparison.h"
 #include "driver/sweep_reference.h"
 #include "io/atomic_file.h"
 #include "io/read_file.h"
 #include "pipeline/knob.h"
 #include "quality/image.h"
-#include "quality/metrics.h"
 #include "util/fingerprint.h"
 
 namespace skinsim::driver {
@@ -72,13 +72,8 @@ FrameComparison compare(const fs::path& dir, const ConfigResult& row, const Conf
   const quality::Image against = quality::load_png(dir / other.frame_image);
   std::optional<quality::Mask> skin;
   if (over_skin) skin = quality::load_mask_png(dir / mask);
-  const quality::Mask* m = skin ? &*skin : nullptr;
-  const quality::FlipStatistics s =
-      quality::flip_statistics(quality::flip(test, against, m).map, m);
-  c.flip_mean = s.mean;
-  c.flip_p99 = s.p99;
-  c.visible_px = static_cast<double>(s.visible_pixels);
-  c.visible = s.visible();
+  c = compare_frames(test, against, skin ? &*skin : nullptr);
+  c.against = other.id;
   fs::create_directories(cache.parent_path());
   io::write_file_atomically(cache, nlohmann::json{{"key", key}, {"comparison", c}}.dump(1) + "\n");
   return c;

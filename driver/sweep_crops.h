@@ -12,11 +12,6 @@
 
 namespace skinsim::driver {
 
-// Difference images show |recommended - reference| per pixel (the mean over R, G and B of the
-// display-encoded values) times this gain, on the magma scale: a difference of 1/8 of full
-// scale or more is the brightest colour.
-inline constexpr double kDifferenceGain = 8.0;
-
 // Writes the crops and returns one panel per recommendation with a chosen configuration.
 // `over_skin`: windows are found in the FLIP error over the reference's skin mask.
 std::vector<reports::ComparisonPanel> write_comparison_panels(

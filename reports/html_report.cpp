@@ -10,6 +10,7 @@
 #include "io/atomic_file.h"
 #include "reports/csv_writer.h"
 #include "reports/error.h"
+#include "reports/image_compare_html.h"
 #include "reports/palette.h"
 #include "reports/pareto.h"
 #include "reports/recommendation.h"
@@ -23,21 +24,9 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kStyle = R"(
-body { font-family: system-ui, sans-serif; margin: 2em auto; max-width: 1400px; color: #222; }
-h1 { font-size: 1.6em; } h2 { margin-top: 1.6em; border-bottom: 1px solid #ccc; }
 .summary { background: #f4f7fb; border-left: 5px solid #4e79a7; padding: 0.8em 1.2em; }
 .recommend { background: #fff5f5; border-left: 5px solid #c80000; padding: 0.8em 1.2em; }
-table { border-collapse: collapse; font-size: 0.9em; }
-th, td { border: 1px solid #ccc; padding: 0.25em 0.6em; text-align: right; }
-th { background: #eee; } td.text { text-align: left; }
 tr.chosen { background: #ffe9e9; font-weight: bold; } tr.over { color: #888; }
-.wide { overflow-x: auto; max-width: 100%; }
-.stack { position: relative; max-width: 1024px; } .stack img { width: 100%; display: block; }
-.stack img.over { position: absolute; top: 0; left: 0; }
-input.split { width: 100%; max-width: 1024px; }
-table.crops td { text-align: center; }
-table.crops th { font-size: 0.8em; max-width: 140px; overflow-wrap: anywhere; }
-table.crops img { width: 128px; image-rendering: pixelated; } img.bar { vertical-align: middle; }
 figure { margin: 1.5em 0; } figure img { width: 100%; border: 1px solid #ddd; }
 .thumbs { display: flex; flex-wrap: wrap; gap: 1em; }
 .thumb { font-size: 0.8em; width: 330px; } .thumb img { width: 160px; border: 1px solid #ccc; }
@@ -133,75 +122,18 @@ std::string recommendation_section(const SweepTable& t, const ReportOptions& o,
   return h;
 }
 
-// A slider between two of the panel's full frames (a self-contained script; no network), then
-// per window the crops at 1:1 and magnified, with the difference's colour scale.
-std::string panel_html(const ComparisonPanel& p, std::size_t index) {
-  const std::vector<std::pair<std::string, std::string>> frames = {
+// A slider between two of the panel's full frames, then per window the crops at 1:1 and
+// magnified, with the difference's colour scale.
+std::string panel_html(const ComparisonPanel& p) {
+  std::vector<std::pair<std::string, std::string>> frames = {
       {"reference", p.reference_image},
       {"recommended: " + p.chosen, p.chosen_image},
       {"best: " + p.best, p.best_image}};
-  const std::size_t count = p.best == p.chosen ? 2 : 3;
-  const auto options = [&](std::size_t selected) {
-    std::string o;
-    for (std::size_t i = 0; i < count; ++i) {
-      o += "<option value=\"" + link(frames[i].second) + "\"" + (i == selected ? " selected" : "") +
-           ">" + esc(frames[i].first) + "</option>";
-    }
-    return o;
-  };
-  const std::string id = fmt::format("cmp{}", index);
-  std::string h = "<h3>" + esc(p.group) + "</h3>\n";
-  h += "<div class=\"compare\" id=\"" + id + "\">\n<p>Left <select class=\"left\">" + options(1) +
-       "</select> right <select class=\"right\">" + options(0) +
-       "</select> <button type=\"button\" class=\"flip\">flip</button> (drag the slider, or "
-       "flip to alternate the two as FLIP's observer does)</p>\n";
-  h += "<div class=\"stack\"><img class=\"under\" src=\"" + link(frames[0].second) +
-       "\" alt=\"right image\"><img class=\"over\" src=\"" + link(frames[1].second) +
-       "\" alt=\"left image\"></div>\n<input type=\"range\" min=\"0\" max=\"100\" "
-       "value=\"50\" class=\"split\">\n</div>\n";
-  for (const CropWindow& w : p.windows) {
-    h += "<p><b>" + esc(w.why) + "</b>: " +
-         esc(fmt::format("{}x{} pixels at ({}, {}); below, the {}x{} pixels at ({}, {}) "
-                         "magnified {}x",
-                         w.size, w.size, w.x, w.y, w.zoom_size, w.zoom_size, w.zoom_x, w.zoom_y,
-                         w.zoom)) +
-         "</p>\n<table class=\"crops\"><tr>";
-    for (const auto& [what, path] : w.images) h += "<th>" + esc(what) + "</th>";
-    h += "</tr>\n";
-    for (const auto* row : {&w.images, &w.zoomed}) {
-      h += "<tr>";
-      for (const auto& [what, path] : *row) {
-        h += "<td><a href=\"" + link(path) + "\"><img src=\"" + link(path) + "\" alt=\"" +
-             esc(what) + "\"></a></td>";
-      }
-      h += "</tr>\n";
-    }
-    h += "</table>\n";
-  }
-  h += "<p>Difference colour scale: <img class=\"bar\" src=\"" + link(p.colour_bar) +
-       "\" alt=\"magma colour scale\"> " +
-       esc(fmt::format("black = identical, brightest = a difference of 1/{:g} of full scale or "
-                       "more (the mean over R, G, B of |recommended - reference| in display "
-                       "values, times {:g})",
-                       p.difference_gain, p.difference_gain)) +
-       "</p>\n";
-  return h;
+  if (p.best == p.chosen) frames.pop_back();
+  return "<h3>" + esc(p.group) + "</h3>\n" + image_slider_html(frames, 1, 0) +
+         crop_windows_html(p.windows) +
+         colour_bar_html(p.colour_bar, p.difference_gain, "|recommended - reference|");
 }
-
-constexpr const char* kCompareScript = R"(
-document.querySelectorAll('.compare').forEach(function (c) {
-  var over = c.querySelector('img.over'), under = c.querySelector('img.under');
-  var split = c.querySelector('input.split');
-  function clip() { over.style.clipPath = 'inset(0 ' + (100 - split.value) + '% 0 0)'; }
-  split.addEventListener('input', clip);
-  c.querySelector('select.left').addEventListener('change', function () { over.src = this.value; });
-  c.querySelector('select.right').addEventListener('change', function () { under.src = this.value; });
-  c.querySelector('button.flip').addEventListener('click', function () {
-    split.value = split.value > 50 ? 0 : 100; clip();
-  });
-  clip();
-});
-)";
 
 std::string comparison_section(const SweepTable& t) {
   if (t.panels.empty()) return "";
@@ -209,8 +141,8 @@ std::string comparison_section(const SweepTable& t) {
       "<h2>What the recommendation looks like</h2>\n<p>The reference, the recommended "
       "configuration and the group's best configuration, whole and where they differ most "
       "(windows found in the FLIP error over skin). Click any image for full size.</p>\n";
-  for (std::size_t i = 0; i < t.panels.size(); ++i) h += panel_html(t.panels[i], i);
-  return h + "<script>" + kCompareScript + "</script>\n";
+  for (const ComparisonPanel& p : t.panels) h += panel_html(p);
+  return h + image_compare_script();
 }
 
 std::string charts_section(const std::vector<ReportFigure>& figures, bool drawn) {
@@ -457,7 +389,8 @@ std::string write_report(const SweepTable& table, const std::string& dir,
   }
 
   std::string page = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
-  page += "<title>" + esc(options.title) + "</title>\n<style>" + kStyle + "</style>\n</head>\n";
+  page += "<title>" + esc(options.title) + "</title>\n<style>" + kPageStyle + kStyle +
+          kImageCompareStyle + "</style>\n</head>\n";
   page += "<body>\n" + header_section(table, options) +
           recommendation_section(table, options, recommendations) + comparison_section(table) +
           charts_section(figures, options.draw_charts) + timeline_section(table, chosen) +

@@ -1,3 +1,4 @@
+// Escaping and the base style of the HTML pages.
 #include "reports/html_text.h"
 
 #include <fmt/format.h>
@@ -5,6 +6,15 @@
 #include <algorithm>
 
 namespace skinsim::reports {
+
+const char* const kPageStyle = R"(
+body { font-family: system-ui, sans-serif; margin: 2em auto; max-width: 1400px; color: #222; }
+h1 { font-size: 1.6em; } h2 { margin-top: 1.6em; border-bottom: 1px solid #ccc; }
+table { border-collapse: collapse; font-size: 0.9em; }
+th, td { border: 1px solid #ccc; padding: 0.25em 0.6em; text-align: right; }
+th { background: #eee; } th.text, td.text { text-align: left; }
+.wide { overflow-x: auto; max-width: 100%; }
+)";
 
 std::string html_escape(const std::string& text) {
   std::string out;

@@ -1,9 +1,14 @@
-// Escaping for HTML written by the reports: text and attribute values, and link targets.
+// What every skinsim HTML page shares: escaping of text and attributes (html_escape) and of
+// link targets (url_encode_path), and the base style (fonts, headings, tables).
 #pragma once
 
 #include <string>
 
 namespace skinsim::reports {
+
+// CSS for body text, headings and right-aligned number tables (.text: left-aligned text;
+// .wide: a table that scrolls inside the page).
+extern const char* const kPageStyle;
 
 // Escapes &, <, >, " and ' for HTML text and attribute values.
 std::string html_escape(const std::string& text);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "reports/comparison.h"
 #include "reports/pareto.h"
 
 namespace skinsim::reports {
@@ -90,11 +91,10 @@ std::string recommendation_rule_text() {
          "resolution, light and framing). Of the configurations within the frame budget, the "
          "cheapest whose frame does not differ visibly from the group's best-quality "
          "configuration: a difference below visibility is a tie, and the cheaper configuration "
-         "wins. Visibly different: FLIP between the two frames over the skin exceeds the error "
-         "of one just-noticeable lightness step (Delta E*ab 2.3) on at least one FLIP digit's "
-         "area (0.082 degrees squared, about 30 pixels at 67 pixels per degree). If every "
-         "configuration within the budget differs visibly from the best, the knee of their "
-         "Pareto front is recommended instead.";
+         "wins. " +
+         visibility_rule_text("the skin") +
+         " If every configuration within the budget differs visibly from the best, the knee of "
+         "their Pareto front is recommended instead.";
 }
 
 }  // namespace skinsim::reports

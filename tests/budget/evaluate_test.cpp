@@ -163,6 +163,9 @@ TEST(CheckTable, ListsEveryLimitAndTheFailures) {
             std::string::npos)
       << table;
   EXPECT_NE(table.find("1 of 2 limits in 1 budgets passed, 1 failed"), std::string::npos);
+  // Points at the run-to-run diff, and says why it cannot name the runs itself.
+  EXPECT_NE(table.find("`skinsim compare base new`"), std::string::npos) << table;
+  EXPECT_NE(table.find("keeps no run directories"), std::string::npos) << table;
 }
 
 }  // namespace

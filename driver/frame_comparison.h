@@ -1,0 +1,15 @@
+// One frame against another as the sweep's verdicts see them: FLIP over a mask (every pixel
+// if none), its mean and 99th percentile, and whether the difference is visible
+// (quality::FlipStatistics::visible). The sweep's comparisons and `skinsim compare` share it.
+#pragma once
+
+#include "quality/image.h"
+#include "reports/sweep_table.h"
+
+namespace skinsim::driver {
+
+// `test` against `against` (same size); `against` is left for the caller to name.
+reports::FrameComparison compare_frames(const quality::Image& test, const quality::Image& against,
+                                        const quality::Mask* mask);
+
+}  // namespace skinsim::driver
