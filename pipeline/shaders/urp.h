@@ -9,14 +9,16 @@
 //             shader here) scales the dual-lobe GGX of direct light (specular.h, dual_ggx: two
 //             roughnesses mixed in D, the mean in V) and a dual-lobe image-based term, one
 //             environment lookup per lobe at that lobe's roughness mip;
-//   occlusion: baked AO times the ssao pass's AO (ssao.h), times the key light's shadow with
+//   occlusion: baked AO (a UV-space texture of the ray-cast per-vertex bake) times the ssao
+//             pass's AO (ssao.h), times the key light's shadow with
 //             a floor of 0.35 (shadow_in_ao), on ambient and image-based light;
 //   shadow tint: the key light's shadow brightened and mapped to a dark skin colour (the
 //             article's, or the shadow_tint knob's when it is set);
 //   clear coat: a GGX lobe on the vertex normal (smooth, over the pores) whose Fresnel takes
 //             its energy from the layers below, for direct and image-based light.
 // Texture reads after the surface's albedo and normal map: the shadow map, the blurred normal
-// mip, the detail map twice, the AO, three LUT reads per light, three environment reads.
+// mip, the detail map twice, the baked and screen-space AO, three LUT reads per light, three
+// environment reads.
 #pragma once
 
 #include <algorithm>
@@ -30,6 +32,7 @@ namespace skinsim::pipeline::shaders {
 struct UrpBindings {
   static constexpr int kAlbedo = TechniqueBindings::kAlbedo;
   static constexpr int kNormalMap = TechniqueBindings::kNormalMap;
+  static constexpr int kBakedAo = 2;  // the diffuse cube's unit: urp reads no such cube
   static constexpr int kPreintegratedLut = TechniqueBindings::kPreintegratedLut;
   static constexpr int kDetailNormals = 4;  // the BRDF LUT's unit: urp does not read it
   static constexpr int kAo = 5;             // the blurred ssao buffer, read at the pixel
@@ -168,8 +171,8 @@ struct UrpFS {
                                                    f32(u.detail_blur_lod)));
     }
     const f32 curvature = derivative_curvature<L>(in, u.curvature_scale);
-    f32 ao(1.0f);  // baked AO: the scenes carry none (docs/techniques.md, urp)
-    if (u.ssao) ao = sl::x(tex.sample(B::kAo, in.screen_texcoord()));
+    f32 ao = sl::x(tex.sample(B::kBakedAo, uv));
+    if (u.ssao) ao = ao * sl::x(tex.sample(B::kAo, in.screen_texcoord()));
     const f32 occlusion = shadow_in_ao(ao, s.visibility);
     const vec3 key_tint = shadow_tint<L>(s.visibility, u.shadow_color);
     const f32 n_dot_v = sl::saturate(sl::dot(s.normal, s.view));

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <optional>
 
+#include "pipeline/bake/ambient_occlusion.h"
 #include "pipeline/bake/pore_normals.h"
 #include "pipeline/bake/preintegrated_lut.h"
 #include "pipeline/knob_types.h"
@@ -16,6 +17,7 @@
 #include "pipeline/techniques/preintegrated_lut_texture.h"
 #include "pipeline/techniques/skin_pass.h"
 #include "pipeline/techniques/urp/ssao_passes.h"
+#include "pipeline/techniques/uv_layout.h"
 
 namespace skinsim::pipeline {
 
@@ -35,6 +37,16 @@ const sim::Texture2D& pore_normal_texture() {
                           true);
   }();
   return texture;
+}
+
+// The baked AO: the skin's per-vertex ambient occlusion (bake/ambient_occlusion.h) in its UV
+// layout, 512 x 512 (AO varies over millimetres to centimetres).
+constexpr int kBakedAoTextureSize = 512;
+sim::Texture2D baked_ao_texture(const GpuScene& gs) {
+  return vertex_value_texture(gs, "baked_ao", kBakedAoTextureSize, [&](const scene::Mesh& mesh) {
+    return bake::bake_ambient_occlusion(gs.rays(), mesh.positions, mesh.normals,
+                                        gs.scene().units_per_mm);
+  });
 }
 
 // Unity's perceptual-roughness-to-mip mapping (UnityStandardUtils / URP ImageBasedLighting:
@@ -72,6 +84,8 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLig
   if (cfg.urp_ssao && out.view.skin_visible) ao = ssao_passes(gs, cfg, out, gpu);
   std::optional<sim::Texture2D> ao_texture;
   if (ao) ao_texture = sim::texture_view(*ao, {sim::Filter::kNearest, sim::Wrap::kClamp});
+  require_skin_uvs(gs, "urp (baked AO)");
+  const sim::Texture2D baked_ao = baked_ao_texture(gs);
   sim::RenderTarget lut_target = preintegrated_lut_target(cfg);
   const sim::Texture2D lut =
       sim::texture_view(lut_target, {sim::Filter::kBilinear, sim::Wrap::kClamp});
@@ -87,6 +101,7 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLig
     // The skin pass binds the cosine-filtered cube at unit 2; urp reads no such cube.
     d.textures.cubes[shaders::TechniqueBindings::kEnvironment] = nullptr;
     d.textures.cubes[B::kEnvironment] = &gs.environment();
+    d.textures.textures[B::kBakedAo] = &baked_ao;
     d.textures.textures[B::kPreintegratedLut] = &lut;
     if (cfg.urp_detail_normals) d.textures.textures[B::kDetailNormals] = &pore_normal_texture();
     if (ao_texture) d.textures.textures[B::kAo] = &*ao_texture;
