@@ -50,6 +50,8 @@ inline constexpr int kMaxBurleySamples = 64;
 // Size of the dipole shader's uniform tap arrays (a vec2 offset and an area per tap: one
 // uniform vector).
 inline constexpr int kMaxDipoleSamples = 64;
+// Screen-space AO taps per pixel (urp).
+inline constexpr int kMaxSsaoTaps = 32;
 
 struct PipelineConfig {
   std::string technique = "mobile";  // a name from the registry (technique.h)
@@ -110,6 +112,12 @@ struct PipelineConfig {
   int dipole_samples = 30;
   int texture_space_size = 1024;  // texture-space diffusion buffers, texels per axis
   bool shadow_scatter = true;     // pre-integrated: Penner's penumbra scattering
+  // urp (the URP skin shader article): screen-space AO passes and their taps, the tiling pore
+  // detail normals, the clear-coat layer.
+  bool urp_ssao = true;
+  int urp_ssao_taps = 12;
+  bool urp_detail_normals = true;
+  bool urp_clear_coat = true;
 
   // Throws ConfigError naming the knob when a value is out of range (each row of the knob
   // table checks its own; knobs.cpp).

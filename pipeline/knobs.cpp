@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
 #include <tuple>
 
@@ -121,6 +122,7 @@ KnobSpec specular_knob() {
                            "ks_lut, ks, ggx or dual_ggx", &PipelineConfig::specular, parse_specular,
                            specular_name);
   k.decides = true;
+  k.applies = uses_specular_knob;
   return k;
 }
 
@@ -162,8 +164,12 @@ const std::vector<KnobSpec>& common_knobs() {
 const std::vector<KnobSpec>& all_knobs() {
   static const std::vector<KnobSpec> knobs = [] {
     std::vector<KnobSpec> all = common_knobs();
+    // A row several techniques share (the pre-integrated LUT's size) is listed once.
     for (const TechniqueSpec* t : all_techniques()) {
-      all.insert(all.end(), t->knobs.begin(), t->knobs.end());
+      for (const KnobSpec& k : t->knobs) {
+        const auto named = [&](const KnobSpec& known) { return known.name == k.name; };
+        if (std::none_of(all.begin(), all.end(), named)) all.push_back(k);
+      }
     }
     return all;
   }();

@@ -49,8 +49,12 @@ std::vector<std::string> summary_knobs(const PipelineConfig& config) {
   return names;
 }
 
+bool uses_specular_knob(const PipelineConfig& config) {
+  return !find_technique(config.technique).own_specular;
+}
+
 bool reads_brdf_lut(const PipelineConfig& config) {
-  return config.specular == SpecularModel::kKsLut;
+  return uses_specular_knob(config) && config.specular == SpecularModel::kKsLut;
 }
 
 }  // namespace skinsim::pipeline

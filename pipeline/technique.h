@@ -39,6 +39,9 @@ struct TechniqueSpec {
   // EPYC, 2026-11-24). Only sweep shards use it, to balance their expected work
   // (driver/sweep_shard.h); the cost model never does.
   int host_ns_per_pixel = 0;
+  // Whether its shader has a specular model of its own (urp: the article's dual GGX), so that
+  // the `specular` knob and the BRDF LUT's knobs do not apply to it.
+  bool own_specular = false;
 };
 
 // Every technique, in registry order (the first is the default).
@@ -58,6 +61,8 @@ bool knob_applies(const PipelineConfig& config, const std::string& knob);
 // and, when it reads it, the BRDF LUT's (the common knobs that tell techniques' frames apart).
 std::vector<std::string> summary_knobs(const PipelineConfig& config);
 
+// Whether the config's technique uses the `specular` knob (all but those with their own model).
+bool uses_specular_knob(const PipelineConfig& config);
 // Whether the config's specular model reads the BRDF LUT (ks_lut; the others evaluate in ALU).
 bool reads_brdf_lut(const PipelineConfig& config);
 

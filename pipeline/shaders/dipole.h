@@ -69,8 +69,7 @@ struct DipoleFSFor {
     // The article's random directions: the disc turned per pixel by interleaved gradient
     // noise, so that a tap's share shows as fine noise rather than a shifted copy of what it
     // lands on (the eye socket, a shadow edge); deterministic, as the noise is of the pixel.
-    const auto angle =
-        sl::fract(sl::fract(sl::dot(screen.value, vec2(u.noise_uv))) * 52.9829189f) * 6.2831853f;
+    const auto angle = interleaved_gradient_angle<L>(screen.value, u.noise_uv);
     const auto c = sl::cos(angle), s = sl::sin(angle);
     const vec2 along_x = vec2(c, s) * uv_per_mm;  // the offset's x and y axes, turned, in uv
     const vec2 along_y = vec2(-s, c) * uv_per_mm;

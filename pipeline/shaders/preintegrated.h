@@ -31,6 +31,41 @@ typename L::vec3 fwidth3(const typename L::FragIn& in, int slot) {
   }
 }
 
+// Curvature as the LUT's v coordinate from screen-space derivatives:
+// length(fwidth(N)) / length(fwidth(P)) (1/world unit) times `scale`.
+template <class L>
+typename L::f32 derivative_curvature(const typename L::FragIn& in, float scale) {
+  using f32 = typename L::f32;
+  const f32 dn = sl::length(fwidth3<L>(in, SurfaceSlots::kNormal));
+  const f32 dp = sl::length(fwidth3<L>(in, SurfaceSlots::kWorldPos));
+  return dn * sl::rcp(sl::max(dp, 1e-6f)) * scale;
+}
+
+// Penner's detail scattering for one light direction `l`: each channel's diffuse light from
+// the (N.L, curvature) LUT with its own normal, red with the `blurred` one, green and blue
+// blended from `sharp` towards it by f = saturate(1 - N_blur.L)^2 (0.3 + 0.7 f and f).
+template <class L>
+typename L::vec3 scattered_diffuse(typename L::TexUnit& tex, const typename L::vec3& sharp,
+                                   const typename L::vec3& blurred, const typename L::vec3& l,
+                                   const typename L::f32& curvature) {
+  using vec2 = typename L::vec2;
+  using vec3 = typename L::vec3;
+  using vec4 = typename L::vec4;
+  using f32 = typename L::f32;
+  constexpr int kLut = TechniqueBindings::kPreintegratedLut;
+  const f32 blur_n_dot_l = sl::dot(blurred, l);
+  const f32 f0 = sl::saturate(1.0f - blur_n_dot_l);
+  const f32 f = f0 * f0;
+  const vec3 n_g = sl::normalize(sl::mix(sharp, blurred, f * 0.7f + 0.3f));
+  const vec3 n_b = sl::normalize(sl::mix(sharp, blurred, f));
+  // N.L in [-1, 1] -> u in [0, 1]; curvature row v (row 0 flat, at the top).
+  const auto lut_u = [](const f32& n_dot_l) { return n_dot_l * 0.5f + 0.5f; };
+  const vec4 red = tex.sample(kLut, vec2(lut_u(blur_n_dot_l), curvature));
+  const vec4 green = tex.sample(kLut, vec2(lut_u(sl::dot(n_g, l)), curvature));
+  const vec4 blue = tex.sample(kLut, vec2(lut_u(sl::dot(n_b, l)), curvature));
+  return vec3(sl::x(red), sl::y(green), sl::z(blue));
+}
+
 template <GammaMode kGamma, SpecularModel kSpec, CurvatureSource kCurvature>
 struct PreintegratedFS {
   static constexpr ShaderName kNameText = shader_name(
@@ -52,9 +87,7 @@ struct PreintegratedFS {
       // The baked texture stores curvature / max curvature: the LUT v coordinate.
       curvature = sl::x(tex.sample(B::kCurvature, in.texcoord(SurfaceSlots::kUv)));
     } else {
-      const f32 dn = sl::length(fwidth3<L>(in, SurfaceSlots::kNormal));
-      const f32 dp = sl::length(fwidth3<L>(in, SurfaceSlots::kWorldPos));
-      curvature = dn * sl::rcp(sl::max(dp, 1e-6f)) * u.curvature_scale;
+      curvature = derivative_curvature<L>(in, u.curvature_scale);
     }
 
     // The key light's visibility: through the penumbra-scattering LUT (Penner's shadow
@@ -68,18 +101,8 @@ struct PreintegratedFS {
     vec3 diffuse_light = vec3(u.lights.ambient) +
                          transmitted<L>(in, s.vertex_normal, u.lights, SurfaceSlots::kLight);
     for (int i = 0; i < u.lights.count; ++i) {
-      const vec3 l(u.lights.direction[i]);
-      const f32 blur_n_dot_l = sl::dot(s.vertex_normal, l);
-      const f32 f0 = sl::saturate(1.0f - blur_n_dot_l);
-      const f32 f = f0 * f0;
-      const vec3 n_g = sl::normalize(sl::mix(s.normal, s.vertex_normal, f * 0.7f + 0.3f));
-      const vec3 n_b = sl::normalize(sl::mix(s.normal, s.vertex_normal, f));
-      // N.L in [-1, 1] -> u in [0, 1]; curvature row v (row 0 flat, at the top).
-      const auto lut_u = [](const f32& n_dot_l) { return n_dot_l * 0.5f + 0.5f; };
-      const vec4 red = tex.sample(B::kPreintegratedLut, vec2(lut_u(blur_n_dot_l), curvature));
-      const vec4 green = tex.sample(B::kPreintegratedLut, vec2(lut_u(sl::dot(n_g, l)), curvature));
-      const vec4 blue = tex.sample(B::kPreintegratedLut, vec2(lut_u(sl::dot(n_b, l)), curvature));
-      const vec3 scattered(sl::x(red), sl::y(green), sl::z(blue));
+      const vec3 scattered = scattered_diffuse<L>(tex, s.normal, s.vertex_normal,
+                                                  vec3(u.lights.direction[i]), curvature);
       diffuse_light = diffuse_light + light_radiance<L>(i, key_vis, u.lights) * scattered;
     }
     const Reflection<L> r = skin_specular<kSpec, L>(s, tex, u);

@@ -120,6 +120,15 @@ typename L::vec2 uv_per_mm_at(const glm::vec2& focal_uv, const Scalar& depth_mm)
   }
 }
 
+// A per-pixel angle in [0, 2 pi) from interleaved gradient noise over the screen uv (Jimenez
+// 2014; noise_uv = (0.06711056 width, 0.00583715 height)): turning a disc of taps by it makes
+// a tap's share show as fine noise rather than a shifted copy of what it lands on.
+template <class L>
+auto interleaved_gradient_angle(const typename L::vec2& screen_uv, const glm::vec2& noise_uv) {
+  using vec2 = typename L::vec2;
+  return sl::fract(sl::fract(sl::dot(screen_uv, vec2(noise_uv))) * 52.9829189f) * 6.2831853f;
+}
+
 // Burley normalized diffusion: `count` taps at precomputed offsets (mm, a Fibonacci spiral
 // with radii from the inverse CDF of the widest channel), RGB weights R_c(r) / pdf(r)
 // normalised per channel (techniques/kernels.h). The centre is read once, independently.

@@ -25,15 +25,13 @@ struct SkinSurface {
   typename L::f32 visibility;  // of the key light (lights.h)
 };
 
+// The per-pixel terms from the albedo and normal-map samples, and the key light's shadow-map
+// fetches (everything but the environment read).
 template <class L, GammaMode kGamma>
-SkinSurface<L> skin_surface(const typename L::FragIn& in, typename L::TexUnit& tex,
-                            const SkinUniforms& u) {
+void surface_terms(const typename L::FragIn& in, typename L::TexUnit& tex, const SkinUniforms& u,
+                   const typename L::vec4& base, const typename L::vec4& normal_map,
+                   SkinSurface<L>& s) {
   using vec3 = typename L::vec3;
-  using vec4 = typename L::vec4;
-  const vec4 base = tex.sample(SkinBindings::kAlbedo, in.texcoord(SurfaceSlots::kUv));
-  const vec4 normal_map = tex.sample(SkinBindings::kNormalMap, in.texcoord(SurfaceSlots::kUv));
-  SkinSurface<L> s;
-  s.environment = tex.sample_cube(SkinBindings::kEnvironment, in.direction(SurfaceSlots::kNormal));
   s.vertex_normal = sl::normalize(in.v3(SurfaceSlots::kNormal));
   s.normal = normal_mapped<L>(s.vertex_normal, in.v4(SurfaceSlots::kTangent), normal_map);
   s.visibility = key_visibility<L>(in, tex, u.lights, SurfaceSlots::kLight);
@@ -41,6 +39,17 @@ SkinSurface<L> skin_surface(const typename L::FragIn& in, typename L::TexUnit& t
   s.n_dot_l = sl::dot(s.normal, vec3(u.lights.direction[0]));
   s.albedo = decode_gamma<kGamma>(sl::xyz(base)) * u.albedo_factor;
   s.reflectivity = sl::w(base) * u.reflectivity;
+}
+
+template <class L, GammaMode kGamma>
+SkinSurface<L> skin_surface(const typename L::FragIn& in, typename L::TexUnit& tex,
+                            const SkinUniforms& u) {
+  using vec4 = typename L::vec4;
+  const vec4 base = tex.sample(SkinBindings::kAlbedo, in.texcoord(SurfaceSlots::kUv));
+  const vec4 normal_map = tex.sample(SkinBindings::kNormalMap, in.texcoord(SurfaceSlots::kUv));
+  SkinSurface<L> s;
+  s.environment = tex.sample_cube(SkinBindings::kEnvironment, in.direction(SurfaceSlots::kNormal));
+  surface_terms<L, kGamma>(in, tex, u, base, normal_map, s);
   return s;
 }
 

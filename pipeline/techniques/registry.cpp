@@ -13,11 +13,13 @@ const TechniqueSpec& burley_technique();         // techniques/burley/
 const TechniqueSpec& ssss_technique();           // techniques/ssss/
 const TechniqueSpec& texture_space_technique();  // techniques/texture_space/
 const TechniqueSpec& dipole_technique();         // techniques/dipole/
+const TechniqueSpec& urp_technique();            // techniques/urp/
 
 const std::vector<const TechniqueSpec*>& all_techniques() {
   static const std::vector<const TechniqueSpec*> all = {
-      &mobile_technique(), &lod_technique(),  &preintegrated_technique(), &wrap_technique(),
-      &burley_technique(), &ssss_technique(), &texture_space_technique(), &dipole_technique(),
+      &mobile_technique(),        &lod_technique(),    &preintegrated_technique(),
+      &wrap_technique(),          &burley_technique(), &ssss_technique(),
+      &texture_space_technique(), &dipole_technique(), &urp_technique(),
   };
   return all;
 }

@@ -29,6 +29,12 @@ sim::PassCounters diffuse_pass(const GpuScene& gs, const View& view, const Frame
 
 shaders::ScreenKernelUniforms kernel_uniforms(const View& view, float units_per_mm);
 
+// The noise_uv of interleaved_gradient_angle (shaders/screen_diffusion.h) for the frame's size.
+inline glm::vec2 interleaved_noise_uv(const PipelineConfig& cfg) {
+  return {0.06711056f * static_cast<float>(cfg.width),
+          0.00583715f * static_cast<float>(cfg.height)};
+}
+
 // The perspective or orthographic program of a kernel (shaders/screen_diffusion.h).
 template <template <bool> class Kernel, class Uniforms>
 std::shared_ptr<const sim::FragmentProgram> kernel_program(const View& view, const Uniforms& u) {

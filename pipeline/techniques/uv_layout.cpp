@@ -146,13 +146,14 @@ std::vector<float> vertex_curvature(const scene::Mesh& mesh, float units_per_mm,
   return curvature;
 }
 
-sim::Texture2D curvature_texture(const GpuScene& gs, int size, float max_curvature_per_mm) {
+sim::Texture2D vertex_value_texture(const GpuScene& gs, const char* name, int size,
+                                    const VertexValues& values, float full_scale) {
   std::vector<float> texels(static_cast<std::size_t>(size) * size, 0.0f);
   std::vector<std::uint8_t> covered(texels.size(), 0);
   for (const GpuMesh& m : gs.meshes()) {
     if (!is_skin(gs, m) || m.mesh->uvs.empty()) continue;
     const scene::Mesh& mesh = *m.mesh;
-    const std::vector<float> k = vertex_curvature(mesh, gs.scene().units_per_mm, 4);
+    const std::vector<float> k = values(mesh);
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
       const std::uint32_t i0 = mesh.indices[t], i1 = mesh.indices[t + 1], i2 = mesh.indices[t + 2];
       const glm::vec2 uv[3] = {mesh.uvs[i0], mesh.uvs[i1], mesh.uvs[i2]};
@@ -164,10 +165,17 @@ sim::Texture2D curvature_texture(const GpuScene& gs, int size, float max_curvatu
   for (int ring = 0; ring < 2; ++ring) dilate(size, texels, covered);
   std::vector<glm::vec4> rgba(texels.size());
   for (std::size_t i = 0; i < texels.size(); ++i) {
-    rgba[i] = glm::vec4(std::min(1.0f, texels[i] / max_curvature_per_mm), 0.0f, 0.0f, 1.0f);
+    rgba[i] = glm::vec4(std::min(1.0f, texels[i] / full_scale), 0.0f, 0.0f, 1.0f);
   }
-  return sim::Texture2D("curvature", size, size, rgba, sim::TexelFormat::kRGBA8,
+  return sim::Texture2D(name, size, size, rgba, sim::TexelFormat::kRGBA8,
                         {sim::Filter::kBilinear, sim::Wrap::kClamp}, false);
+}
+
+sim::Texture2D curvature_texture(const GpuScene& gs, int size, float max_curvature_per_mm) {
+  return vertex_value_texture(
+      gs, "curvature", size,
+      [&](const scene::Mesh& mesh) { return vertex_curvature(mesh, gs.scene().units_per_mm, 4); },
+      max_curvature_per_mm);
 }
 
 }  // namespace skinsim::pipeline

@@ -4,6 +4,7 @@
 // islands would share texels.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "pipeline/gpu_scene.h"
@@ -23,6 +24,13 @@ float uv_texels_per_mm(const GpuScene& scene, int size);
 // `smoothing_passes` of neighbour averaging (Penner & Borshukov bake it smoothed).
 std::vector<float> vertex_curvature(const scene::Mesh& mesh, float units_per_mm,
                                     int smoothing_passes);
+
+// Per-vertex values of the skin meshes rasterised into their UV layout (size x size, RGBA8,
+// R = value / full_scale, at most 1), dilated by two texels so bilinear reads at island edges
+// stay on the island's values. An offline bake.
+using VertexValues = std::function<std::vector<float>(const scene::Mesh&)>;
+sim::Texture2D vertex_value_texture(const GpuScene& scene, const char* name, int size,
+                                    const VertexValues& values, float full_scale = 1.0f);
 
 // The skin meshes' smoothed vertex curvature rasterised into their UV layout (size x size,
 // RGBA8, R = curvature / max_curvature_per_mm clamped to 1), dilated by two texels so

@@ -115,8 +115,9 @@ TEST(SweepSpec, AllTechniquesOverTheDefaultAxes) {
   SweepSpec spec = default_sweep_spec();
   set_axis(spec, "technique", pipeline::technique_names(), "--techniques");
   const std::vector<SweepConfig> configs = expand_sweep(spec);
-  // mobile: 4 scales x 4 LUTs; every other technique reads the LUT but has no buffer: 4.
-  ASSERT_EQ(configs.size(), 16u + 7u * 4u);
+  // mobile: 4 scales x 4 LUTs; every other technique reads the LUT but has no buffer: 4;
+  // urp has its own specular (no BRDF LUT): 1.
+  ASSERT_EQ(configs.size(), 16u + 7u * 4u + 1u);
   std::map<std::string, int> per_technique;
   std::set<std::string> ids;
   for (const SweepConfig& c : configs) {
@@ -127,6 +128,7 @@ TEST(SweepSpec, AllTechniquesOverTheDefaultAxes) {
   EXPECT_EQ(per_technique["mobile"], 16);
   EXPECT_EQ(per_technique["texture-space"], 4);
   EXPECT_EQ(per_technique["dipole"], 4);
+  EXPECT_EQ(per_technique["urp"], 1);
   EXPECT_TRUE(ids.count("scale0.5_lut16x64_texture-space"));
 }
 

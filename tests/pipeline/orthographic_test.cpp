@@ -3,6 +3,7 @@
 // perspective; and the screen-space diffusion runs its orthographic programs.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -103,6 +104,17 @@ TEST_P(FillingQuad, ScreenSpaceDiffusionCoversTheView) {
   if (c.orthographic) {
     for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(corner[ch], centre[ch], 1.5f / 255.0f) << ch;
   }
+}
+
+TEST_P(FillingQuad, UrpAoOfAQuadFacingTheCameraIsOne) {
+  const FillCase& c = GetParam();
+  const FrameOutput out = render(filling_quad(c), "urp", c);
+  EXPECT_EQ(pass(out, "ssao").draws.at(0).fragment_program,
+            c.orthographic ? "ssao_ortho_fs" : "ssao_fs");
+  const auto ao = std::find_if(out.intermediates.begin(), out.intermediates.end(),
+                               [](const NamedTarget& t) { return t.name == "ssao"; });
+  ASSERT_NE(ao, out.intermediates.end());
+  for (const glm::vec4& p : ao->target.pixels) ASSERT_EQ(p.r, 1.0f);
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, FillingQuad,

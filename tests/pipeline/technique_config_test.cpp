@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
 #include <set>
 
 #include "pipeline/config.h"
@@ -14,7 +15,7 @@ namespace {
 TEST(TechniqueConfig, EveryTechniqueRoundTrips) {
   const std::vector<std::string> names = technique_names();
   EXPECT_EQ(names, (std::vector<std::string>{"mobile", "lod", "preintegrated", "wrap", "burley",
-                                             "ssss", "texture-space", "dipole"}));
+                                             "ssss", "texture-space", "dipole", "urp"}));
   for (const std::string& name : names) {
     PipelineConfig c;
     set_config_field(c, "technique", name);
@@ -36,7 +37,11 @@ TEST(TechniqueConfig, KnobsRoundTrip) {
       {"burley_distance_mm", "1,0.5,0.25"},
       {"burley_distance_mm", "auto"},
       {"texture_space_size", "512"},
-      {"dipole_samples", "12"}};
+      {"dipole_samples", "12"},
+      {"urp_ssao", "off"},
+      {"urp_ssao_taps", "24"},
+      {"urp_detail_normals", "off"},
+      {"urp_clear_coat", "off"}};
   for (const auto& [key, value] : knobs) {
     PipelineConfig c;
     set_config_field(c, key, value);
@@ -50,16 +55,24 @@ TEST(TechniqueConfig, KnobsRoundTrip) {
   }
 }
 
-TEST(TechniqueConfig, TechniqueKnobsAreKnownKeysOwnedByOneTechnique) {
+TEST(TechniqueConfig, TechniqueKnobsAreKnownKeysOwnedByOneTechniqueOrSharedAsOneRow) {
   const auto& names = config_field_names();
-  std::set<std::string> owned;
+  std::map<std::string, const KnobSpec*> owned;
   for (const TechniqueSpec* t : all_techniques()) {
-    for (const std::string& knob : technique_knobs(t->name)) {
-      EXPECT_NE(std::find(names.begin(), names.end(), knob), names.end())
-          << t->name << ": " << knob;
-      EXPECT_TRUE(owned.insert(knob).second) << knob << " is owned by two techniques";
+    for (const KnobSpec& knob : t->knobs) {
+      EXPECT_NE(std::find(names.begin(), names.end(), knob.name), names.end())
+          << t->name << ": " << knob.name;
+      const auto [it, first] = owned.emplace(knob.name, &knob);
+      if (first) continue;
+      // Only the pre-integrated LUT's size is shared (preintegrated and urp), from one builder.
+      EXPECT_EQ(knob.name, "preintegrated_lut") << knob.name << " is owned by two techniques";
+      EXPECT_EQ(knob.flag, it->second->flag);
+      EXPECT_EQ(knob.help, it->second->help);
+      EXPECT_EQ(knob.values, it->second->values);
     }
   }
+  const auto urp = technique_knobs("urp");
+  EXPECT_NE(std::find(urp.begin(), urp.end(), "preintegrated_lut"), urp.end());
   const auto mobile = technique_knobs("mobile");
   EXPECT_NE(std::find(mobile.begin(), mobile.end(), "scale"), mobile.end());
   const auto burley = technique_knobs("burley");
@@ -134,6 +147,9 @@ TEST(TechniqueConfig, BadValuesNameTheKey) {
   expect_error("burley_samples", "65", "burley_samples");
   expect_error("dipole_samples", "3", "dipole_samples");
   expect_error("dipole_samples", "65", "dipole_samples");
+  expect_error("urp_ssao_taps", "3", "urp_ssao_taps");
+  expect_error("urp_ssao_taps", "33", "urp_ssao_taps");
+  expect_error("urp_clear_coat", "maybe", "urp_clear_coat");
   expect_error("burley_distance_mm", "1,2", "burley_distance_mm");
   expect_error("burley_distance_mm", "1,0,1", "burley_distance_mm");
   expect_error("texture_space_size", "1000", "texture_space_size");

@@ -61,6 +61,10 @@ INSTANTIATE_TEST_SUITE_P(
         Expected{"burley", {"shadow", "diffuse", "sss", "skin"}, "diffused_skin_fs", 5, 2},
         Expected{"ssss", {"shadow", "diffuse", "sss_h", "sss_v", "skin"}, "diffused_skin_fs", 5, 2},
         Expected{"dipole", {"shadow", "diffuse", "sss", "skin"}, "diffused_skin_fs", 5, 2},
+        // urp: albedo, normal, shadow, baked AO (uv) and the SSAO (at the pixel); the normal
+        // map's blurred mip, the detail map twice, 3 LUT reads per light, 3 environment reads.
+        Expected{
+            "urp", {"shadow", "depth_normal", "ssao", "ssao_h", "ssao_v", "skin"}, "urp_fs", 5, 12},
         Expected{"texture-space",
                  {"shadow", "uv_irradiance", "uv_blur_1_h", "uv_blur_1_v", "uv_blur_2_h",
                   "uv_blur_2_v", "uv_blur_3_h", "uv_blur_3_v", "uv_blur_4_h", "uv_blur_4_v",

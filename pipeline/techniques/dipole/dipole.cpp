@@ -34,8 +34,7 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLig
   return one_kernel_frame(gs, cfg, lights, gpu, [&](const View& view) {
     shaders::DipoleUniforms u = dipole_uniforms(cfg.dipole_samples);
     u.focal_uv = kernel_uniforms(view, gs.scene().units_per_mm).focal_uv;
-    u.noise_uv = glm::vec2(0.06711056f * static_cast<float>(cfg.width),
-                           0.00583715f * static_cast<float>(cfg.height));
+    u.noise_uv = interleaved_noise_uv(cfg);
     return kernel_program<shaders::DipoleFSFor>(view, u);
   });
 }

@@ -8,6 +8,7 @@
 #include "pipeline/shader_variants.h"
 #include "pipeline/technique.h"
 #include "pipeline/techniques/frame_setup.h"
+#include "pipeline/techniques/preintegrated_lut_texture.h"
 #include "pipeline/techniques/skin_pass.h"
 #include "pipeline/techniques/uv_layout.h"
 
@@ -18,20 +19,6 @@ namespace {
 // Resolution of the baked curvature texture: curvature is smooth by construction (baked
 // from vertices, then smoothed), so a small texture holds it.
 constexpr int kCurvatureTextureSize = 256;
-
-// The LUT as the GPU stores it: linear RGB in RGBA8 (values are in [0, 1]), bilinear,
-// clamped; row 0 (flat skin) at v = 0.
-sim::RenderTarget preintegrated_lut_target(const PipelineConfig& cfg) {
-  bake::PreintegratedLutParams params;
-  params.width = cfg.preintegrated_lut_width;
-  params.height = cfg.preintegrated_lut_height;
-  const bake::PreintegratedLut lut = bake::bake_preintegrated_lut(params);
-  sim::RenderTarget t("preintegrated_lut", lut.width, lut.height, sim::TexelFormat::kRGBA8);
-  for (std::size_t i = 0; i < lut.rgb.size(); ++i) {
-    t.pixels[i] = sim::quantize(glm::vec4(lut.rgb[i], 1.0f), sim::TexelFormat::kRGBA8);
-  }
-  return t;
-}
 
 // Penner's penumbra-scattering LUT for this frame's penumbra width (bake/shadow_scatter_lut.h),
 // RGBA8, 64 x 1.
@@ -115,10 +102,7 @@ const TechniqueSpec& preintegrated_technique() {
       .summary = "Penner & Borshukov pre-integrated skin (GPU Pro 2, 2011)",
       .knobs =
           {
-              size_knob("preintegrated_lut", "--preintegrated-lut",
-                        "Pre-integrated diffusion LUT size (N.L x curvature)",
-                        &PipelineConfig::preintegrated_lut_width,
-                        &PipelineConfig::preintegrated_lut_height, 4, 1024),
+              preintegrated_lut_knob(),
               choice_knob("curvature", "--curvature",
                           "Curvature source: baked per vertex and smoothed, or screen-space "
                           "derivatives (constant per triangle on low-poly meshes)",
