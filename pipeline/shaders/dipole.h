@@ -62,10 +62,8 @@ struct DipoleFSFor {
     using vec2 = typename L::vec2;
     using vec3 = typename L::vec3;
     using vec4 = typename L::vec4;
-    const auto screen = in.screen_texcoord();
-    const vec4 centre = tex.sample(0, screen);
-    const auto depth = sl::w(centre);
-    const vec2 uv_per_mm = uv_per_mm_at<kOrthographic, L>(u.focal_uv, depth);
+    const auto [screen, centre, depth, uv_per_mm] =
+        kernel_centre<kOrthographic, L>(in, tex, u.focal_uv);
     // The article's random directions: the disc turned per pixel by interleaved gradient
     // noise, so that a tap's share shows as fine noise rather than a shifted copy of what it
     // lands on (the eye socket, a shadow edge); deterministic, as the noise is of the pixel.

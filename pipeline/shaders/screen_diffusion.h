@@ -13,6 +13,7 @@
 #pragma once
 
 #include <array>
+#include <utility>
 
 #include "pipeline/config.h"
 #include "pipeline/shaders/normal_mapping.h"
@@ -120,6 +121,26 @@ typename L::vec2 uv_per_mm_at(const glm::vec2& focal_uv, const Scalar& depth_mm)
   }
 }
 
+// What every screen-space kernel reads first: its pixel's screen uv, the centre texel of
+// binding 0 (its depth in mm in w) and the texture uv per mm at that depth, for
+// `const auto [screen, centre, depth, uv_per_mm] = kernel_centre<kOrthographic, L>(...)`.
+template <class L>
+struct KernelCentre {
+  decltype(std::declval<const typename L::FragIn&>().screen_texcoord()) screen;
+  typename L::vec4 centre;
+  decltype(sl::w(std::declval<typename L::vec4>())) depth;
+  typename L::vec2 uv_per_mm;
+};
+
+template <bool kOrthographic, class L>
+KernelCentre<L> kernel_centre(const typename L::FragIn& in, typename L::TexUnit& tex,
+                              const glm::vec2& focal_uv) {
+  const auto screen = in.screen_texcoord();
+  const typename L::vec4 centre = tex.sample(0, screen);
+  const auto depth = sl::w(centre);
+  return {screen, centre, depth, uv_per_mm_at<kOrthographic, L>(focal_uv, depth)};
+}
+
 // A per-pixel angle in [0, 2 pi) from interleaved gradient noise over the screen uv (Jimenez
 // 2014; noise_uv = (0.06711056 width, 0.00583715 height)): turning a disc of taps by it makes
 // a tap's share show as fine noise rather than a shifted copy of what it lands on.
@@ -148,10 +169,8 @@ struct BurleyFSFor {
     using vec2 = typename L::vec2;
     using vec3 = typename L::vec3;
     using vec4 = typename L::vec4;
-    const auto screen = in.screen_texcoord();
-    const vec4 centre = tex.sample(0, screen);
-    const auto depth = sl::w(centre);
-    const vec2 uv_per_mm = uv_per_mm_at<kOrthographic, L>(u.focal_uv, depth);
+    const auto [screen, centre, depth, uv_per_mm] =
+        kernel_centre<kOrthographic, L>(in, tex, u.focal_uv);
     vec3 sum(0.0f);
     for (int i = 0; i < u.count; ++i) {
       const vec4 t = tex.sample(0, screen.value + vec2(u.offsets_mm[i]) * uv_per_mm);
@@ -178,13 +197,10 @@ struct SsssBlurFSFor {
   template <class L>
   static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
                                    const Uniforms& u) {
-    using vec2 = typename L::vec2;
     using vec3 = typename L::vec3;
     using vec4 = typename L::vec4;
-    const auto screen = in.screen_texcoord();
-    const vec4 centre = tex.sample(0, screen);
-    const auto depth = sl::w(centre);
-    const vec2 step = uv_per_mm_at<kOrthographic, L>(u.focal_uv * u.axis, depth);
+    const auto [screen, centre, depth, step] =
+        kernel_centre<kOrthographic, L>(in, tex, u.focal_uv * u.axis);
     vec3 sum = sl::xyz(centre) * vec3(u.weights[0]);
     for (int i = 1; i < kSsssTaps; ++i) {
       const vec4 t = tex.sample(0, screen.value + step * u.offsets_mm[i]);

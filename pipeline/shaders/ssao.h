@@ -70,12 +70,11 @@ struct SsaoFSFor {
     using vec2 = typename L::vec2;
     using vec3 = typename L::vec3;
     using vec4 = typename L::vec4;
-    const auto screen = in.screen_texcoord();
-    const vec4 centre = tex.sample(0, screen);
-    const auto depth = sl::w(centre);
+    const auto [screen, centre, depth, texture_uv_per_mm] =
+        kernel_centre<kOrthographic, L>(in, tex, u.focal_uv);
     const vec3 n = sl::xyz(centre);
     // Texture v grows downwards, view y upwards.
-    const vec2 uv_per_mm = uv_per_mm_at<kOrthographic, L>(u.focal_uv, depth) * vec2(1.0f, -1.0f);
+    const vec2 uv_per_mm = texture_uv_per_mm * vec2(1.0f, -1.0f);
     const auto angle = interleaved_gradient_angle<L>(screen.value, u.noise_uv);
     const auto c = sl::cos(angle), s = sl::sin(angle);
     typename L::f32 occlusion(0.0f);
