@@ -1,8 +1,10 @@
 #include "pipeline/reference/reference.h"
 
+#include <tbb/blocked_range2d.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -214,49 +216,77 @@ class Diffusion {
  public:
   Diffusion(const GBuffer& g, const std::vector<glm::vec3>& irradiance, const View& view,
             float units_per_mm)
-      : g_(g), e_(irradiance), view_(view), units_per_mm_(units_per_mm) {}
+      : width_(g.position.width),
+        height_(g.position.height),
+        samples_(g.position.pixels.size()),
+        view_(view),
+        units_per_mm_(units_per_mm) {
+    for (std::size_t i = 0; i < samples_.size(); ++i) {
+      const glm::vec4& q = g.position.pixels[i];
+      samples_[i] = {glm::vec3(q), q.w == reference::kKindSkin, irradiance[i]};
+    }
+  }
 
   glm::vec3 at(int x, int y) const {
-    const glm::vec4 p = g_.position.at(x, y);
-    const float px_per_unit = view_.pixels_per_unit(glm::length(glm::vec3(p) - view_.eye));
+    const glm::vec3 p = samples_[static_cast<std::size_t>(y) * width_ + x].position;
+    const float px_per_unit = view_.pixels_per_unit(glm::length(p - view_.eye));
     glm::vec3 result(0.0f);
     for (const bake::GaussianTerm& gaussian : bake::skin_gaussians()) {
       const float variance = gaussian.variance_mm2 * units_per_mm_ * units_per_mm_;
       const float sigma_px = std::sqrt(variance) * px_per_unit;
-      result += gaussian.weight * convolve(x, y, glm::vec3(p), variance, sigma_px);
+      result += gaussian.weight * convolve(x, y, p, variance, sigma_px);
     }
     return result;
   }
 
  private:
   glm::vec3 convolve(int x, int y, const glm::vec3& p, float variance, float sigma_px) const {
-    const int w = g_.position.width, h = g_.position.height;
     const float inv_two_variance = 1.0f / (2.0f * variance);
-    if (sigma_px < 0.5f) return e_[static_cast<size_t>(y) * w + x];
-    const int n = std::min(6, static_cast<int>(std::ceil(3.0f * sigma_px)));
+    if (sigma_px < 0.5f) return samples_[static_cast<size_t>(y) * width_ + x].irradiance;
+    const int n = std::min(kMaxTapsEachSide, static_cast<int>(std::ceil(3.0f * sigma_px)));
     const float step = 3.0f * sigma_px / static_cast<float>(n);
+    // The grid's pixel offsets, the same along both axes. lround is monotonic, so the taps
+    // inside the image are one contiguous run along each axis.
+    std::array<int, 2 * kMaxTapsEachSide + 1> offset{};
+    for (int k = -n; k <= n; ++k) offset[k + n] = static_cast<int>(std::lround(k * step));
+    const auto inside = [&](int centre, int size) {
+      int begin = 0, end = 2 * n + 1;
+      while (begin < end && centre + offset[begin] < 0) ++begin;
+      while (end > begin && centre + offset[end - 1] >= size) --end;
+      return std::pair{begin, end};
+    };
+    const auto [i_begin, i_end] = inside(x, width_);
+    const auto [j_begin, j_end] = inside(y, height_);
     glm::vec3 sum(0.0f);
     float weight_sum = 0.0f;
-    for (int j = -n; j <= n; ++j) {
-      const int qy = y + static_cast<int>(std::lround(j * step));
-      if (qy < 0 || qy >= h) continue;
-      for (int i = -n; i <= n; ++i) {
-        const int qx = x + static_cast<int>(std::lround(i * step));
-        if (qx < 0 || qx >= w) continue;
-        const glm::vec4 q = g_.position.at(qx, qy);
-        if (q.w != reference::kKindSkin) continue;
-        const glm::vec3 d = glm::vec3(q) - p;
+    for (int j = j_begin; j < j_end; ++j) {
+      const Sample* row = &samples_[static_cast<std::size_t>(y + offset[j]) * width_ + x];
+      for (int i = i_begin; i < i_end; ++i) {
+        const Sample& q = row[offset[i]];
+        if (!q.skin) continue;
+        const glm::vec3 d = q.position - p;
         const float g = exp_neg_.at(glm::dot(d, d) * inv_two_variance);
-        sum += g * e_[static_cast<size_t>(qy) * w + qx];
+        sum += g * q.irradiance;
         weight_sum += g;
       }
     }
     return sum / weight_sum;  // the centre sample has weight 1
   }
 
+  // At most 13 x 13 taps per Gaussian: a grid step of sigma / 2 up to 3 sigma.
+  static constexpr int kMaxTapsEachSide = 6;
+  // What a tap reads, in one 32-byte record: the grid's taps fall on scattered rows, so
+  // reading position and irradiance from one cache line instead of two halves the memory
+  // traffic that bounds this loop.
+  struct alignas(32) Sample {
+    glm::vec3 position;
+    bool skin;
+    glm::vec3 irradiance;
+  };
+
   const ExpNegTable exp_neg_;
-  const GBuffer& g_;
-  const std::vector<glm::vec3>& e_;
+  int width_, height_;
+  std::vector<Sample> samples_;
   const View& view_;
   float units_per_mm_;
 };
@@ -321,6 +351,19 @@ ReferenceFrame render_reference(const GpuScene& gs, const PipelineConfig& config
     tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
     arena.execute([&] { tbb::parallel_for(0, h, row); });
   };
+  const auto for_blocks = [&](const std::function<void(int, int)>& pixel) {
+    tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+    arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range2d<int>(0, h, 32, 0, w, 128),
+                        [&](const tbb::blocked_range2d<int>& block) {
+                          for (int y = block.rows().begin(); y < block.rows().end(); ++y) {
+                            for (int x = block.cols().begin(); x < block.cols().end(); ++x) {
+                              pixel(x, y);
+                            }
+                          }
+                        });
+    });
+  };
   for_rows([&](int y) {
     for (int x = 0; x < w; ++x) {
       if (g.position.at(x, y).w != reference::kKindSkin) continue;
@@ -354,48 +397,50 @@ ReferenceFrame render_reference(const GpuScene& gs, const PipelineConfig& config
     }
   });
 
-  const Diffusion gaussians(g, irradiance, view, sc.units_per_mm);
+  std::optional<Diffusion> gaussians;
   std::optional<DipoleDiffusion> dipole;
   if (config.reference_profile == ReferenceProfile::kDipole) {
     dipole.emplace(g.position, reference::kKindSkin, irradiance, view, sc.units_per_mm,
                    bake::dipole_terms(bake::jensen_skin1()));
+  } else {
+    gaussians.emplace(g, irradiance, view, sc.units_per_mm);
   }
   const auto diffused = [&](int x, int y) {
-    return dipole ? dipole->at(x, y) : gaussians.at(x, y);
+    return dipole ? dipole->at(x, y) : gaussians->at(x, y);
   };
   const bake::BrdfLutParams lut_params = brdf_lut_params(config);
   const DirectionalTable directional(lut_params);
   ReferenceFrame out{sim::RenderTarget("reference", w, h, sim::TexelFormat::kRGBA32F),
                      std::vector<std::uint8_t>(static_cast<size_t>(w) * h, 0)};
-  for_rows([&](int y) {
-    for (int x = 0; x < w; ++x) {
-      const glm::vec4 p = g.position.at(x, y);
-      if (p.w != reference::kKindSkin) {
-        out.frame.at(x, y) = g.nonskin.at(x, y);
-        continue;
-      }
-      out.skin_mask[static_cast<size_t>(y) * w + x] = 1;
-      const glm::vec3 n(g.normal.at(x, y));
-      const float reflectivity = g.normal.at(x, y).w;
-      const glm::vec3 v = view.to_viewer(glm::vec3(p));
-      const float n_dot_v = std::clamp(glm::dot(n, v), 0.0f, 1.0f);
-      const glm::vec3 albedo(g.albedo.at(x, y));
-      float energy = 0.0f, fresnel = 0.0f;
-      directional.at(n_dot_v, energy, fresnel);
-      const glm::vec3 diffuse = albedo * diffused(x, y) * energy;
-      glm::vec3 specular(0.0f);
-      for (std::size_t i = 0; i < lights.size(); ++i) {
-        const scene::DirectionalLight& light = lights[i];
-        if (glm::dot(n, light.direction) <= 0.0f) continue;
-        specular += light.radiance * ks_specular(n, light.direction, v, lut_params) * reflectivity *
-                    visible[(static_cast<size_t>(y) * w + x) * lights.size() + i];
-      }
-      const glm::vec3 env =
-          sample_cube(gs.environment_diffuse(), glm::vec3(g.vertex_normal.at(x, y)));
-      const glm::vec3 color = diffuse + specular + env * fresnel * reflectivity;
-      out.frame.at(x, y) =
-          glm::vec4(srgb_encode(color.r), srgb_encode(color.g), srgb_encode(color.b), 1.0f);
+  // In blocks, not whole rows: a pixel's diffusion reads ~50 rows around it, and a block's
+  // rows stay in the core's cache while a whole row's would not.
+  for_blocks([&](int x, int y) {
+    const glm::vec4 p = g.position.at(x, y);
+    if (p.w != reference::kKindSkin) {
+      out.frame.at(x, y) = g.nonskin.at(x, y);
+      return;
     }
+    out.skin_mask[static_cast<size_t>(y) * w + x] = 1;
+    const glm::vec3 n(g.normal.at(x, y));
+    const float reflectivity = g.normal.at(x, y).w;
+    const glm::vec3 v = view.to_viewer(glm::vec3(p));
+    const float n_dot_v = std::clamp(glm::dot(n, v), 0.0f, 1.0f);
+    const glm::vec3 albedo(g.albedo.at(x, y));
+    float energy = 0.0f, fresnel = 0.0f;
+    directional.at(n_dot_v, energy, fresnel);
+    const glm::vec3 diffuse = albedo * diffused(x, y) * energy;
+    glm::vec3 specular(0.0f);
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+      const scene::DirectionalLight& light = lights[i];
+      if (glm::dot(n, light.direction) <= 0.0f) continue;
+      specular += light.radiance * ks_specular(n, light.direction, v, lut_params) * reflectivity *
+                  visible[(static_cast<size_t>(y) * w + x) * lights.size() + i];
+    }
+    const glm::vec3 env =
+        sample_cube(gs.environment_diffuse(), glm::vec3(g.vertex_normal.at(x, y)));
+    const glm::vec3 color = diffuse + specular + env * fresnel * reflectivity;
+    out.frame.at(x, y) =
+        glm::vec4(srgb_encode(color.r), srgb_encode(color.g), srgb_encode(color.b), 1.0f);
   });
   return out;
 }
