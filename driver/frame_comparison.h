@@ -4,12 +4,17 @@
 #pragma once
 
 #include "quality/image.h"
+#include "quality/metrics.h"
 #include "reports/sweep_table.h"
 
 namespace skinsim::driver {
 
 // `test` against `against` (same size); `against` is left for the caller to name.
 reports::FrameComparison compare_frames(const quality::Image& test, const quality::Image& against,
+                                        const quality::Mask* mask);
+// The same against a frame prepared once for many comparisons (identical results).
+reports::FrameComparison compare_frames(const quality::Image& test,
+                                        const quality::FlipFeatures& against,
                                         const quality::Mask* mask);
 
 }  // namespace skinsim::driver

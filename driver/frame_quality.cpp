@@ -26,15 +26,19 @@ FrameQuality evaluate_quality(const sim::RenderTarget& frame, const ReferenceIma
   const quality::Image test = to_image(frame);
   FrameQuality q;
   q.metrics["psnr_frame"] = quality::psnr(test, reference.image);
-  q.metrics["ssim_frame"] = quality::ssim(test, reference.image);
+  // One SSIM map serves the frame's and the skin's mean.
+  quality::ScalarMap ssim_map;
+  q.metrics["ssim_frame"] = quality::ssim(test, reference.image, nullptr, &ssim_map);
   // With no skin pixel in the reference the skin metrics do not exist (the caller says why):
   // the frame metrics and the FLIP map still do.
   const bool has_skin = reference.skin.count() > 0;
-  const quality::FlipResult flip =
-      quality::flip(test, reference.image, has_skin ? &reference.skin : nullptr);
+  const quality::Mask* skin_mask = has_skin ? &reference.skin : nullptr;
+  const quality::FlipResult flip = reference.flip_features
+                                       ? quality::flip(test, *reference.flip_features, skin_mask)
+                                       : quality::flip(test, reference.image, skin_mask);
   if (has_skin) {
     q.metrics["psnr_skin"] = quality::psnr(test, reference.image, &reference.skin);
-    q.metrics["ssim_skin"] = quality::ssim(test, reference.image, &reference.skin);
+    q.metrics["ssim_skin"] = quality::map_mean(ssim_map, &reference.skin);
     q.metrics["flip_skin"] = flip.mean;
     // The mean hides local artefacts (a halo, a shadow edge): the tail and the visible area
     // show them (quality::flip_statistics).

@@ -3,10 +3,12 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <string>
 
 #include "pipeline/reference/reference.h"
 #include "quality/image.h"
+#include "quality/metrics.h"
 #include "sim/render_target.h"
 
 namespace skinsim::driver {
@@ -26,6 +28,9 @@ struct FrameQuality {
 struct ReferenceImages {
   quality::Image image;
   quality::Mask skin;
+  // The reference's FLIP features, when many frames are compared with it (a sweep): the
+  // comparisons then filter only the frames. Without them each comparison streams both.
+  std::shared_ptr<const quality::FlipFeatures> flip_features;
 };
 ReferenceImages reference_images(const pipeline::ReferenceFrame& reference);
 

@@ -4,7 +4,9 @@
 #include <fmt/ranges.h>
 #include <tbb/parallel_for.h>
 
+#include <functional>
 #include <map>
+#include <mutex>
 #include <optional>
 
 #include "driver/frame_comparison.h"
@@ -57,9 +59,44 @@ std::optional<FrameComparison> cached(const fs::path& path, const std::string& k
   }
 }
 
-// `row`'s frame against `other`'s, as FLIP over the reference's skin (or the whole frame).
-FrameComparison compare(const fs::path& dir, const ConfigResult& row, const ConfigResult& other,
-                        bool over_skin) {
+// The images the comparisons read, each prepared once: a group's best and finest frames are
+// compared with every member, and a reference's skin mask serves its whole group.
+class ComparisonImages {
+ public:
+  explicit ComparisonImages(fs::path dir) : dir_(std::move(dir)) {}
+
+  // A frame's FLIP features: what every comparison against it needs.
+  const quality::FlipFeatures& frame(const std::string& relative) {
+    return get(frames_, relative,
+               [](const fs::path& p) { return quality::FlipFeatures(quality::load_png(p)); });
+  }
+  const quality::Mask& mask(const std::string& relative) {
+    return get(masks_, relative, [](const fs::path& p) { return quality::load_mask_png(p); });
+  }
+
+ private:
+  template <class T, class Load>
+  const T& get(std::map<std::string, T>& cache, const std::string& relative, Load load) {
+    {
+      const std::lock_guard lock(mutex_);
+      if (const auto it = cache.find(relative); it != cache.end()) return it->second;
+    }
+    T value = load(dir_ / relative);  // outside the lock: two loads of one file are harmless
+    const std::lock_guard lock(mutex_);
+    return cache.emplace(relative, std::move(value)).first->second;  // std::map: stays put
+  }
+
+  const fs::path dir_;
+  std::mutex mutex_;
+  std::map<std::string, quality::FlipFeatures> frames_;
+  std::map<std::string, quality::Mask> masks_;
+};
+
+// `row`'s frame (decoded by `test` when not cached) against `other`'s, as FLIP over the
+// reference's skin (or the whole frame).
+FrameComparison compare(const fs::path& dir, const ConfigResult& row,
+                        const std::function<const quality::Image&()>& test,
+                        const ConfigResult& other, bool over_skin, ComparisonImages& images) {
   FrameComparison c;
   c.against = other.id;
   if (row.id == other.id) return c;
@@ -68,11 +105,8 @@ FrameComparison compare(const fs::path& dir, const ConfigResult& row, const Conf
   const std::string key = comparison_key(dir, row, other, mask);
   if (std::optional<FrameComparison> hit = cached(cache, key)) return *hit;
 
-  const quality::Image test = quality::load_png(dir / row.frame_image);
-  const quality::Image against = quality::load_png(dir / other.frame_image);
-  std::optional<quality::Mask> skin;
-  if (over_skin) skin = quality::load_mask_png(dir / mask);
-  c = compare_frames(test, against, skin ? &*skin : nullptr);
+  c = compare_frames(test(), images.frame(other.frame_image),
+                     over_skin ? &images.mask(mask) : nullptr);
   c.against = other.id;
   fs::create_directories(cache.parent_path());
   io::write_file_atomically(cache, nlohmann::json{{"key", key}, {"comparison", c}}.dump(1) + "\n");
@@ -134,12 +168,20 @@ void add_comparisons(const SweepSpec& spec, reports::SweepTable& table, const fs
     }
   }
   const bool over_skin = metric == "flip_skin";
+  ComparisonImages images(sweep_dir);
   tbb::parallel_for(std::size_t{0}, tasks.size(), [&](std::size_t t) {
     const Task& task = tasks[t];
     ConfigResult& row = rows[task.row];
-    row.vs_finest = compare(sweep_dir, row, rows[task.finest], over_skin);
-    row.vs_best = task.best == task.finest ? *row.vs_finest
-                                           : compare(sweep_dir, row, rows[task.best], over_skin);
+    std::optional<quality::Image> own;  // decoded once, and only if a comparison is not cached
+    const std::function<const quality::Image&()> own_frame = [&]() -> const quality::Image& {
+      if (!own) own = quality::load_png(sweep_dir / row.frame_image);
+      return *own;
+    };
+    const auto compare_with = [&](std::size_t other) {
+      return compare(sweep_dir, row, own_frame, rows[other], over_skin, images);
+    };
+    row.vs_finest = compare_with(task.finest);
+    row.vs_best = task.best == task.finest ? *row.vs_finest : compare_with(task.best);
   });
 }
 

@@ -214,6 +214,7 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
       arena.execute([&] {
         images = cached_reference(*s.gpu, job.resolved, spec.scene, dir / "refs", options.threads,
                                   &rendered, options.progress);
+        images.flip_features = std::make_shared<const quality::FlipFeatures>(images.image);
       });
       summary.references_rendered += rendered ? 1 : 0;
       if (images.skin.count() == 0) {  // still rendered and measured, over the whole frame

@@ -177,13 +177,7 @@ void write_source_row(const Image& image, int y, const SrgbDecoder& decode, floa
   }
 }
 
-struct PixelFeatures {
-  dvec3 hunt_lab;
-  double edge;
-  double point;
-};
-
-PixelFeatures pixel_features(const ImageOutputs& o, std::span<const float* const> f, int x) {
+FlipPixel pixel_features(const ImageOutputs& o, std::span<const float* const> f, int x) {
   dvec3 opponent(0.0);
   for (int c = 0; c < 3; ++c) {
     for (const auto& [filter, share] : o.opponent[c]) opponent[c] += share * f[filter][x];
@@ -229,46 +223,102 @@ double pixels_per_degree(double distance_m, double monitor_width_m, int monitor_
   return distance_m * (monitor_width_px / monitor_width_m) * (kPi / 180.0);
 }
 
-FlipResult flip(const Image& test, const Image& reference, const Mask* mask,
-                const FlipParams& params) {
-  check_metric_inputs("FLIP", test, reference, mask);
+namespace {
+
+double checked_pixels_per_degree(const FlipParams& params) {
   if (!(params.pixels_per_degree > 0.0) || !std::isfinite(params.pixels_per_degree)) {
     throw QualityError("FLIP: pixels_per_degree must be a positive number, got " +
                        std::to_string(params.pixels_per_degree));
   }
-  const double ppd = params.pixels_per_degree;
-  const FeatureKernels features = feature_kernels(ppd);
-  SeparableStream stream{test.width, test.height, 2 * kSourcesPerImage, {}, {}};
-  const ImageOutputs test_outputs = add_image_filters(stream, 0, ppd, features);
-  const ImageOutputs reference_outputs = add_image_filters(stream, 1, ppd, features);
+  return params.pixels_per_degree;
+}
 
+// Section 4.5: the colour error of two pixels, amplified by their feature difference.
+float pixel_error(const FlipPixel& t, const FlipPixel& r, double cmax) {
+  const double distance = flip_color::hyab(t.hunt_lab, r.hunt_lab);
+  if (distance == 0.0) return 0.0f;  // no colour difference: the error is 0 whatever the features
+  const double colour = colour_error(distance, cmax);
+  const double feature_difference =
+      std::max(std::abs(t.edge - r.edge), std::abs(t.point - r.point));
+  const double feature_error = std::sqrt(feature_difference / std::numbers::sqrt2);  // ^qf
+  return static_cast<float>(std::pow(colour, 1.0 - feature_error));
+}
+
+// Streams `images` (one or two) through their filters and hands `sink` each row's FLIP pixels:
+// sink(y, x, pixel of images[0], pixel of images[1] or nullptr).
+template <class Sink>
+void stream_flip_pixels(std::span<const Image* const> images, double ppd, const Sink& sink) {
+  const FeatureKernels features = feature_kernels(ppd);
+  const int count = static_cast<int>(images.size());
+  SeparableStream stream{images[0]->width, images[0]->height, count * kSourcesPerImage, {}, {}};
+  std::vector<ImageOutputs> outputs;
+  for (int i = 0; i < count; ++i) outputs.push_back(add_image_filters(stream, i, ppd, features));
+  const SrgbDecoder decode;
+  const auto source = [&](int y, std::span<float* const> rows) {
+    for (int i = 0; i < count; ++i) {
+      write_source_row(*images[i], y, decode, rows.data() + i * kSourcesPerImage);
+    }
+  };
+  const auto row_sink = [&](int y, std::span<const float* const> filtered) {
+    for (int x = 0; x < stream.width; ++x) {
+      const FlipPixel first = pixel_features(outputs[0], filtered, x);
+      if (count == 1) {
+        sink(y, x, first, nullptr);
+      } else {
+        const FlipPixel second = pixel_features(outputs[1], filtered, x);
+        sink(y, x, first, &second);
+      }
+    }
+  };
+  run_separable_stream(stream, source, row_sink);
+}
+
+}  // namespace
+
+FlipResult flip(const Image& test, const Image& reference, const Mask* mask,
+                const FlipParams& params) {
+  check_metric_inputs("FLIP", test, reference, mask);
   const double cmax = max_colour_difference();
   FlipResult result;
   result.map = ScalarMap{test.width, test.height, std::vector<float>(test.pixel_count())};
-  const SrgbDecoder decode;
-  const auto source = [&](int y, std::span<float* const> rows) {
-    write_source_row(test, y, decode, rows.data());
-    write_source_row(reference, y, decode, rows.data() + kSourcesPerImage);
-  };
-  const auto sink = [&](int y, std::span<const float* const> filtered) {
-    float* out = &result.map.values[static_cast<std::size_t>(y) * test.width];
-    for (int x = 0; x < test.width; ++x) {
-      const PixelFeatures t = pixel_features(test_outputs, filtered, x);
-      const PixelFeatures r = pixel_features(reference_outputs, filtered, x);
-      const double distance = flip_color::hyab(t.hunt_lab, r.hunt_lab);
-      if (distance == 0.0) {  // no colour difference: the error is 0 whatever the features
-        out[x] = 0.0f;
-        continue;
-      }
-      const double colour = colour_error(distance, cmax);
-      const double feature_difference =
-          std::max(std::abs(t.edge - r.edge), std::abs(t.point - r.point));
-      const double feature_error = std::sqrt(feature_difference / std::numbers::sqrt2);  // ^qf
-      // Section 4.5: features amplify the colour error.
-      out[x] = static_cast<float>(std::pow(colour, 1.0 - feature_error));
-    }
-  };
-  run_separable_stream(stream, source, sink);
+  const std::array<const Image*, 2> images{&test, &reference};
+  stream_flip_pixels(images, checked_pixels_per_degree(params),
+                     [&](int y, int x, const FlipPixel& t, const FlipPixel* r) {
+                       result.map.values[static_cast<std::size_t>(y) * test.width + x] =
+                           pixel_error(t, *r, cmax);
+                     });
+  result.mean = masked_mean(result.map.values, test.width, test.height, mask);
+  return result;
+}
+
+FlipFeatures::FlipFeatures(const Image& image, const FlipParams& params)
+    : width_(image.width), height_(image.height), params_(params) {
+  check_metric_inputs("FLIP", image, image, nullptr);
+  pixels_.resize(image.pixel_count());
+  const std::array<const Image*, 1> images{&image};
+  stream_flip_pixels(images, checked_pixels_per_degree(params),
+                     [&](int y, int x, const FlipPixel& p, const FlipPixel*) {
+                       pixels_[static_cast<std::size_t>(y) * width_ + x] = p;
+                     });
+}
+
+FlipResult flip(const Image& test, const FlipFeatures& reference, const Mask* mask) {
+  check_metric_inputs("FLIP", test, test, mask);
+  if (test.width != reference.width() || test.height != reference.height()) {
+    throw QualityError("FLIP: test image is " + std::to_string(test.width) + "x" +
+                       std::to_string(test.height) + " but reference is " +
+                       std::to_string(reference.width()) + "x" +
+                       std::to_string(reference.height()));
+  }
+  const double cmax = max_colour_difference();
+  FlipResult result;
+  result.map = ScalarMap{test.width, test.height, std::vector<float>(test.pixel_count())};
+  const std::array<const Image*, 1> images{&test};
+  stream_flip_pixels(images, checked_pixels_per_degree(reference.params()),
+                     [&](int y, int x, const FlipPixel& t, const FlipPixel*) {
+                       const std::size_t i = static_cast<std::size_t>(y) * test.width + x;
+                       result.map.values[i] = pixel_error(t, reference.at(i), cmax);
+                     });
   result.mean = masked_mean(result.map.values, test.width, test.height, mask);
   return result;
 }

@@ -144,6 +144,11 @@ void write_png_u8(const std::filesystem::path& path, int width, int height, int 
   // The data is not premultiplied (a LUT's alpha is just a fourth channel): without this the
   // PNG writer would divide the colour channels by alpha.
   spec.attribute("oiio:UnassociatedAlpha", 1);
+  // zlib level 1 with libpng's Sub filter: measured on a 2048x1536 frame, 78 ms and 1.56 MB
+  // against 520 ms and 1.18 MB for the defaults (level 6, adaptive filters); a sweep writes
+  // two such images per configuration, and the bytes are the same pixels either way.
+  spec.attribute("png:compressionLevel", 1);
+  spec.attribute("png:filter", 16);  // PNG_FILTER_SUB
   const bool ok = output->open(path.string(), spec) &&
                   output->write_image(OIIO::TypeDesc::UINT8, data.data()) && output->close();
   if (!ok) throw QualityError("cannot write '" + path.string() + "': " + output->geterror());

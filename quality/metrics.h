@@ -5,6 +5,8 @@
 #pragma once
 
 #include <cstddef>
+#include <glm/vec3.hpp>
+#include <vector>
 
 #include "quality/image.h"
 
@@ -21,6 +23,10 @@ double psnr(const Image& test, const Image& reference, const Mask* mask = nullpt
 // mean of the SSIM map over the mask; writes the full map to `map` if given.
 double ssim(const Image& test, const Image& reference, const Mask* mask = nullptr,
             ScalarMap* map = nullptr);
+
+// Mean of a per-pixel map over the mask (all pixels without one), as the metrics average
+// their maps: ssim(a, b, mask) == map_mean(m, mask) where ssim(a, b, nullptr, &m).
+double map_mean(const ScalarMap& map, const Mask* mask = nullptr);
 
 // Pixels per degree of visual angle for an observer `distance_m` from a monitor
 // `monitor_width_m` wide with `monitor_width_px` pixels across (small-angle approximation, as
@@ -40,6 +46,34 @@ struct FlipResult {
 
 FlipResult flip(const Image& test, const Image& reference, const Mask* mask = nullptr,
                 const FlipParams& params = {});
+
+// What FLIP derives from one of its two images per pixel: the filtered colour in
+// Hunt-adjusted L*a*b*, and the edge and point strengths.
+struct FlipPixel {
+  glm::dvec3 hunt_lab{0.0};
+  double edge = 0.0;
+  double point = 0.0;
+};
+
+// An image's FLIP pixels, computed once to compare many images with it (a sweep's reference,
+// the best frame of a group): flip(test, FlipFeatures(reference)) equals flip(test,
+// reference) to the last bit and filters only the test image. 40 bytes a pixel.
+class FlipFeatures {
+ public:
+  explicit FlipFeatures(const Image& image, const FlipParams& params = {});
+  int width() const { return width_; }
+  int height() const { return height_; }
+  const FlipParams& params() const { return params_; }
+  const FlipPixel& at(std::size_t pixel) const { return pixels_[pixel]; }
+
+ private:
+  int width_ = 0;
+  int height_ = 0;
+  FlipParams params_;
+  std::vector<FlipPixel> pixels_;
+};
+
+FlipResult flip(const Image& test, const FlipFeatures& reference, const Mask* mask = nullptr);
 
 // When a FLIP difference is visible. FLIP has no threshold of its own; skinsim calls a pixel
 // visibly different when its error exceeds what one just-noticeable lightness step

@@ -113,6 +113,16 @@ TEST(Ssim, MaskRestrictsTheStatistic) {
   }
   EXPECT_EQ(ssim(test, reference, &mask), 1.0);
   EXPECT_LT(ssim(test, reference), 0.9);
+  // The mask changes only the mean: one map gives both means, to the last bit.
+  ScalarMap map;
+  const double whole = ssim(test, reference, nullptr, &map);
+  EXPECT_EQ(whole, map_mean(map));
+  Mask half = Mask::filled(96, 64, 0);
+  for (int y = 0; y < 64; ++y) {
+    for (int x = 20; x < 70; ++x) half.values[y * 96 + x] = 1;
+  }
+  EXPECT_EQ(ssim(test, reference, &half), map_mean(map, &half));
+  EXPECT_LT(map_mean(map, &half), 0.95);
 }
 
 TEST(Flip, IdenticalImagesGiveZero) {
@@ -120,6 +130,22 @@ TEST(Flip, IdenticalImagesGiveZero) {
   const FlipResult result = flip(image, image);
   EXPECT_EQ(result.mean, 0.0);
   for (float v : result.map.values) ASSERT_EQ(v, 0.0f);
+}
+
+TEST(Flip, PreparedFeaturesGiveTheSameMapToTheLastBit) {
+  const Image reference = pattern_image(96, 64);
+  const Image test = add_noise(reference, 0.1f);
+  Mask mask = Mask::filled(96, 64, 0);
+  for (int y = 10; y < 50; ++y) {
+    for (int x = 5; x < 80; ++x) mask.values[y * 96 + x] = 1;
+  }
+  const FlipParams params{30.0};
+  const FlipResult direct = flip(test, reference, &mask, params);
+  const FlipResult prepared = flip(test, FlipFeatures(reference, params), &mask);
+  EXPECT_GT(direct.mean, 0.01);
+  EXPECT_EQ(prepared.mean, direct.mean);
+  EXPECT_EQ(prepared.map.values, direct.map.values);
+  EXPECT_THROW(flip(pattern_image(64, 64), FlipFeatures(reference)), QualityError);
 }
 
 TEST(Flip, DefaultPixelsPerDegreeIsThePapers) {

@@ -1,0 +1,10 @@
+#include "quality/metric_inputs.h"
+#include "quality/metrics.h"
+
+namespace skinsim::quality {
+
+double map_mean(const ScalarMap& map, const Mask* mask) {
+  return masked_mean(map.values, map.width, map.height, mask);
+}
+
+}  // namespace skinsim::quality
