@@ -5,7 +5,7 @@ compare the frame and the cost model's numbers with the files under tests/golden
 Usage: golden_test.py SKINSIM DATA_DIR OUT_DIR TECHNIQUE [--update]
        golden_test.py SKINSIM DATA_DIR OUT_DIR --coverage
 
-The frame is rendered with 1 and with 2 host threads; both must match the golden. Set
+The frame is rendered with 1, 2 and 8 host threads; each must match the golden. Set
 SKINSIM_UPDATE_GOLDEN=1 (or pass --update) to rewrite the goldens after an intended change.
 On a mismatch the new frame and a difference image are written to OUT_DIR/TECHNIQUE/.
 """
@@ -158,7 +158,7 @@ def check_technique(skinsim, data_dir, out_dir, technique, update):
     work_dir = os.path.join(out_dir, technique)
     renders = {threads: render(skinsim, technique, threads,
                                os.path.join(work_dir, f"threads{threads}"))
-               for threads in (1, 2)}
+               for threads in (1, 2, 8)}
     if update:
         write_golden(golden_dir, *renders[1])
         print(f"golden {technique}: updated {golden_dir}")
