@@ -65,6 +65,14 @@ class ExecTexUnit {
   glm::vec4 nearest(const Texture2D& tex, std::uint64_t base, int level, glm::vec2 uv);
   float shadow(const Texture2D& tex, std::uint64_t base, glm::vec3 coord, bool dependent);
   void count_sample(const Texture2D& tex, Filter filter, bool dependent);
+  // A bilinear sample's 2x2 texels (x0/x1, y0/y1 after wrapping) and blend weights.
+  struct Footprint {
+    const LevelView* level;
+    int x0, x1, y0, y1;
+    float ax, ay;
+  };
+  // Counts the footprint's texels and sends its distinct cache lines through the cache.
+  Footprint fetch_footprint(const Texture2D& tex, std::uint64_t base, int level, glm::vec2 uv);
   // `blend` false: count and cache the footprint only (its value is not needed).
   glm::vec4 bilinear(const Texture2D& tex, std::uint64_t base, int level, glm::vec2 uv, bool blend);
   void access_line(std::uint64_t address);  // one distinct cache line of a sample

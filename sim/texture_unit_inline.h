@@ -35,27 +35,29 @@ inline glm::vec4 ExecTexUnit::nearest(const Texture2D& tex, std::uint64_t base, 
   return l.at(x, y);
 }
 
-inline glm::vec4 ExecTexUnit::bilinear(const Texture2D& tex, std::uint64_t base, int level,
-                                       glm::vec2 uv, bool blend) {
+inline ExecTexUnit::Footprint ExecTexUnit::fetch_footprint(const Texture2D& tex, std::uint64_t base,
+                                                           int level, glm::vec2 uv) {
   const LevelView& l = tex.level(level);
   const Wrap wrap = tex.sampler().wrap;
   const filtering::FloorSplit f = filtering::floor_split(
       uv * glm::vec2(static_cast<float>(l.width), static_cast<float>(l.height)) - 0.5f);
-  const float ax = f.fraction_x, ay = f.fraction_y;
-  const int x0 = filtering::wrap_coord(f.x, l.width, wrap);
-  const int x1 = filtering::wrap_coord(f.x + 1, l.width, wrap);
-  const int y0 = filtering::wrap_coord(f.y, l.height, wrap);
-  const int y1 = filtering::wrap_coord(f.y + 1, l.height, wrap);
+  const Footprint fp{&l,
+                     filtering::wrap_coord(f.x, l.width, wrap),
+                     filtering::wrap_coord(f.x + 1, l.width, wrap),
+                     filtering::wrap_coord(f.y, l.height, wrap),
+                     filtering::wrap_coord(f.y + 1, l.height, wrap),
+                     f.fraction_x,
+                     f.fraction_y};
 
   // The 2x2 footprint's texel addresses in the twiddled layout, and the distinct cache lines
   // among them, looked up in footprint order (usually one: a 64-byte line holds a 4x4
   // RGBA8 block).
   const std::uint64_t level_base = base + tex.level_offset(level);
   const std::uint64_t bpp = tex.texel_bytes();
-  const std::uint64_t sx0 = morton_spread(static_cast<std::uint32_t>(x0));
-  const std::uint64_t sy0 = morton_spread(static_cast<std::uint32_t>(y0)) << 1;
-  const std::uint64_t sx1 = filtering::spread_next(sx0, x0, x1);
-  const std::uint64_t sy1 = filtering::spread_next(sy0 >> 1, y0, y1) << 1;
+  const std::uint64_t sx0 = morton_spread(static_cast<std::uint32_t>(fp.x0));
+  const std::uint64_t sy0 = morton_spread(static_cast<std::uint32_t>(fp.y0)) << 1;
+  const std::uint64_t sx1 = filtering::spread_next(sx0, fp.x0, fp.x1);
+  const std::uint64_t sy1 = filtering::spread_next(sy0 >> 1, fp.y0, fp.y1) << 1;
   const std::uint64_t a00 = level_base + (sx0 | sy0) * bpp, a10 = level_base + (sx1 | sy0) * bpp;
   const std::uint64_t a01 = level_base + (sx0 | sy1) * bpp, a11 = level_base + (sx1 | sy1) * bpp;
   const std::uint64_t l00 = cache_->line_of(a00), l10 = cache_->line_of(a10);
@@ -65,11 +67,17 @@ inline glm::vec4 ExecTexUnit::bilinear(const Texture2D& tex, std::uint64_t base,
   if (l10 != l00) access_line(a10);
   if (l01 != l00 && l01 != l10) access_line(a01);
   if (l11 != l00 && l11 != l10 && l11 != l01) access_line(a11);
-  if (!blend) return glm::vec4(0.0f);
+  return fp;
+}
 
-  const glm::vec4* row0 = l.texels + static_cast<size_t>(y0) * l.width;
-  const glm::vec4* row1 = l.texels + static_cast<size_t>(y1) * l.width;
-  return glm::mix(glm::mix(row0[x0], row0[x1], ax), glm::mix(row1[x0], row1[x1], ax), ay);
+inline glm::vec4 ExecTexUnit::bilinear(const Texture2D& tex, std::uint64_t base, int level,
+                                       glm::vec2 uv, bool blend) {
+  const Footprint f = fetch_footprint(tex, base, level, uv);
+  if (!blend) return glm::vec4(0.0f);
+  const glm::vec4* row0 = f.level->texels + static_cast<size_t>(f.y0) * f.level->width;
+  const glm::vec4* row1 = f.level->texels + static_cast<size_t>(f.y1) * f.level->width;
+  return glm::mix(glm::mix(row0[f.x0], row0[f.x1], f.ax), glm::mix(row1[f.x0], row1[f.x1], f.ax),
+                  f.ay);
 }
 
 inline void ExecTexUnit::count_sample(const Texture2D& tex, Filter filter, bool dependent) {
@@ -94,19 +102,11 @@ inline float ExecTexUnit::shadow(const Texture2D& tex, std::uint64_t base, glm::
     return coord.z <= nearest(tex, base, 0, uv).x ? 1.0f : 0.0f;
   }
   count_sample(tex, Filter::kBilinear, dependent);
-  bilinear(tex, base, 0, uv, false);  // the footprint's cache traffic
-  const LevelView& l = tex.level(0);
-  const Wrap wrap = tex.sampler().wrap;
-  const filtering::FloorSplit f = filtering::floor_split(
-      uv * glm::vec2(static_cast<float>(l.width), static_cast<float>(l.height)) - 0.5f);
-  const int x0 = filtering::wrap_coord(f.x, l.width, wrap);
-  const int x1 = filtering::wrap_coord(f.x + 1, l.width, wrap);
-  const int y0 = filtering::wrap_coord(f.y, l.height, wrap);
-  const int y1 = filtering::wrap_coord(f.y + 1, l.height, wrap);
-  const auto lit = [&](int x, int y) { return coord.z <= l.at(x, y).x ? 1.0f : 0.0f; };
-  const float top = lit(x0, y0) + (lit(x1, y0) - lit(x0, y0)) * f.fraction_x;
-  const float bottom = lit(x0, y1) + (lit(x1, y1) - lit(x0, y1)) * f.fraction_x;
-  return top + (bottom - top) * f.fraction_y;
+  const Footprint f = fetch_footprint(tex, base, 0, uv);
+  const auto lit = [&](int x, int y) { return coord.z <= f.level->at(x, y).x ? 1.0f : 0.0f; };
+  const float top = lit(f.x0, f.y0) + (lit(f.x1, f.y0) - lit(f.x0, f.y0)) * f.ax;
+  const float bottom = lit(f.x0, f.y1) + (lit(f.x1, f.y1) - lit(f.x0, f.y1)) * f.ax;
+  return top + (bottom - top) * f.ay;
 }
 
 inline glm::vec4 ExecTexUnit::filtered(const Texture2D& tex, std::uint64_t base, glm::vec2 uv,
