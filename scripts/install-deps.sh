@@ -10,6 +10,8 @@ packages=(
   libembree-dev  # ray casting: the reference's shadows and the thickness bake
   libvtk9-dev xvfb xauth
   glslang-tools  # glslangValidator checks the exported GLSL ES in the tests
+  # Mesa llvmpipe through EGL/GLES: the speed anchor (bench/, scripts/bench_vs_llvmpipe.py)
+  libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
   python3  # the budget CLI test parses JUnit XML with its standard library
   slurmctld slurmd slurm-client munge  # tests/slurm: a throwaway single-node Slurm cluster
   chromium  # tests/reports: report.html checked in a real (headless) browser
