@@ -30,6 +30,13 @@ std::string ms3(double ms) {
   return fmt::format("{:.3f}", ms);
 }
 
+// A signed difference with `decimals` digits; one that rounds to zero prints as +0, not -0.
+std::string signed_fixed(double value, int decimals) {
+  std::string text = fmt::format("{:+.{}f}", value, decimals);
+  if (text.find_first_not_of("+-0.") == std::string::npos) text[0] = '+';
+  return text;
+}
+
 nlohmann::json optional_json(const std::optional<double>& v) {
   return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
 }
@@ -192,9 +199,9 @@ std::string format_validation(const Validation& v) {
     std::string error_pct = "-";
     std::string inside = "-";
     if (r.compared()) {
-      error_ms = fmt::format("{:+.3f}", r.error_ms());
+      error_ms = signed_fixed(r.error_ms(), 3);
       const std::optional<double> pct = r.error_percent();
-      error_pct = pct ? fmt::format("{:+.1f}", *pct) : "n/a";
+      error_pct = pct ? signed_fixed(*pct, 1) : "n/a";
       inside = r.inside() ? "yes" : "NO";
     } else if (r.model && !r.measured_ms) {
       inside = "unmeasured";
@@ -227,9 +234,10 @@ std::string format_validation(const Validation& v) {
   std::string frame_verdict;
   if (v.frame.compared()) {
     const std::optional<double> pct = v.frame.error_percent();
-    frame_verdict = fmt::format("; the frame is {} its range, measured - model {:+.3f} ms{}",
-                                v.frame.inside() ? "inside" : "OUTSIDE", v.frame.error_ms(),
-                                pct ? fmt::format(" ({:+.1f}%)", *pct) : "");
+    frame_verdict =
+        fmt::format("; the frame is {} its range, measured - model {} ms{}",
+                    v.frame.inside() ? "inside" : "OUTSIDE", signed_fixed(v.frame.error_ms(), 3),
+                    pct ? fmt::format(" ({}%)", signed_fixed(*pct, 1)) : "");
   }
   out += fmt::format("{} of {} compared rows inside the modelled range{}\n",
                      v.compared() - v.outside(), v.compared(), frame_verdict);

@@ -272,6 +272,22 @@ TEST(ValidateCompare, DramWaitIsARowWhenTheFrameIsBandwidthBound) {
   EXPECT_DOUBLE_EQ(v.frame.error_ms(), -1.0);
 }
 
+TEST(ValidateCompare, ADifferenceThatRoundsToZeroPrintsPlusZero) {
+  const HandFrame f;
+  const std::string table = format_validation(f.compare("a,1.9999\nb,3.0001\n"));
+  EXPECT_EQ(table.find(" -0.000"), std::string::npos) << table;
+  EXPECT_EQ(table.find(" -0.0 "), std::string::npos) << table;
+  EXPECT_NE(table.find("+0.000"), std::string::npos) << table;
+}
+
+// The shipped example is a valid measurements file (its numbers are the model's own output).
+TEST(ValidateParse, TheShippedExampleParses) {
+  const Measurements m = read_measurements(std::string(SKINSIM_TEST_DATA_DIR) +
+                                           "/measurements/example-ipad4-model-output.csv");
+  EXPECT_EQ(m.passes.size(), 5u);
+  EXPECT_TRUE(m.frame.has_value());
+}
+
 TEST(ValidateCompare, ZeroModelTimeHasNoPercentage) {
   HandFrame f;
   f.timing.schedule[0].exposed_ms = 0.0;
