@@ -1,6 +1,7 @@
 """Adversarial CLI input: every numeric option of `skinsim run` given a value that is not a
 plain finite number in range must exit 2 with a message naming the option (or its knob), and
-must never render. Also the raw-argument checks: `--opt=` with no value, unknown subcommands,
+must never render; `skinsim validate`'s measurements file, whatever it holds or is (binary,
+a FIFO, a device, a directory), exits 2 naming it. Also the raw-argument checks: `--opt=` with no value, unknown subcommands,
 and a non-UTF-8 scene path that must not crash the JSON step.
 Usage: adversarial_cli_test.py SKINSIM WORK_DIR"""
 import concurrent.futures
@@ -78,6 +79,28 @@ if code != 2 or "unknown subcommand 'rnu'" not in out or "run" not in out:
 # Nothing above may have rendered.
 if pathlib.Path(OUT).exists():
     failures.append(f"a rejected run wrote {OUT}")
+
+# `validate`: its knob options are run's (bad values exit 2 naming the option, before any
+# rendering), and its measurements file is refused readably whatever it holds or is.
+good_csv = WORK / "measured.csv"
+good_csv.write_text("skin,1\n")
+for option, names in list(NUMERIC_OPTIONS.items())[:6]:
+    expect_bad_input(["validate", str(good_csv), option, "nan"], names)
+bad_files = {
+    "binary.csv": (b"\x00\xff\xfe\x01,2\n", ["binary.csv:1"]),
+    "garbage.csv": (bytes(range(1, 256)) * 4, ["garbage.csv:1"]),
+    "huge_number.csv": (b"skin,1e999\n", ["huge_number.csv:1: field 'ms'"]),
+    "negative_zero_header.csv": (b"pass,ms\nskin,-0.0001\n", ["negative_zero_header.csv:2"]),
+    "crlf_quoted.csv": (b'skin,1\r\n"blur_h",2\r\n', ["crlf_quoted.csv:2"]),
+}
+for name, (content, names) in bad_files.items():
+    (WORK / name).write_bytes(content)
+    expect_bad_input(["validate", str(WORK / name), "--resolution", "64x48"], names)
+fifo = WORK / "measured.fifo"
+os.mkfifo(fifo)
+expect_bad_input(["validate", str(fifo)], [str(fifo)])
+expect_bad_input(["validate", "/dev/zero"], ["/dev/zero"])
+expect_bad_input(["validate", str(WORK)], [str(WORK)])
 
 # A scene path that is not UTF-8 renders and writes valid JSON (invalid bytes replaced).
 lee = os.environ.get("SKINSIM_TEST_LEE", "")
