@@ -1,10 +1,11 @@
 #include "driver/sweep_run.h"
 
 #include <fmt/format.h>
-#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -19,6 +20,7 @@
 #include "driver/sweep_config_result.h"
 #include "driver/sweep_progress.h"
 #include "driver/sweep_reference.h"
+#include "gpu_model/device_profile.h"
 #include "gpu_model/profile_loader.h"
 #include "io/atomic_file.h"
 #include "io/read_file.h"
@@ -89,11 +91,9 @@ std::string non_finite_figure(const reports::ConfigResult& row) {
 // Renders, times and measures one configuration and writes its files; the JSON goes last, so
 // a configuration counts as finished only once all its files are in place. Throws SweepError
 // when a figure is not a finite number.
-void compute(const fs::path& dir, const Job& job) {
+void compute(const fs::path& dir, const Job& job, int frame_threads) {
   const std::string& id = job.config->id;
-  // One host thread per frame: the configurations themselves run in parallel, and the
-  // emulator's results do not depend on its thread count.
-  const FrameResult frame = run_frame(*job.scene, job.resolved, *job.device, 1);
+  const FrameResult frame = run_frame(*job.scene, job.resolved, *job.device, frame_threads);
   const FrameQuality measured = evaluate_quality(frame.output.frame, *job.reference);
   write_png(frame.output.frame, dir / config_frame_path(id));
   quality::save_png(measured.error_map, dir / config_error_path(id));
@@ -105,6 +105,22 @@ void compute(const fs::path& dir, const Job& job) {
   stored.heatmap = pass_heatmap(frame, kHeatmapPass, id);
   add_sensitivity(frame, *job.device, stored);
   io::write_file_atomically((dir / config_json_path(id)).string(), to_json(stored).dump(1) + "\n");
+}
+
+// How many frames are emulated at once, and with how many host threads each. A frame uses
+// at most one host thread per emulated core (one host task per core keeps each core's
+// texture cache deterministic; docs/performance.md), so only a host with more threads than
+// the device has cores runs several frames at once. One frame at a time otherwise: the same
+// speed (a frame scales with its threads up to the cores) and the memory of one frame's
+// render targets, not several (about 330 MB at 2048x1536, scale 1).
+struct InFlight {
+  int frames = 1;
+  int frame_threads = 1;
+};
+InFlight in_flight(const std::vector<Job>& jobs, int threads) {
+  int cores = 1;
+  for (const Job& job : jobs) cores = std::max(cores, gpu_model::sim_parameters(*job.device).cores);
+  return {std::max(1, threads / cores), std::clamp(threads, 1, cores)};
 }
 
 // What a configuration is expected to cost the host, for balancing shards: its output pixels
@@ -231,33 +247,35 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
   std::mutex mutex;
   std::map<std::size_t, std::string> failures;  // by job index: expansion order
   std::atomic<int> not_run{0};
+  const auto run_job = [&](std::size_t i, int frame_threads) {
+    if (cancelled(options) || !jobs[i].reference) {
+      ++not_run;
+      return;
+    }
+    const Clock::time_point t0 = Clock::now();
+    try {
+      compute(dir, jobs[i], frame_threads);
+    } catch (const UserError& e) {
+      // One configuration that cannot be measured (a figure that is not a finite number) is
+      // reported with its reason; the others still run.
+      const std::lock_guard lock(mutex);
+      failures[i] = e.what();
+      return;
+    }
+    progress.finished(jobs[i].config->id, seconds_since(t0));
+    const std::lock_guard lock(mutex);
+    summary.computed.push_back(jobs[i].config->id);
+    if (options.on_finished) options.on_finished(jobs[i].config->id);
+  };
+  const InFlight plan = in_flight(jobs, arena.max_concurrency());
   progress.start_configs();
   arena.execute([&] {
-    tbb::parallel_for(
-        tbb::blocked_range<std::size_t>(0, jobs.size(), 1),
-        [&](const tbb::blocked_range<std::size_t>& range) {
-          for (std::size_t i = range.begin(); i != range.end(); ++i) {
-            if (cancelled(options) || !jobs[i].reference) {
-              ++not_run;
-              continue;
-            }
-            const Clock::time_point t0 = Clock::now();
-            try {
-              compute(dir, jobs[i]);
-            } catch (const UserError& e) {
-              // One configuration that cannot be measured (a figure that is not a finite
-              // number) is reported with its reason; the others still run.
-              const std::lock_guard lock(mutex);
-              failures[i] = e.what();
-              continue;
-            }
-            progress.finished(jobs[i].config->id, seconds_since(t0));
-            const std::lock_guard lock(mutex);
-            summary.computed.push_back(jobs[i].config->id);
-            if (options.on_finished) options.on_finished(jobs[i].config->id);
-          }
-        },
-        tbb::simple_partitioner());
+    // `plan.frames` lanes, each taking the next configuration until none is left; a frame's
+    // quality metrics use whatever threads of the arena are free.
+    std::atomic<std::size_t> next{0};
+    tbb::parallel_for(0, plan.frames, [&](int) {
+      for (std::size_t i = next++; i < jobs.size(); i = next++) run_job(i, plan.frame_threads);
+    });
   });
   progress.close();
   summary.not_run = not_run.load();
