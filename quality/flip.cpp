@@ -2,8 +2,11 @@
 // "FLIP: A Difference Evaluator for Alternating Images", HPG 2020, with the constants of the
 // paper and its reference implementation (github.com/NVlabs/flip). Convolutions clamp at the
 // image border (the reference's C++ code does the same).
+#include <tbb/parallel_for.h>
+
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <span>
 #include <string>
@@ -244,15 +247,56 @@ float pixel_error(const FlipPixel& t, const FlipPixel& r, double cmax) {
   return static_cast<float>(std::pow(colour, 1.0 - feature_error));
 }
 
-// Streams `images` (one or two) through their filters and hands `sink` each row's FLIP pixels:
-// sink(y, x, pixel of images[0], pixel of images[1] or nullptr).
+// Which pixels of `a` may differ from `b` after filters `radius` wide: those with a pixel
+// where the images differ within `radius` along x and along y. Elsewhere every filter reads
+// the same values in the same order, so both images' FLIP pixels are equal bit for bit and
+// the error is exactly 0 (the images' borders clamp to pixels inside the same window).
+std::vector<std::uint8_t> near_differences(const Image& a, const Image& b, int radius) {
+  const int w = a.width, h = a.height;
+  std::vector<std::uint8_t> across(a.pixel_count(), 0);  // a difference within radius along x
+  tbb::parallel_for(0, h, [&](int y) {
+    const std::size_t row = static_cast<std::size_t>(y) * w;
+    int last = -radius - 1;  // the last differing x at or before the window's right end
+    for (int x = 0; x < w + radius; ++x) {
+      if (x < w && a.rgb[row + x] != b.rgb[row + x]) last = x;
+      if (x - radius >= 0 && last >= x - 2 * radius) across[row + x - radius] = 1;
+    }
+  });
+  std::vector<std::uint8_t> near(a.pixel_count(), 0);
+  tbb::parallel_for(0, w, [&](int x) {
+    int last = -radius - 1;
+    for (int y = 0; y < h + radius; ++y) {
+      if (y < h && across[static_cast<std::size_t>(y) * w + x]) last = y;
+      if (y - radius >= 0 && last >= y - 2 * radius) {
+        near[static_cast<std::size_t>(y - radius) * w + x] = 1;
+      }
+    }
+  });
+  return near;
+}
+
+// Streams `images` (one or two) through their filters and hands `sink` the FLIP pixels:
+// sink(y, x, pixel of images[0], pixel of images[1] or nullptr). With `unchanged_from`, only
+// pixels near a difference between images[0] and it (near_differences) reach the sink.
 template <class Sink>
-void stream_flip_pixels(std::span<const Image* const> images, double ppd, const Sink& sink) {
+void stream_flip_pixels(std::span<const Image* const> images, double ppd,
+                        const Image* unchanged_from, const Sink& sink) {
   const FeatureKernels features = feature_kernels(ppd);
   const int count = static_cast<int>(images.size());
   SeparableStream stream{images[0]->width, images[0]->height, count * kSourcesPerImage, {}, {}};
   std::vector<ImageOutputs> outputs;
   for (int i = 0; i < count; ++i) outputs.push_back(add_image_filters(stream, i, ppd, features));
+  std::vector<std::uint8_t> near;
+  if (unchanged_from != nullptr) {
+    int radius = 0;
+    for (const RowFilter& f : stream.row_filters) {
+      radius = std::max(radius, static_cast<int>(f.kernel.size() / 2));
+    }
+    for (const ColumnFilter& f : stream.column_filters) {
+      radius = std::max(radius, static_cast<int>(f.kernel.size() / 2));
+    }
+    near = near_differences(*images[0], *unchanged_from, radius);
+  }
   const SrgbDecoder decode;
   const auto source = [&](int y, std::span<float* const> rows) {
     for (int i = 0; i < count; ++i) {
@@ -260,7 +304,9 @@ void stream_flip_pixels(std::span<const Image* const> images, double ppd, const 
     }
   };
   const auto row_sink = [&](int y, std::span<const float* const> filtered) {
+    const std::size_t row = static_cast<std::size_t>(y) * stream.width;
     for (int x = 0; x < stream.width; ++x) {
+      if (!near.empty() && !near[row + x]) continue;
       const FlipPixel first = pixel_features(outputs[0], filtered, x);
       if (count == 1) {
         sink(y, x, first, nullptr);
@@ -282,7 +328,8 @@ FlipResult flip(const Image& test, const Image& reference, const Mask* mask,
   FlipResult result;
   result.map = ScalarMap{test.width, test.height, std::vector<float>(test.pixel_count())};
   const std::array<const Image*, 2> images{&test, &reference};
-  stream_flip_pixels(images, checked_pixels_per_degree(params),
+  // The map starts at 0, the error wherever the images do not differ nearby.
+  stream_flip_pixels(images, checked_pixels_per_degree(params), &reference,
                      [&](int y, int x, const FlipPixel& t, const FlipPixel* r) {
                        result.map.values[static_cast<std::size_t>(y) * test.width + x] =
                            pixel_error(t, *r, cmax);
@@ -292,13 +339,13 @@ FlipResult flip(const Image& test, const Image& reference, const Mask* mask,
 }
 
 FlipFeatures::FlipFeatures(const Image& image, const FlipParams& params)
-    : width_(image.width), height_(image.height), params_(params) {
+    : image_(image), params_(params) {
   check_metric_inputs("FLIP", image, image, nullptr);
   pixels_.resize(image.pixel_count());
   const std::array<const Image*, 1> images{&image};
-  stream_flip_pixels(images, checked_pixels_per_degree(params),
+  stream_flip_pixels(images, checked_pixels_per_degree(params), nullptr,
                      [&](int y, int x, const FlipPixel& p, const FlipPixel*) {
-                       pixels_[static_cast<std::size_t>(y) * width_ + x] = p;
+                       pixels_[static_cast<std::size_t>(y) * image_.width + x] = p;
                      });
 }
 
@@ -314,7 +361,7 @@ FlipResult flip(const Image& test, const FlipFeatures& reference, const Mask* ma
   FlipResult result;
   result.map = ScalarMap{test.width, test.height, std::vector<float>(test.pixel_count())};
   const std::array<const Image*, 1> images{&test};
-  stream_flip_pixels(images, checked_pixels_per_degree(reference.params()),
+  stream_flip_pixels(images, checked_pixels_per_degree(reference.params()), &reference.image(),
                      [&](int y, int x, const FlipPixel& t, const FlipPixel*) {
                        const std::size_t i = static_cast<std::size_t>(y) * test.width + x;
                        result.map.values[i] = pixel_error(t, reference.at(i), cmax);

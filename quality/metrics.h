@@ -57,18 +57,18 @@ struct FlipPixel {
 
 // An image's FLIP pixels, computed once to compare many images with it (a sweep's reference,
 // the best frame of a group): flip(test, FlipFeatures(reference)) equals flip(test,
-// reference) to the last bit and filters only the test image. 40 bytes a pixel.
+// reference) to the last bit and filters only the test image. 52 bytes a pixel.
 class FlipFeatures {
  public:
   explicit FlipFeatures(const Image& image, const FlipParams& params = {});
-  int width() const { return width_; }
-  int height() const { return height_; }
+  int width() const { return image_.width; }
+  int height() const { return image_.height; }
+  const Image& image() const { return image_; }  // kept: where a test equals it, error is 0
   const FlipParams& params() const { return params_; }
   const FlipPixel& at(std::size_t pixel) const { return pixels_[pixel]; }
 
  private:
-  int width_ = 0;
-  int height_ = 0;
+  Image image_;
   FlipParams params_;
   std::vector<FlipPixel> pixels_;
 };

@@ -148,6 +148,25 @@ TEST(Flip, PreparedFeaturesGiveTheSameMapToTheLastBit) {
   EXPECT_THROW(flip(pattern_image(64, 64), FlipFeatures(reference)), QualityError);
 }
 
+TEST(Flip, OneChangedPixelReachesExactlyTheFiltersRadius) {
+  // At the default 67 pixels per degree the widest filters (the CSFs) reach 10 pixels: the
+  // error is above 0 out to 10 pixels from a changed pixel, along each axis and at the
+  // corner, and exactly 0 beyond (where FLIP skips the pixels whose windows are identical).
+  const Image reference = Image::filled(64, 64, glm::vec3(0.5f));
+  Image test = reference;
+  test.at(32, 32) = glm::vec3(0.9f, 0.2f, 0.4f);
+  for (const FlipResult& r : {flip(test, reference), flip(test, FlipFeatures(reference))}) {
+    const auto at = [&](int x, int y) { return r.map.values[y * 64 + x]; };
+    EXPECT_GT(at(32, 32), 0.1f);
+    EXPECT_GT(at(42, 32), 0.0f);
+    EXPECT_GT(at(32, 22), 0.0f);
+    EXPECT_GT(at(42, 42), 0.0f);
+    EXPECT_EQ(at(43, 32), 0.0f);
+    EXPECT_EQ(at(32, 21), 0.0f);
+    EXPECT_EQ(at(43, 43), 0.0f);
+  }
+}
+
 TEST(Flip, DefaultPixelsPerDegreeIsThePapers) {
   EXPECT_NEAR(FlipParams{}.pixels_per_degree, 67.0206, 1e-3);
 }
