@@ -5,7 +5,8 @@ compare the frame and the cost model's numbers with the files under tests/golden
 Usage: golden_test.py SKINSIM DATA_DIR OUT_DIR TECHNIQUE [--update]
        golden_test.py SKINSIM DATA_DIR OUT_DIR --coverage
 
-The frame is rendered with 1, 2 and 8 host threads; each must match the golden. Set
+The frame is rendered with 1, 2 and 8 host threads (SKINSIM_GOLDEN_THREADS, e.g. "2", picks
+others: the sanitizer stage of scripts/test.sh renders once); each must match the golden. Set
 SKINSIM_UPDATE_GOLDEN=1 (or pass --update) to rewrite the goldens after an intended change.
 On a mismatch the new frame and a difference image are written to OUT_DIR/TECHNIQUE/.
 """
@@ -153,14 +154,25 @@ def write_golden(golden_dir, numbers, png):
         f.write("\n")
 
 
+def golden_thread_counts():
+    text = os.environ.get("SKINSIM_GOLDEN_THREADS", "1,2,8")
+    try:
+        counts = [int(t) for t in text.split(",")]
+    except ValueError:
+        counts = []
+    if not counts or min(counts) < 1:
+        sys.exit(f"SKINSIM_GOLDEN_THREADS: expected thread counts like 1,2,8, got {text!r}")
+    return counts
+
+
 def check_technique(skinsim, data_dir, out_dir, technique, update):
     golden_dir = os.path.join(data_dir, technique)
     work_dir = os.path.join(out_dir, technique)
     renders = {threads: render(skinsim, technique, threads,
                                os.path.join(work_dir, f"threads{threads}"))
-               for threads in (1, 2, 8)}
+               for threads in golden_thread_counts()}
     if update:
-        write_golden(golden_dir, *renders[1])
+        write_golden(golden_dir, *renders[min(renders)])
         print(f"golden {technique}: updated {golden_dir}")
     try:
         with open(os.path.join(golden_dir, "counters.json")) as f:
