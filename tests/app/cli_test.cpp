@@ -10,25 +10,13 @@
 #include <set>
 #include <string>
 
+#include "tests/app/run_skinsim.h"
 #include "tests/scene/gltf_fixture.h"
 
 namespace {
 
-struct Result {
-  int exit_code;
-  std::string output;  // stdout + stderr
-};
-
-Result run(const std::string& args) {
-  const std::string command = std::string(SKINSIM_EXE) + " " + args + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  EXPECT_NE(pipe, nullptr);
-  std::string output;
-  std::array<char, 4096> buffer{};
-  while (fgets(buffer.data(), buffer.size(), pipe)) output += buffer.data();
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-}
+using skinsim::test::Result;
+using skinsim::test::run;
 
 std::filesystem::path temp_dir(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() / ("skinsim_cli_" + name);

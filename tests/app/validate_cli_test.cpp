@@ -14,25 +14,14 @@
 #include <sstream>
 #include <string>
 
+#include "tests/app/run_skinsim.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int exit_code;
-  std::string output;  // stdout + stderr
-};
-
-Result run(const std::string& args) {
-  const std::string command = std::string(SKINSIM_EXE) + " " + args + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  EXPECT_NE(pipe, nullptr);
-  std::string output;
-  std::array<char, 4096> buffer{};
-  while (fgets(buffer.data(), buffer.size(), pipe)) output += buffer.data();
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-}
+using skinsim::test::Result;
+using skinsim::test::run;
 
 // The configuration both commands model: small, so the test is quick.
 const std::string kConfig = " --resolution 256x192 --texture-size 128 --threads 2";
