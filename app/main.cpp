@@ -92,6 +92,7 @@ int main(int argc, char** argv) {
   add(skinsim::app::add_knobs_command(app));
   add(skinsim::app::add_compare_command(app));
   add(skinsim::app::add_validate_command(app));
+  add(skinsim::app::add_export_command(app));
   const int parsed = report_errors("skinsim", [&] {  // knobs validate as they are parsed
     check_raw_arguments(app, argc, argv);
     try {

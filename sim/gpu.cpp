@@ -72,6 +72,7 @@ PassCounters Gpu::execute(const RenderPassDesc& pass) {
       }
     }
   }
+  if (capture_) capture_(pass);
   PassCounters result;
   arena_->execute([&] { result = execute_impl(pass); });
   return result;

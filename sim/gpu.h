@@ -3,6 +3,7 @@
 
 #include <tbb/task_arena.h>
 
+#include <functional>
 #include <memory>
 
 #include "sim/counters.h"
@@ -25,11 +26,18 @@ class Gpu {
   // and per-tile counters are summed in tile order.
   PassCounters execute(const RenderPassDesc& pass);
 
+  // Called with every pass before it runs, as a GPU debugger captures a frame (`skinsim
+  // export` describes the frame from it).
+  void set_pass_capture(std::function<void(const RenderPassDesc&)> capture) {
+    capture_ = std::move(capture);
+  }
+
  private:
   PassCounters execute_impl(const RenderPassDesc& pass);
 
   GpuConfig config_;
   std::unique_ptr<tbb::task_arena> arena_;
+  std::function<void(const RenderPassDesc&)> capture_;
 };
 
 // Emulated core a tile is dispatched to: tiles in row-major order, dealt round-robin. The

@@ -1,6 +1,7 @@
 // Shader programs as the GPU runs them. A shader is a struct with a name, a Uniforms type
 // and templated `vertex`/`fragment` functions (see pipeline/shaders/); the wrappers here
-// instantiate it for execution and record its op profile once from the same code.
+// instantiate it for execution, record its op profile once and emit it as GLSL ES on
+// request, all from the same code.
 #pragma once
 
 #include <algorithm>
@@ -12,6 +13,12 @@
 
 namespace skinsim::sim {
 
+// A program as GLSL ES source, with what it declares (attributes, samplers, uniforms).
+struct GlslShader {
+  std::string source;
+  GlslInterface interface;
+};
+
 class VertexProgram {
  public:
   virtual ~VertexProgram() = default;
@@ -20,6 +27,8 @@ class VertexProgram {
   // Varying floats this program writes per vertex (the parameter-buffer payload).
   int varying_floats() const { return varying_floats_; }
   virtual void run(const ExecVertexIn& in, ExecVertexOut& out) const = 0;
+  // The same program as GLSL ES source, uniforms inlined as constants (docs/shaders.md).
+  virtual GlslShader glsl(sl::GlslDialect dialect) const = 0;
 
  protected:
   std::string name_;
@@ -33,6 +42,7 @@ class FragmentProgram {
   const std::string& name() const { return name_; }
   const OpProfile& profile() const { return profile_; }
   virtual glm::vec4 shade(const ExecFragIn& in, ExecTexUnit& tex) const = 0;
+  virtual GlslShader glsl(sl::GlslDialect dialect) const = 0;
 
  protected:
   std::string name_;
@@ -59,6 +69,14 @@ class VertexProgramOf final : public VertexProgram {
   void run(const ExecVertexIn& in, ExecVertexOut& out) const override {
     Shader::template vertex<Exec>(in, out, uniforms_);
   }
+  GlslShader glsl(sl::GlslDialect dialect) const override {
+    sl::GlslEmitter body(dialect);
+    GlslInterface io;
+    EmitVertexIn in(&io);
+    EmitVertexOut out(&io);
+    Shader::template vertex<Emit>(in, out, uniforms_);
+    return {glsl_vertex_shader(io, body, out.position.expr, dialect), io};
+  }
 
  private:
   typename Shader::Uniforms uniforms_;
@@ -81,6 +99,14 @@ class FragmentProgramOf final : public FragmentProgram {
   }
   glm::vec4 shade(const ExecFragIn& in, ExecTexUnit& tex) const override {
     return Shader::template fragment<Exec>(in, tex, uniforms_);
+  }
+  GlslShader glsl(sl::GlslDialect dialect) const override {
+    sl::GlslEmitter body(dialect);
+    GlslInterface io;
+    EmitFragIn in(&io);
+    EmitTexUnit tex(&io);
+    const sl::EVec<4> colour = Shader::template fragment<Emit>(in, tex, uniforms_);
+    return {glsl_fragment_shader(io, body, colour.expr, dialect), io};
   }
 
  private:

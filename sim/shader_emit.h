@@ -7,21 +7,29 @@
 // Operations whose operands are all constants fold to a literal exactly as Count
 // folds them (so the emitted code has the ops the op profile counts).
 //
-// This is the emitter core only (docs/shaders.md): it is not yet wired into VertexProgramOf /
-// FragmentProgramOf, shader_io, or a `skinsim export` command (see issue 18).
+// The shader's inputs, outputs and texture reads are spelled by sim/shader_emit_io.h; the
+// program wrappers (sim/program.h) assemble whole shaders from a body and its interface.
 
 #include <cmath>
 #include <glm/glm.hpp>
+#include <set>
 #include <string>
 #include <vector>
 
 namespace skinsim::sim::sl {
 
+// The GLSL ES version a body is emitted for: 1.00 (OpenGL ES 2.0, the iPad 4's API, with
+// the extensions its GPU has) or 3.00 (OpenGL ES 3.0, where those are core).
+enum class GlslDialect : std::uint8_t { kEs100, kEs300 };
+
 // Collects the statements of one shader body. Nests like OpRecorder: the
 // innermost live emitter receives statements.
 class GlslEmitter {
  public:
-  GlslEmitter() : previous_(current_) { current_ = this; }
+  explicit GlslEmitter(GlslDialect dialect = GlslDialect::kEs100)
+      : previous_(current_), dialect_(dialect) {
+    current_ = this;
+  }
   ~GlslEmitter() { current_ = previous_; }
   GlslEmitter(const GlslEmitter&) = delete;
   GlslEmitter& operator=(const GlslEmitter&) = delete;
@@ -32,19 +40,69 @@ class GlslEmitter {
   // Appends a raw statement (e.g. `gl_FragColor = t3;`).
   static void statement(const std::string& text);
 
+  // The dialect of the live emitter (ES 1.00 without one).
+  static GlslDialect dialect() { return current_ ? current_->dialect_ : GlslDialect::kEs100; }
+  // Notes an ES 1.00 extension the body uses (none is needed in ES 3.00).
+  static void require_extension(const char* name) {
+    if (current_ && current_->dialect_ == GlslDialect::kEs100) current_->extensions_.insert(name);
+  }
+
   // The body, one statement a line, each indented by `indent` spaces.
   std::string body(int indent = 2) const;
+  const std::set<std::string>& extensions() const { return extensions_; }
 
  private:
   static inline thread_local GlslEmitter* current_ = nullptr;
   GlslEmitter* previous_;
+  GlslDialect dialect_;
   std::vector<std::string> lines_;
+  std::set<std::string> extensions_;
   int next_temp_ = 0;
 };
 
 // GLSL spelling of a float literal that reads back to the same float
 // (always with a decimal point or exponent, as GLSL ES 1.00 requires).
 std::string glsl_float(float f);
+
+template <int N>
+struct EVec;
+
+namespace emit_detail {
+// A constructor argument's value and GLSL spelling.
+inline float raw(float f) {
+  return f;
+}
+template <int M>
+glm::vec<M, float> raw(const glm::vec<M, float>& v) {
+  return v;
+}
+template <int M>
+auto raw(const EVec<M>& e) {
+  if constexpr (M == 1) {
+    return e.v.x;
+  } else {
+    return e.v;
+  }
+}
+inline bool is_constant(float) {
+  return true;
+}
+template <int M>
+bool is_constant(const glm::vec<M, float>&) {
+  return true;
+}
+template <int M>
+bool is_constant(const EVec<M>& e) {
+  return e.constant;
+}
+inline std::string spelling(float f);
+template <int M>
+std::string spelling(const glm::vec<M, float>& v);
+template <int M>
+std::string spelling(const EVec<M>& e) {
+  return e.expr;
+}
+}  // namespace emit_detail
 
 template <int N>
 struct EVec {
@@ -57,6 +115,25 @@ struct EVec {
   EVec(const value_type& value) : v(value), expr(literal(value)) {}  // NOLINT: constants convert
   EVec(float s) requires(N == 1) : v(s), expr(literal(v)) {}         // NOLINT
   explicit EVec(float s) requires(N > 1) : v(s), expr(literal(v)) {}
+  // A scalar splat, vecN(s): free, as in Count.
+  template <int M>
+  requires(M == 1 && N > 1) explicit EVec(const EVec<M>& s)
+      : v(s.v.x),
+        constant(s.constant),
+        expr(constant ? literal(v) : type_name() + ("(" + s.expr + ")")) {}
+  // Construction from parts, vec4(p, 1.0): a constructor, not an operation.
+  template <typename... Parts>
+  requires(sizeof...(Parts) >= 2) EVec(const Parts&... parts)  // NOLINT: as GLSL's
+      : v(emit_detail::raw(parts)...), constant((emit_detail::is_constant(parts) && ...)) {
+    if (constant) {
+      expr = literal(v);
+    } else {
+      expr = type_name();
+      const char* separator = "(";
+      ((expr += separator, expr += emit_detail::spelling(parts), separator = ", "), ...);
+      expr += ")";
+    }
+  }
 
   // A value read from outside the shader body (attribute, varying, sampler result).
   static EVec named(const std::string& name) {
@@ -95,6 +172,13 @@ struct EVec {
 using EFloat = EVec<1>;
 
 namespace emit_detail {
+inline std::string spelling(float f) {
+  return glsl_float(f);
+}
+template <int M>
+std::string spelling(const glm::vec<M, float>& v) {
+  return EVec<M>::literal(v);
+}
 constexpr int result_lanes(int n, int m) {
   return n > m ? n : m;
 }
@@ -108,22 +192,30 @@ glm::vec<R, float> widen(const glm::vec<N, float>& v) {
 }
 }  // namespace emit_detail
 
-#define SKINSIM_SL_EMIT_BINOP(op)                                                \
-  template <int N, int M>                                                        \
-  inline EVec<emit_detail::result_lanes(N, M)> operator op(                      \
-      const EVec<N>& a, const EVec<M>& b) requires(N == M || N == 1 || M == 1) { \
-    constexpr int R = emit_detail::result_lanes(N, M);                           \
-    if (a.constant && b.constant)                                                \
-      return EVec<R>(emit_detail::widen<R>(a.v) op emit_detail::widen<R>(b.v));  \
-    return EVec<R>::computed(a.expr + " " #op " " + b.expr);                     \
-  }                                                                              \
-  template <int N>                                                               \
-  inline EVec<N> operator op(const EVec<N>& a, float b) {                        \
-    return a op EFloat(b);                                                       \
-  }                                                                              \
-  template <int N>                                                               \
-  inline EVec<N> operator op(float a, const EVec<N>& b) {                        \
-    return EFloat(a) op b;                                                       \
+#define SKINSIM_SL_EMIT_BINOP(op)                                                             \
+  template <int N, int M>                                                                     \
+  inline EVec<emit_detail::result_lanes(N, M)> operator op(                                   \
+      const EVec<N>& a, const EVec<M>& b) requires(N == M || N == 1 || M == 1) {              \
+    constexpr int R = emit_detail::result_lanes(N, M);                                        \
+    if (a.constant && b.constant)                                                             \
+      return EVec<R>(emit_detail::widen<R>(a.v) op emit_detail::widen<R>(b.v));               \
+    return EVec<R>::computed(a.expr + " " #op " " + b.expr);                                  \
+  }                                                                                           \
+  template <int N>                                                                            \
+  inline EVec<N> operator op(const EVec<N>& a, float b) {                                     \
+    return a op EFloat(b);                                                                    \
+  }                                                                                           \
+  template <int N>                                                                            \
+  inline EVec<N> operator op(float a, const EVec<N>& b) {                                     \
+    return EFloat(a) op b;                                                                    \
+  }                                                                                           \
+  template <int N>                                                                            \
+  inline EVec<N> operator op(const EVec<N>& a, const glm::vec<N, float>& b) requires(N > 1) { \
+    return a op EVec<N>(b);                                                                   \
+  }                                                                                           \
+  template <int N>                                                                            \
+  inline EVec<N> operator op(const glm::vec<N, float>& a, const EVec<N>& b) requires(N > 1) { \
+    return EVec<N>(a) op b;                                                                   \
   }
 
 SKINSIM_SL_EMIT_BINOP(+)
@@ -145,6 +237,14 @@ template <int N>
 inline EFloat dot(const EVec<N>& a, const EVec<N>& b) {
   if (a.constant && b.constant) return EFloat(glm::dot(a.v, b.v));
   return EFloat::computed("dot(" + a.expr + ", " + b.expr + ")");
+}
+template <int N>
+inline EFloat dot(const EVec<N>& a, const glm::vec<N, float>& b) {
+  return dot(a, EVec<N>(b));
+}
+template <int N>
+inline EFloat dot(const glm::vec<N, float>& a, const EVec<N>& b) {
+  return dot(EVec<N>(a), b);
 }
 
 // Component selection is a swizzle of the operand, not an operation.
@@ -168,6 +268,33 @@ SKINSIM_SL_EMIT_LANE(y, 1)
 SKINSIM_SL_EMIT_LANE(z, 2)
 SKINSIM_SL_EMIT_LANE(w, 3)
 #undef SKINSIM_SL_EMIT_LANE
+
+template <int N>
+inline EVec<2> xy(const EVec<N>& a) requires(N > 2) {
+  if (a.constant) return EVec<2>(glm::vec2(a.v.x, a.v.y));
+  return EVec<2>::named(a.expr + ".xy");
+}
+inline EVec<3> xyz(const EVec<4>& a) {
+  if (a.constant) return EVec<3>(glm::vec3(a.v));
+  return EVec<3>::named(a.expr + ".xyz");
+}
+// A source modifier, free as in Count.
+template <int N>
+inline EVec<N> abs(const EVec<N>& a) {
+  if (a.constant) return EVec<N>(glm::abs(a.v));
+  return EVec<N>::named("abs(" + a.expr + ")");
+}
+// Screen-space derivatives (fwidth's parts): one op each, from the 2x2 quad.
+template <int N>
+inline EVec<N> dFdx(const EVec<N>& a) {
+  GlslEmitter::require_extension("GL_OES_standard_derivatives");
+  return EVec<N>::computed("dFdx(" + a.expr + ")");
+}
+template <int N>
+inline EVec<N> dFdy(const EVec<N>& a) {
+  GlslEmitter::require_extension("GL_OES_standard_derivatives");
+  return EVec<N>::computed("dFdy(" + a.expr + ")");
+}
 
 #define SKINSIM_SL_EMIT_UNARY(name, glsl_call, fold)                 \
   template <int N>                                                   \
@@ -219,6 +346,14 @@ inline EVec<N> saturate(const EVec<N>& a) {
   template <int N>                                                                           \
   inline EVec<N> name(const EVec<N>& a, float b) {                                           \
     return name(a, EFloat(b));                                                               \
+  }                                                                                          \
+  template <int N>                                                                           \
+  inline EVec<N> name(float a, const EVec<N>& b) requires(N == 1) {                          \
+    return name(EFloat(a), b);                                                               \
+  }                                                                                          \
+  template <int N>                                                                           \
+  inline EVec<N> name(const EVec<N>& a, const glm::vec<N, float>& b) requires(N > 1) {       \
+    return name(a, EVec<N>(b));                                                              \
   }
 
 SKINSIM_SL_EMIT_BINARY(min, glm::min)

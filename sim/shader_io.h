@@ -204,3 +204,6 @@ struct Count {
 };
 
 }  // namespace skinsim::sim
+
+// The third language, Emit, beside Exec and Count: every shader is written against all three.
+#include "sim/shader_emit_io.h"  // IWYU pragma: export

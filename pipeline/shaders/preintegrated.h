@@ -23,6 +23,9 @@ typename L::vec3 fwidth3(const typename L::FragIn& in, int slot) {
   if constexpr (std::is_same_v<L, sim::Exec>) {
     const auto d = in.direction(slot);
     return sl::abs(d.ddx) + sl::abs(d.ddy);
+  } else if constexpr (std::is_same_v<L, sim::Emit>) {
+    const auto v = in.direction(slot).value;
+    return sl::abs(sl::dFdx(v)) + sl::abs(sl::dFdy(v));
   } else {
     const auto v = in.direction(slot).value;
     const auto ddx = v - v;

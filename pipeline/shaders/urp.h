@@ -97,6 +97,8 @@ typename L::vec4 sample_tiled(typename L::TexUnit& tex, int unit,
                               float tiling) {
   if constexpr (std::is_same_v<L, sim::Exec>) {
     return tex.sample(unit, sim::Varying<2>{uv.value * tiling, uv.ddx * tiling, uv.ddy * tiling});
+  } else if constexpr (std::is_same_v<L, sim::Emit>) {
+    return tex.sample(unit, sim::EmitVarying<2>{uv.value * tiling});  // texture2D's derivatives
   } else {
     return tex.sample(unit, uv.value * tiling);
   }

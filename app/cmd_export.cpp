@@ -1,0 +1,77 @@
+// `skinsim export`: a technique's frame as GLSL ES shaders and a frame description
+// (driver/frame_export.h), to run on a device or feed to an offline shader compiler.
+#include <fmt/format.h>
+
+#include <filesystem>
+
+#include "app/cli_options.h"
+#include "app/commands.h"
+#include "driver/frame_export.h"
+#include "driver/frame_job.h"
+#include "gpu_model/profile_loader.h"
+#include "io/atomic_file.h"
+#include "io/run_directory.h"
+
+namespace skinsim::app {
+
+namespace {
+
+struct ExportOptions {
+  DeviceOptions device;
+  driver::SceneSource scene;
+  pipeline::PipelineConfig config;
+  std::string glsl = "es100";
+  std::string out = "export";
+};
+
+int run_export(const ExportOptions& o) {
+  const sim::sl::GlslDialect dialect = driver::parse_glsl_dialect(o.glsl);
+  const std::string data_dir = o.device.data_dir.empty() ? default_data_dir() : o.device.data_dir;
+  const gpu_model::DeviceProfile device = gpu_model::load_device_profile(o.device.device, data_dir);
+  const pipeline::PipelineConfig config = driver::resolve_config(o.config, device);
+  io::RunDirectory run_directory(o.out);
+
+  driver::SceneSource source = o.scene;
+  source.warn = [](const std::string& message) {
+    fmt::print(stderr, "skinsim export: warning: {}\n", message);
+  };
+  const float aspect = static_cast<float>(config.width) / static_cast<float>(config.height);
+  const scene::Scene scene = driver::load_scene(source, aspect);
+  const pipeline::GpuScene gpu_scene(scene);
+  driver::ExportedFrame frame =
+      driver::export_frame(gpu_scene, config, device, dialect, o.device.threads);
+  frame.description["scene"] = o.scene.label();
+
+  const std::filesystem::path& out = run_directory.staging();
+  std::filesystem::create_directories(out / "shaders");
+  for (const auto& [path, source_text] : frame.files) {
+    io::write_file_atomically((out / path).string(), source_text);
+  }
+  io::write_file_atomically((out / "frame.json").string(), frame.description.dump(2) + "\n");
+  run_directory.commit();
+  fmt::print("skinsim export: {} on {}, {}x{}: {} passes, {} shaders (GLSL {}) in {}/\n",
+             config.technique, device.name, config.width, config.height,
+             frame.description["passes"].size(), frame.files.size(), o.glsl, o.out);
+  return 0;
+}
+
+}  // namespace
+
+Command add_export_command(CLI::App& app) {
+  auto options = std::make_shared<ExportOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "export",
+      "Write a technique's frame as GLSL ES shaders and frame.json (passes, targets, "
+      "bindings, state), emitted from the shaders the emulator runs");
+  add_device_options(*cmd, options->device);
+  add_scene_options(*cmd, options->scene);
+  add_pipeline_options(*cmd, options->config);
+  cmd->add_option("--glsl", options->glsl,
+                  "GLSL ES version: es100 (OpenGL ES 2.0 with the extensions the SGX has) or "
+                  "es300 (OpenGL ES 3.0)")
+      ->capture_default_str();
+  cmd->add_option("--out", options->out, "Output directory")->capture_default_str();
+  return [options] { return run_export(*options); };
+}
+
+}  // namespace skinsim::app

@@ -1,0 +1,244 @@
+#include "driver/frame_export.h"
+
+#include <fmt/format.h>
+
+#include "gpu_model/gpu_config.h"
+#include "pipeline/frame.h"
+#include "sim/gpu.h"
+#include "util/check.h"
+#include "util/user_error.h"
+
+namespace skinsim::driver {
+
+namespace {
+
+using sim::sl::GlslDialect;
+
+const char* load_name(sim::LoadOp op) {
+  switch (op) {
+    case sim::LoadOp::kClear:
+      return "clear";
+    case sim::LoadOp::kLoad:
+      return "load";
+    case sim::LoadOp::kDontCare:
+      return "dont_care";
+  }
+  return "";
+}
+
+const char* cull_name(sim::CullMode mode) {
+  switch (mode) {
+    case sim::CullMode::kNone:
+      return "none";
+    case sim::CullMode::kBack:
+      return "back";
+    case sim::CullMode::kFront:
+      return "front";
+  }
+  return "";
+}
+
+// As glBlendFunc: alpha is (SRC_ALPHA, ONE_MINUS_SRC_ALPHA), additive is (ONE, ONE).
+const char* blend_name(sim::BlendMode mode) {
+  switch (mode) {
+    case sim::BlendMode::kOpaque:
+      return "opaque";
+    case sim::BlendMode::kAlpha:
+      return "alpha";
+    case sim::BlendMode::kAdditive:
+      return "additive";
+  }
+  return "";
+}
+
+const char* filter_name(sim::Filter filter) {
+  switch (filter) {
+    case sim::Filter::kNearest:
+      return "nearest";
+    case sim::Filter::kBilinear:
+      return "bilinear";
+    case sim::Filter::kTrilinear:
+      return "trilinear";
+  }
+  return "";
+}
+
+nlohmann::json sampler_json(const sim::SamplerState& s) {
+  return {{"filter", filter_name(s.filter)},
+          {"wrap", s.wrap == sim::Wrap::kClamp ? "clamp_to_edge" : "repeat"}};
+}
+
+// Records each pass as the GPU receives it. Pointers in a pass are valid only while it runs,
+// so everything is written down at once.
+class FrameRecorder {
+ public:
+  explicit FrameRecorder(GlslDialect dialect) : dialect_(dialect) {}
+
+  void record(const sim::RenderPassDesc& pass) {
+    const sim::RenderTarget& size = sim::pass_target(pass);
+    nlohmann::json p = {{"name", pass.name}, {"size", {size.width, size.height}}};
+    if (pass.color) {
+      p["color"] = {{"target", pass.color->name},
+                    {"format", sim::format_name(pass.color->format)},
+                    {"load", load_name(pass.color_load)},
+                    {"store", pass.store_color}};
+      if (pass.color_load == sim::LoadOp::kClear) {
+        const glm::vec4& c = pass.clear_color;
+        p["color"]["clear"] = {c.r, c.g, c.b, c.a};
+      }
+    } else {
+      p["color"] = nullptr;
+    }
+    p["depth"] = {{"load", load_name(pass.depth_load)}, {"store", pass.store_depth}};
+    if (pass.depth) {
+      p["depth"]["target"] = pass.depth->name;
+      p["depth"]["format"] = sim::format_name(pass.depth->format);
+    }
+    if (pass.render_area) {
+      const sim::PixelRect& r = *pass.render_area;
+      p["render_area"] = {r.x0, r.y0, r.x1, r.y1};
+    }
+    nlohmann::json draws = nlohmann::json::array();
+    for (const sim::DrawCall& d : pass.draws) draws.push_back(draw(d, size));
+    p["draws"] = std::move(draws);
+    passes_.push_back(std::move(p));
+    for (const sim::RenderTarget* t : {pass.color, pass.depth}) {
+      if (t) written_by_[t->pixels.data()] = pass.name;
+    }
+  }
+
+  ExportedFrame finish(nlohmann::json frame) {
+    frame["passes"] = std::move(passes_);
+    return {std::move(frame), std::move(files_)};
+  }
+
+ private:
+  nlohmann::json draw(const sim::DrawCall& d, const sim::RenderTarget& size) {
+    const sim::GlslShader vs = d.vertex_program->glsl(dialect_);
+    nlohmann::json j = {{"vertex_shader", file_for(d.vertex_program->name(), ".vert", vs.source)}};
+    nlohmann::json attributes = nlohmann::json::array();
+    for (int a = 0; a < static_cast<int>(sim::VertexAttribute::kCount); ++a) {
+      if (vs.interface.attributes.test(static_cast<size_t>(a))) {
+        attributes.push_back(sim::attribute_name(static_cast<sim::VertexAttribute>(a)));
+      }
+    }
+    j["geometry"] = {{"vertices", d.geometry.vertex_count},
+                     {"triangles", d.geometry.index_count / 3},
+                     {"attributes", std::move(attributes)}};
+    nlohmann::json uniforms = nlohmann::json::object();
+    nlohmann::json textures = nlohmann::json::array();
+    if (d.fragment_program) {
+      const sim::GlslShader fs = d.fragment_program->glsl(dialect_);
+      j["fragment_shader"] = file_for(d.fragment_program->name(), ".frag", fs.source);
+      // A slot the fragment program reads and the vertex program never writes would be
+      // undefined on a GPU (and 0 in the emulator): a bug in the pass, not in the export.
+      SKINSIM_CHECK_OP((fs.interface.varyings & ~vs.interface.varyings).to_ulong(), ==, 0ul);
+      if (fs.interface.inverse_target_size) {
+        uniforms["u_inv_target_size"] = {1.0f / static_cast<float>(size.width),
+                                         1.0f / static_cast<float>(size.height)};
+      }
+      for (int b = 0; b < sim::kMaxTextureBindings; ++b) {
+        const sim::SamplerKind kind = fs.interface.samplers[static_cast<size_t>(b)];
+        if (kind != sim::SamplerKind::kUnused) textures.push_back(binding(d.textures, b, kind));
+      }
+    } else {
+      j["fragment_shader"] = nullptr;  // depth only
+    }
+    j["uniforms"] = std::move(uniforms);
+    j["textures"] = std::move(textures);
+    j["cull"] = cull_name(d.cull);
+    j["blend"] = blend_name(d.blend);
+    j["depth_test"] = d.depth_test;
+    j["depth_write"] = d.depth_write;
+    return j;
+  }
+
+  nlohmann::json binding(const sim::TextureBindings& bound, int b, sim::SamplerKind kind) const {
+    nlohmann::json j = {{"binding", b}, {"sampler", fmt::format("s{}", b)}};
+    if (kind == sim::SamplerKind::kCube) {
+      const sim::TextureCube* cube = bound.cubes[static_cast<size_t>(b)];
+      SKINSIM_CHECK(cube != nullptr);
+      j.update({{"type", "cube"},
+                {"texture", cube->name()},
+                {"size", {cube->size(), cube->size()}},
+                {"format", sim::format_name(cube->format())},
+                {"levels", cube->face(0).level_count()},
+                {"sampler_state", sampler_json(cube->sampler())},
+                {"rendered_by", nullptr}});  // cube maps are baked, never rendered
+      return j;
+    }
+    const sim::Texture2D* t = bound.textures[static_cast<size_t>(b)];
+    SKINSIM_CHECK(t != nullptr);
+    j.update({{"type", kind == sim::SamplerKind::kShadow ? "2d_shadow" : "2d"},
+              {"texture", t->name()},
+              {"size", {t->width(), t->height()}},
+              {"format", sim::format_name(t->format())},
+              {"levels", t->level_count()},
+              {"sampler_state", sampler_json(t->sampler())}});
+    const auto it = written_by_.find(t->level(0).texels);
+    j["rendered_by"] =
+        it == written_by_.end() ? nlohmann::json(nullptr) : nlohmann::json(it->second);
+    return j;
+  }
+
+  // The file a program's source goes to: shaders/NAME.vert, or NAME_2.vert ... where a
+  // program of the same name was exported with other uniforms (they are inlined).
+  std::string file_for(const std::string& name, const char* extension, const std::string& source) {
+    for (int n = 1;; ++n) {
+      const std::string path = n == 1 ? fmt::format("shaders/{}{}", name, extension)
+                                      : fmt::format("shaders/{}_{}{}", name, n, extension);
+      const auto [it, added] = files_.emplace(path, source);
+      if (added || it->second == source) return path;
+    }
+  }
+
+  GlslDialect dialect_;
+  nlohmann::json passes_ = nlohmann::json::array();
+  std::map<std::string, std::string> files_;
+  std::map<const glm::vec4*, std::string> written_by_;  // target pixels → the pass that wrote them
+};
+
+}  // namespace
+
+GlslDialect parse_glsl_dialect(const std::string& name) {
+  if (name == "es100") return GlslDialect::kEs100;
+  if (name == "es300") return GlslDialect::kEs300;
+  throw UserError("--glsl must be es100 (OpenGL ES 2.0) or es300 (OpenGL ES 3.0), got '" + name +
+                  "'");
+}
+
+const char* glsl_dialect_name(GlslDialect dialect) {
+  return dialect == GlslDialect::kEs300 ? "es300" : "es100";
+}
+
+ExportedFrame export_frame(const pipeline::GpuScene& scene, const pipeline::PipelineConfig& config,
+                           const gpu_model::DeviceProfile& device, GlslDialect dialect,
+                           int threads) {
+  SKINSIM_CHECK(config.width > 0 && config.height > 0);  // resolve_config first
+  sim::Gpu gpu(gpu_model::gpu_config(device, threads));
+  FrameRecorder recorder(dialect);
+  gpu.set_pass_capture([&recorder](const sim::RenderPassDesc& pass) { recorder.record(pass); });
+  pipeline::render_frame(scene, config, gpu);
+  nlohmann::json knobs = nlohmann::json::object();
+  for (const std::string& key : pipeline::config_field_names()) {
+    knobs[key] = pipeline::get_config_field(config, key);
+  }
+  nlohmann::json frame = {
+      {"technique", config.technique},
+      {"device", device.name},
+      {"size", {config.width, config.height}},
+      {"glsl", glsl_dialect_name(dialect)},
+      {"knobs", knobs},
+      {"conventions",
+       {{"uniforms", "inlined in the shader source as constants, except those listed per draw"},
+        {"varyings", "float slots packed four to a vec4: v_slot0 holds slots 0-3"},
+        {"samplers", "uniform sN reads texture binding N"},
+        {"blend", "alpha = (SRC_ALPHA, ONE_MINUS_SRC_ALPHA), additive = (ONE, ONE)"},
+        {"geometry", "the scene mesh or a screen quad; vertex data is not exported"},
+        {"rows",
+         "row 0 of a target is the image's top; gl_FragCoord.y counts from the bottom, so "
+         "per-pixel noise seeded by it is mirrored (its statistics are not)"}}}};
+  return recorder.finish(std::move(frame));
+}
+
+}  // namespace skinsim::driver
