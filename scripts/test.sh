@@ -2,7 +2,7 @@
 # One command that installs what is missing, builds, and passes the tests:
 #   1. Release build with warnings as errors, every CTest test (chart tests run under xvfb-run);
 #   2. ASan + UBSan build of the unit tests (no VTK charts, no benchmarks), tests not labelled
-#      slow.
+#      slow or lint (the format check reads sources, so one run of it is enough).
 # Builds go through ccache when it is installed (scripts/ccache-env.sh), so a second run
 # recompiles only what changed.
 set -euo pipefail
@@ -18,4 +18,4 @@ bash scripts/build.sh build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSKINSIM_SAN
 # The golden tests compare thread counts in the first stage; here one render per technique
 # (2 threads, the parallel paths) is enough for the sanitizers.
 (cd build-asan && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-  SKINSIM_GOLDEN_THREADS=2 ctest --output-on-failure -j "$jobs" -LE slow)
+  SKINSIM_GOLDEN_THREADS=2 ctest --output-on-failure -j "$jobs" -LE "slow|lint")
