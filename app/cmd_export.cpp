@@ -22,6 +22,7 @@ struct ExportOptions {
   pipeline::PipelineConfig config;
   std::string glsl = "es100";
   std::string out = "export";
+  bool data = false;
 };
 
 int run_export(const ExportOptions& o) {
@@ -39,17 +40,18 @@ int run_export(const ExportOptions& o) {
   const scene::Scene scene = driver::load_scene(source, aspect);
   const pipeline::GpuScene gpu_scene(scene);
   driver::ExportedFrame frame =
-      driver::export_frame(gpu_scene, config, device, dialect, o.device.threads);
+      driver::export_frame(gpu_scene, config, device, dialect, o.data, o.device.threads);
   frame.description["scene"] = o.scene.label();
 
   const std::filesystem::path& out = run_directory.staging();
   std::filesystem::create_directories(out / "shaders");
+  if (o.data) std::filesystem::create_directories(out / "data");
   for (const auto& [path, source_text] : frame.files) {
     io::write_file_atomically((out / path).string(), source_text);
   }
   io::write_file_atomically((out / "frame.json").string(), frame.description.dump(2) + "\n");
   run_directory.commit();
-  fmt::print("skinsim export: {} on {}, {}x{}: {} passes, {} shaders (GLSL {}) in {}/\n",
+  fmt::print("skinsim export: {} on {}, {}x{}: {} passes, {} files (GLSL {}) in {}/\n",
              config.technique, device.name, config.width, config.height,
              frame.description["passes"].size(), frame.files.size(), o.glsl, o.out);
   return 0;
@@ -70,6 +72,9 @@ Command add_export_command(CLI::App& app) {
                   "GLSL ES version: es100 (OpenGL ES 2.0 with the extensions the SGX has) or "
                   "es300 (OpenGL ES 3.0)")
       ->capture_default_str();
+  cmd->add_flag("--data", options->data,
+                "Also write the vertex data, textures and every pass's targets as the emulator "
+                "rendered them (data/*.bin), for replaying and comparing the frame elsewhere");
   cmd->add_option("--out", options->out, "Output directory")->capture_default_str();
   return [options] { return run_export(*options); };
 }

@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <optional>
+
+#include "driver/frame_export_data.h"
 #include "gpu_model/gpu_config.h"
 #include "pipeline/frame.h"
 #include "sim/gpu.h"
@@ -68,11 +71,13 @@ nlohmann::json sampler_json(const sim::SamplerState& s) {
           {"wrap", s.wrap == sim::Wrap::kClamp ? "clamp_to_edge" : "repeat"}};
 }
 
-// Records each pass as the GPU receives it. Pointers in a pass are valid only while it runs,
-// so everything is written down at once.
+// Records each pass once the GPU has run it. Pointers in a pass are valid only then, so
+// everything is written down at once.
 class FrameRecorder {
  public:
-  explicit FrameRecorder(GlslDialect dialect) : dialect_(dialect) {}
+  FrameRecorder(GlslDialect dialect, bool with_data)
+      : dialect_(dialect),
+        data_(with_data ? std::make_optional<ExportData>(&files_) : std::nullopt) {}
 
   void record(const sim::RenderPassDesc& pass) {
     const sim::RenderTarget& size = sim::pass_target(pass);
@@ -101,10 +106,18 @@ class FrameRecorder {
     nlohmann::json draws = nlohmann::json::array();
     for (const sim::DrawCall& d : pass.draws) draws.push_back(draw(d, size));
     p["draws"] = std::move(draws);
-    passes_.push_back(std::move(p));
-    for (const sim::RenderTarget* t : {pass.color, pass.depth}) {
-      if (t) written_by_[t->pixels.data()] = pass.name;
+    const std::size_t index = passes_.size();
+    for (const auto& [target, part] : {std::pair{pass.color, "color"}, {pass.depth, "depth"}}) {
+      if (!target) continue;
+      Rendered& rendered = rendered_[target->pixels.data()];
+      rendered.pass = pass.name;
+      rendered.target = target->name;
+      if (data_) {
+        rendered.data = data_->target(*target, fmt::format("pass{}_{}_{}", index, pass.name, part));
+        p[part]["data"] = rendered.data;
+      }
     }
+    passes_.push_back(std::move(p));
   }
 
   ExportedFrame finish(nlohmann::json frame) {
@@ -125,6 +138,7 @@ class FrameRecorder {
     j["geometry"] = {{"vertices", d.geometry.vertex_count},
                      {"triangles", d.geometry.index_count / 3},
                      {"attributes", std::move(attributes)}};
+    if (data_) j["geometry"]["data"] = data_->geometry(d.geometry);
     nlohmann::json uniforms = nlohmann::json::object();
     nlohmann::json textures = nlohmann::json::array();
     if (d.fragment_program) {
@@ -153,7 +167,7 @@ class FrameRecorder {
     return j;
   }
 
-  nlohmann::json binding(const sim::TextureBindings& bound, int b, sim::SamplerKind kind) const {
+  nlohmann::json binding(const sim::TextureBindings& bound, int b, sim::SamplerKind kind) {
     nlohmann::json j = {{"binding", b}, {"sampler", fmt::format("s{}", b)}};
     if (kind == sim::SamplerKind::kCube) {
       const sim::TextureCube* cube = bound.cubes[static_cast<size_t>(b)];
@@ -165,6 +179,7 @@ class FrameRecorder {
                 {"levels", cube->face(0).level_count()},
                 {"sampler_state", sampler_json(cube->sampler())},
                 {"rendered_by", nullptr}});  // cube maps are baked, never rendered
+      if (data_) j["data"] = data_->cube(*cube);
       return j;
     }
     const sim::Texture2D* t = bound.textures[static_cast<size_t>(b)];
@@ -175,9 +190,16 @@ class FrameRecorder {
               {"format", sim::format_name(t->format())},
               {"levels", t->level_count()},
               {"sampler_state", sampler_json(t->sampler())}});
-    const auto it = written_by_.find(t->level(0).texels);
-    j["rendered_by"] =
-        it == written_by_.end() ? nlohmann::json(nullptr) : nlohmann::json(it->second);
+    // A view of a target an earlier pass rendered: the same pixels and name (a freed target's
+    // address may be reused by a texture, or by a target filled on the host, such as a LUT).
+    const auto it = rendered_.find(t->level(0).texels);
+    if (it == rendered_.end() || it->second.target != t->name()) {
+      j["rendered_by"] = nullptr;
+      if (data_) j["data"] = data_->texture(*t);
+    } else {
+      j["rendered_by"] = it->second.pass;
+      if (data_) j["data"] = it->second.data;  // as that pass left it
+    }
     return j;
   }
 
@@ -195,7 +217,14 @@ class FrameRecorder {
   GlslDialect dialect_;
   nlohmann::json passes_ = nlohmann::json::array();
   std::map<std::string, std::string> files_;
-  std::map<const glm::vec4*, std::string> written_by_;  // target pixels → the pass that wrote them
+  std::optional<ExportData> data_;  // with --data
+  // The last pass that rendered each target (by its pixels), and its data then.
+  struct Rendered {
+    std::string pass;
+    std::string target;
+    nlohmann::json data;
+  };
+  std::map<const glm::vec4*, Rendered> rendered_;
 };
 
 }  // namespace
@@ -213,10 +242,10 @@ const char* glsl_dialect_name(GlslDialect dialect) {
 
 ExportedFrame export_frame(const pipeline::GpuScene& scene, const pipeline::PipelineConfig& config,
                            const gpu_model::DeviceProfile& device, GlslDialect dialect,
-                           int threads) {
+                           bool with_data, int threads) {
   SKINSIM_CHECK(config.width > 0 && config.height > 0);  // resolve_config first
   sim::Gpu gpu(gpu_model::gpu_config(device, threads));
-  FrameRecorder recorder(dialect);
+  FrameRecorder recorder(dialect, with_data);
   gpu.set_pass_capture([&recorder](const sim::RenderPassDesc& pass) { recorder.record(pass); });
   pipeline::render_frame(scene, config, gpu);
   nlohmann::json knobs = nlohmann::json::object();

@@ -23,10 +23,10 @@ struct ExportedFrame {
 };
 
 // Renders one frame of a resolved config (resolve_config) on the emulated GPU and records
-// every pass it executes.
+// every pass it executes; `with_data` adds the binary payloads (frame_export_data.h).
 ExportedFrame export_frame(const pipeline::GpuScene& scene, const pipeline::PipelineConfig& config,
                            const gpu_model::DeviceProfile& device, sim::sl::GlslDialect dialect,
-                           int threads);
+                           bool with_data, int threads);
 
 // "es100" or "es300"; throws UserError naming the option otherwise.
 sim::sl::GlslDialect parse_glsl_dialect(const std::string& name);

@@ -72,9 +72,9 @@ PassCounters Gpu::execute(const RenderPassDesc& pass) {
       }
     }
   }
-  if (capture_) capture_(pass);
   PassCounters result;
   arena_->execute([&] { result = execute_impl(pass); });
+  if (capture_) capture_(pass);
   return result;
 }
 

@@ -26,8 +26,8 @@ class Gpu {
   // and per-tile counters are summed in tile order.
   PassCounters execute(const RenderPassDesc& pass);
 
-  // Called with every pass before it runs, as a GPU debugger captures a frame (`skinsim
-  // export` describes the frame from it).
+  // Called with every pass once it has run (its targets hold what it rendered), as a GPU
+  // debugger captures a frame: `skinsim export` describes the frame from it.
   void set_pass_capture(std::function<void(const RenderPassDesc&)> capture) {
     capture_ = std::move(capture);
   }
