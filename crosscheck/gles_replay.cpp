@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -29,7 +30,6 @@
 namespace {
 
 using nlohmann::json;
-int images_written = 0;
 namespace fs = std::filesystem;
 
 [[noreturn]] void fail(const std::string& message) {
@@ -415,40 +415,63 @@ void write_ppm(const fs::path& path, const std::vector<float>& rgba, int w, int 
   }
 }
 
-json replay_pass(Files& files, Programs& programs, std::map<std::string, GLuint>& textures,
-                 std::map<std::string, Mesh>& meshes, const json& pass, const json* before,
-                 const fs::path& images) {
-  const Target t = make_target(files, pass, before);
-  glViewport(0, 0, t.width, t.height);
-  if (pass.contains("render_area")) {
-    const json& r = pass["render_area"];
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(r[0], r[1], r[2].get<int>() - r[0].get<int>(), r[3].get<int>() - r[1].get<int>());
-  } else {
-    glDisable(GL_SCISSOR_TEST);
+// Replays passes on the current context, caching programs, meshes and textures.
+class Replay {
+ public:
+  Replay(const fs::path& dir, fs::path images)
+      : files_(dir), programs_(dir), images_(std::move(images)) {}
+
+  // Renders `pass` from its inputs (and `before`, the target's earlier contents). With
+  // `compare`, reads the target back and compares it with the emulator's; `ms` gets the wall
+  // time of the pass's clear and draws, each end bracketed by glFinish.
+  json run(const json& pass, const json* before, bool compare, double& ms) {
+    const Target t = make_target(files_, pass, before);
+    glViewport(0, 0, t.width, t.height);
+    if (pass.contains("render_area")) {
+      const json& r = pass["render_area"];
+      glEnable(GL_SCISSOR_TEST);
+      glScissor(r[0], r[1], r[2].get<int>() - r[0].get<int>(), r[3].get<int>() - r[1].get<int>());
+    } else {
+      glDisable(GL_SCISSOR_TEST);
+    }
+    GLbitfield clear = GL_DEPTH_BUFFER_BIT;
+    if (pass["color"].is_null()) {
+      glClearColor(1.0f, 1.0f, 1.0f, 1.0f);  // no fragment: the cleared depth, 1
+      clear |= GL_COLOR_BUFFER_BIT;
+    } else if (pass["color"]["load"] == "clear") {
+      const json& c = pass["color"]["clear"];
+      glClearColor(c[0], c[1], c[2], c[3]);
+      clear |= GL_COLOR_BUFFER_BIT;
+    }
+    glDepthMask(GL_TRUE);
+    glClearDepthf(1.0f);
+    GLuint vao = 0;
+    glGenVertexArrays(1, &vao);
+    glBindVertexArray(vao);
+    glFinish();  // the target's allocation and contents are not the pass's work
+    const auto start = std::chrono::steady_clock::now();
+    glClear(clear);
+    for (const json& draw : pass["draws"]) this->draw(pass, draw);
+    glFinish();
+    ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    glDeleteVertexArrays(1, &vao);
+    json result = json::object();
+    if (compare) result = compare_with_emulator(pass, t);
+    glDeleteFramebuffers(1, &t.framebuffer);
+    glDeleteRenderbuffers(1, &t.depth);
+    glDeleteTextures(1, &t.texture);
+    return result;
   }
-  GLbitfield clear = GL_DEPTH_BUFFER_BIT;
-  if (pass["color"].is_null()) {
-    glClearColor(1.0f, 1.0f, 1.0f, 1.0f);  // no fragment: the cleared depth, 1
-    clear |= GL_COLOR_BUFFER_BIT;
-  } else if (pass["color"]["load"] == "clear") {
-    const json& c = pass["color"]["clear"];
-    glClearColor(c[0], c[1], c[2], c[3]);
-    clear |= GL_COLOR_BUFFER_BIT;
-  }
-  glDepthMask(GL_TRUE);
-  glClearDepthf(1.0f);
-  glClear(clear);
-  GLuint vao = 0;
-  glGenVertexArrays(1, &vao);
-  glBindVertexArray(vao);
-  for (const json& draw : pass["draws"]) {
-    const GLuint program = programs.get(draw["vertex_shader"], draw["fragment_shader"]);
+
+ private:
+  void draw(const json& pass, const json& draw) {
+    const GLuint program = programs_.get(draw["vertex_shader"], draw["fragment_shader"]);
     glUseProgram(program);
     const json& geometry = draw["geometry"]["data"];
     const std::string mesh_key = geometry["file"];
-    if (!meshes.count(mesh_key)) meshes[mesh_key] = upload_mesh(files, geometry);
-    const Mesh& mesh = meshes[mesh_key];
+    if (!meshes_.count(mesh_key)) meshes_[mesh_key] = upload_mesh(files_, geometry);
+    const Mesh& mesh = meshes_[mesh_key];
     glBindBuffer(GL_ARRAY_BUFFER, mesh.buffer);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, mesh.indices);
     for (GLuint a = 0; a < 8; ++a) glDisableVertexAttribArray(a);
@@ -464,8 +487,9 @@ json replay_pass(Files& files, Programs& programs, std::map<std::string, GLuint>
                               binding["sampler_state"].dump() + binding["type"].get<std::string>();
       const int unit = binding["binding"];
       glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));  // before an upload binds
-      if (!textures.count(key)) textures[key] = upload_binding(files, binding);
-      glBindTexture(binding["type"] == "cube" ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D, textures[key]);
+      if (!textures_.count(key)) textures_[key] = upload_binding(files_, binding);
+      glBindTexture(binding["type"] == "cube" ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D,
+                    textures_[key]);
       glUniform1i(glGetUniformLocation(program, binding["sampler"].get<std::string>().c_str()),
                   unit);
     }
@@ -478,65 +502,130 @@ json replay_pass(Files& files, Programs& programs, std::map<std::string, GLuint>
     check_gl(fmt::format("pass {} draw {}", pass["name"].get<std::string>(),
                          draw["vertex_shader"].get<std::string>()));
   }
-  glDeleteVertexArrays(1, &vao);
-  const std::vector<float> replayed = read_back(t);
-  const json& reference = pass["color"].is_null() ? pass["depth"]["data"] : pass["color"]["data"];
-  const std::vector<float> expected = emulated(files, reference);
-  json result = skinsim::crosscheck::compare_targets(expected, replayed, t.width, t.height,
-                                                     pass["color"].is_null());
-  result["pass"] = pass["name"];
-  if (!images.empty()) {
-    const std::string stem =
-        fmt::format("{}_{}", images_written++, pass["name"].get<std::string>());
-    const float peak = result["peak"];
-    write_ppm(images / (stem + "_emulated.ppm"), expected, t.width, t.height, peak);
-    write_ppm(images / (stem + "_llvmpipe.ppm"), replayed, t.width, t.height, peak);
+
+  json compare_with_emulator(const json& pass, const Target& t) {
+    const std::vector<float> replayed = read_back(t);
+    const json& reference = pass["color"].is_null() ? pass["depth"]["data"] : pass["color"]["data"];
+    const std::vector<float> expected = emulated(files_, reference);
+    json result = skinsim::crosscheck::compare_targets(expected, replayed, t.width, t.height,
+                                                       pass["color"].is_null());
+    result["pass"] = pass["name"];
+    if (!images_.empty()) {
+      const std::string stem =
+          fmt::format("{}_{}", images_written_++, pass["name"].get<std::string>());
+      const float peak = result["peak"];
+      write_ppm(images_ / (stem + "_emulated.ppm"), expected, t.width, t.height, peak);
+      write_ppm(images_ / (stem + "_llvmpipe.ppm"), replayed, t.width, t.height, peak);
+    }
+    return result;
   }
-  glDeleteFramebuffers(1, &t.framebuffer);
-  glDeleteRenderbuffers(1, &t.depth);
-  glDeleteTextures(1, &t.texture);
-  return result;
+
+  Files files_;
+  Programs programs_;
+  fs::path images_;
+  int images_written_ = 0;
+  std::map<std::string, GLuint> textures_;
+  std::map<std::string, Mesh> meshes_;
+};
+
+struct Options {
+  fs::path dir, result, images;
+  int time_rounds = 0;
+};
+
+Options parse_options(int argc, char** argv) {
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const auto value = [&]() -> std::string {
+      if (i + 1 >= argc) fail("option " + arg + " needs a value");
+      return argv[++i];
+    };
+    if (arg == "--result") {
+      o.result = value();
+    } else if (arg == "--images") {
+      o.images = value();
+    } else if (arg == "--time") {
+      const std::string v = value();
+      char* end = nullptr;
+      const long rounds = std::strtol(v.c_str(), &end, 10);
+      if (v.empty() || *end != '\0' || rounds < 1 || rounds > 1000) {
+        fail("--time must be a whole number of rounds in [1, 1000], got '" + v + "'");
+      }
+      o.time_rounds = static_cast<int>(rounds);
+    } else if (o.dir.empty() && !arg.starts_with("--")) {
+      o.dir = arg;
+    } else {
+      fail("unknown argument '" + arg + "'");
+    }
+  }
+  if (o.dir.empty()) fail("no export directory given");
+  return o;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 2) {
+  Options o;
+  try {
+    o = parse_options(argc, argv);
+  } catch (const std::exception& e) {
     fmt::print(stderr,
-               "usage: gles_replay EXPORT_DIR [RESULT_JSON [IMAGE_DIR]]\n"
+               "gles_replay: {}\n"
+               "usage: gles_replay EXPORT_DIR [--result FILE.json] [--images DIR] [--time ROUNDS]\n"
                "  EXPORT_DIR from: skinsim export --glsl es300 --data --out EXPORT_DIR\n"
-               "  IMAGE_DIR: each pass's target, emulated and replayed, as PPM\n");
+               "  --images: each pass's target, emulated and replayed, as PPM\n"
+               "  --time: replay the frame ROUNDS more times and print its median time\n",
+               e.what());
     return 2;
   }
   try {
-    const fs::path dir = argv[1];
-    const json frame = json::parse(read_file(dir / "frame.json"));
+    const json frame = json::parse(read_file(o.dir / "frame.json"));
     if (frame["glsl"] != "es300") fail("the export must be --glsl es300 (an OpenGL ES 3.0 replay)");
-    const fs::path images = argc > 3 ? fs::path(argv[3]) : fs::path();
-    if (!images.empty()) fs::create_directories(images);
+    if (!o.images.empty()) fs::create_directories(o.images);
     SurfacelessContext context;
     fmt::print("{} on {}: {}\n", frame["technique"].get<std::string>(),
                reinterpret_cast<const char*>(glGetString(GL_RENDERER)),
                reinterpret_cast<const char*>(glGetString(GL_VERSION)));
-    Files files(dir);
-    Programs programs(dir);
-    std::map<std::string, GLuint> textures;
-    std::map<std::string, Mesh> meshes;
-    std::map<std::string, json> last_contents;  // target name → its data after the last pass
-    json results = json::array();
+    Replay replay(o.dir, o.images);
+    // Each pass with the emulator's contents of its target before it, where there were any.
+    std::vector<const json*> before;
+    std::map<std::string, const json*> last_contents;
     for (const json& pass : frame["passes"]) {
-      const json* before = nullptr;
+      const json* b = nullptr;
       if (!pass["color"].is_null()) {
         const auto it = last_contents.find(pass["color"]["target"]);
-        if (it != last_contents.end()) before = &it->second;
+        if (it != last_contents.end()) b = it->second;
+        last_contents[pass["color"]["target"]] = &pass["color"]["data"];
       }
-      results.push_back(replay_pass(files, programs, textures, meshes, pass, before, images));
-      fmt::print("{}\n", skinsim::crosscheck::format_row(results.back()));
-      if (!pass["color"].is_null()) last_contents[pass["color"]["target"]] = pass["color"]["data"];
+      before.push_back(b);
     }
-    if (argc > 2)
-      std::ofstream(argv[2]) << json{{"technique", frame["technique"]}, {"passes", results}}.dump(2)
-                             << "\n";
+    json results = json::array();
+    double ms = 0.0;
+    for (std::size_t p = 0; p < frame["passes"].size(); ++p) {
+      results.push_back(replay.run(frame["passes"][p], before[p], true, ms));
+      fmt::print("{}\n", skinsim::crosscheck::format_row(results.back()));
+    }
+    json out = {{"technique", frame["technique"]}, {"passes", results}};
+    if (o.time_rounds > 0) {  // the first round compiled the shaders and uploaded the data
+      std::vector<double> frames;
+      for (int r = 0; r < o.time_rounds; ++r) {
+        double total = 0.0;
+        for (std::size_t p = 0; p < frame["passes"].size(); ++p) {
+          replay.run(frame["passes"][p], before[p], false, ms);
+          total += ms;
+        }
+        frames.push_back(total);
+      }
+      std::sort(frames.begin(), frames.end());
+      const double median = frames[frames.size() / 2];
+      fmt::print(
+          "llvmpipe frame: {:.1f} ms median of {} (each pass's clear and draws, glFinish "
+          "at both ends)\n",
+          median, frames.size());
+      out["frame_ms_median"] = median;
+    }
+    if (!o.result.empty()) std::ofstream(o.result) << out.dump(2) << "\n";
     return 0;
   } catch (const std::exception& e) {
     fmt::print(stderr, "gles_replay: {}\n", e.what());

@@ -1,11 +1,15 @@
 #!/usr/bin/env python3
-"""The emulator's frame time beside Mesa llvmpipe's for the same frame (issue 19).
+"""The emulator's frame time beside Mesa llvmpipe's for the same frame (issues 18, 19).
 
-Runs bench_frame's BM_SkinFrame (the default 2048x1536 frame: irradiance, two blurs, skin,
-with every counter and the texture-cache model) and llvmpipe_skinbench (the same four passes
-on llvmpipe, rendering only: ../shared/anchors/llvmpipe/README.md) with the same host
-thread count, alternating the two ROUNDS times so that a noisy shared machine slows both
-alike, and prints each one's median and the ratio skinsim / llvmpipe.
+Runs bench_frame's BM_SkinFrame (the default 2048x1536 frame: shadow map, irradiance, two
+blurs, skin, with every counter and the texture-cache model) and, with the same host thread
+count, two llvmpipe anchors (rendering only):
+- replay: that very frame, exported by `skinsim export --glsl es300 --data` and replayed by
+  gles_replay (the same shaders, meshes, textures and passes; docs/validation.md);
+- skinbench: the shared benchmark of an equivalent four-pass frame
+  (../shared/anchors/llvmpipe/README.md), when it was built.
+It alternates them ROUNDS times so that a noisy shared machine slows all alike, and prints
+each one's median and the ratio skinsim / replay.
 Host threads beyond the device's emulated cores (4 on the iPad 4) are not used by skinsim
 (docs/performance.md says why), so counts above that measure llvmpipe's scaling alone.
 
@@ -19,6 +23,7 @@ import re
 import statistics
 import subprocess
 import sys
+import tempfile
 
 
 def llvmpipe_ms(program, threads, frames):
@@ -29,6 +34,17 @@ def llvmpipe_ms(program, threads, frames):
     match = re.search(r"A full frame\s+median\s+([0-9.]+) ms", out)
     if not match:
         sys.exit(f"bench_vs_llvmpipe: no 'A full frame' median in {program}'s output:\n{out}")
+    return float(match.group(1))
+
+
+def replay_ms(program, export, threads, frames):
+    env = dict(os.environ, LIBGL_ALWAYS_SOFTWARE="1", GALLIUM_DRIVER="llvmpipe",
+               LP_NUM_THREADS=str(threads))
+    out = subprocess.run([program, export, "--time", str(frames)], env=env, check=True,
+                         capture_output=True, text=True).stdout
+    match = re.search(r"llvmpipe frame: ([0-9.]+) ms", out)
+    if not match:
+        sys.exit(f"bench_vs_llvmpipe: no 'llvmpipe frame' time in {program}'s output:\n{out}")
     return float(match.group(1))
 
 
@@ -46,26 +62,37 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("build_dir", nargs="?", default="build")
     parser.add_argument("--threads", default="1,2", help="host thread counts, e.g. 1,2,4")
-    parser.add_argument("--rounds", type=int, default=3, help="alternations of the two")
+    parser.add_argument("--rounds", type=int, default=3, help="alternations of the programs")
     parser.add_argument("--frames", type=int, default=10, help="llvmpipe's timed frames per run")
     args = parser.parse_args()
     bench = os.path.join(args.build_dir, "bench", "bench_frame")
-    anchor = os.path.join(args.build_dir, "bench", "llvmpipe_skinbench")
-    for program in (bench, anchor):
+    skinsim = os.path.join(args.build_dir, "skinsim")
+    replay = os.path.join(args.build_dir, "gles_replay")
+    skinbench = os.path.join(args.build_dir, "bench", "llvmpipe_skinbench")
+    for program in (bench, skinsim, replay):
         if not os.access(program, os.X_OK):
-            sys.exit(f"bench_vs_llvmpipe: {program} is missing: build with benchmarks on "
-                     "(the anchor also needs ../shared/anchors/llvmpipe and libegl-dev, "
-                     "libgles-dev; scripts/install-deps.sh installs them)")
-    print(f"{'threads':>7}  {'skinsim ms':>10}  {'llvmpipe ms':>11}  {'ratio':>5}  "
-          f"(medians of {args.rounds} alternating runs: llvmpipe {args.frames} frames, "
-          "skinsim frames for >= 3 s)")
-    for threads in (int(t) for t in args.threads.split(",")):
-        skinsim, llvmpipe = [], []
-        for _ in range(args.rounds):
-            llvmpipe.append(llvmpipe_ms(anchor, threads, args.frames))
-            skinsim.append(skinsim_ms(bench, threads))
-        s, l = statistics.median(skinsim), statistics.median(llvmpipe)
-        print(f"{threads:>7}  {s:>10.1f}  {l:>11.1f}  {s / l:>5.2f}", flush=True)
+            sys.exit(f"bench_vs_llvmpipe: {program} is missing: build with benchmarks on and "
+                     "libegl-dev, libgles-dev installed (scripts/install-deps.sh)")
+    has_skinbench = os.access(skinbench, os.X_OK)
+    with tempfile.TemporaryDirectory() as tmp:
+        export = os.path.join(tmp, "frame")
+        subprocess.run([skinsim, "export", "--glsl", "es300", "--data", "--out", export],
+                       check=True, stdout=subprocess.DEVNULL)
+        print(f"{'threads':>7}  {'skinsim ms':>10}  {'replay ms':>9}  {'ratio':>5}"
+              + (f"  {'skinbench ms':>12}" if has_skinbench else "")
+              + f"  (medians of {args.rounds} alternating runs: llvmpipe {args.frames} frames, "
+              "skinsim frames for >= 3 s)")
+        for threads in (int(t) for t in args.threads.split(",")):
+            emulated, replayed, anchored = [], [], []
+            for _ in range(args.rounds):
+                replayed.append(replay_ms(replay, export, threads, args.frames))
+                if has_skinbench:
+                    anchored.append(llvmpipe_ms(skinbench, threads, args.frames))
+                emulated.append(skinsim_ms(bench, threads))
+            e, r = statistics.median(emulated), statistics.median(replayed)
+            print(f"{threads:>7}  {e:>10.1f}  {r:>9.1f}  {e / r:>5.2f}"
+                  + (f"  {statistics.median(anchored):>12.1f}" if has_skinbench else ""),
+                  flush=True)
 
 
 if __name__ == "__main__":

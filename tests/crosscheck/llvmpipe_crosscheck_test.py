@@ -47,7 +47,7 @@ def main():
                         "--texture-space-size", "256", "--glsl", "es300", "--data",
                         "--out", export], check=True, stdout=subprocess.DEVNULL)
         result_file = os.path.join(out_dir, f"{technique}.json")
-        run = subprocess.run([replay, export, result_file], env=env, capture_output=True,
+        run = subprocess.run([replay, export, "--result", result_file], env=env, capture_output=True,
                              text=True)
         print(f"== {technique}\n{run.stdout}{run.stderr}", end="")
         if run.returncode != 0:
