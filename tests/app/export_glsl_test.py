@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """`skinsim export` for every registered technique, as GLSL ES 1.00 and 3.00: every exported
 shader compiles with Khronos' reference compiler, every draw's vertex and fragment shaders
-link, and frame.json describes what the shaders declare.
+link, and frame.json describes what the shaders declare. An unknown --glsl exits 2 naming it.
 
 Usage: export_glsl_test.py SKINSIM GLSLANG_VALIDATOR OUT_DIR
 """
@@ -101,6 +101,12 @@ def main():
         print("glslangValidator not found: install glslang-tools (scripts/install-deps.sh)")
         return 1
     failures = []
+    bad = subprocess.run([skinsim, "export", "--glsl", "es200", "--out",
+                          os.path.join(out_dir, "bad")], capture_output=True, text=True)
+    if bad.returncode != 2 or "--glsl" not in bad.stderr or os.path.exists(
+            os.path.join(out_dir, "bad")):
+        failures.append(f"--glsl es200: expected exit 2 naming --glsl and no output, got "
+                        f"{bad.returncode}: {bad.stderr}")
     names = techniques(skinsim)
     for technique in names:
         for dialect in ("es100", "es300"):
