@@ -7,7 +7,6 @@
 #include "app/cli_options.h"
 #include "app/commands.h"
 #include "driver/frame_export.h"
-#include "driver/frame_job.h"
 #include "gpu_model/profile_loader.h"
 #include "io/atomic_file.h"
 #include "io/run_directory.h"
@@ -32,15 +31,15 @@ int run_export(const ExportOptions& o) {
   const pipeline::PipelineConfig config = driver::resolve_config(o.config, device);
   io::RunDirectory run_directory(o.out);
 
-  driver::SceneSource source = o.scene;
-  source.warn = [](const std::string& message) {
+  driver::FrameJob job;
+  job.device = &device;
+  job.config = config;
+  job.scene = o.scene;
+  job.scene.warn = [](const std::string& message) {
     fmt::print(stderr, "skinsim export: warning: {}\n", message);
   };
-  const float aspect = static_cast<float>(config.width) / static_cast<float>(config.height);
-  const scene::Scene scene = driver::load_scene(source, aspect);
-  const pipeline::GpuScene gpu_scene(scene);
-  driver::ExportedFrame frame =
-      driver::export_frame(gpu_scene, config, device, dialect, o.data, o.device.threads);
+  job.threads = o.device.threads;
+  driver::ExportedFrame frame = driver::export_frame(job, dialect, o.data);
   frame.description["scene"] = o.scene.label();
 
   const std::filesystem::path& out = run_directory.staging();

@@ -5,9 +5,6 @@
 #include <optional>
 
 #include "driver/frame_export_data.h"
-#include "gpu_model/gpu_config.h"
-#include "pipeline/frame.h"
-#include "sim/gpu.h"
 #include "util/check.h"
 #include "util/user_error.h"
 
@@ -240,14 +237,13 @@ const char* glsl_dialect_name(GlslDialect dialect) {
   return dialect == GlslDialect::kEs300 ? "es300" : "es100";
 }
 
-ExportedFrame export_frame(const pipeline::GpuScene& scene, const pipeline::PipelineConfig& config,
-                           const gpu_model::DeviceProfile& device, GlslDialect dialect,
-                           bool with_data, int threads) {
-  SKINSIM_CHECK(config.width > 0 && config.height > 0);  // resolve_config first
-  sim::Gpu gpu(gpu_model::gpu_config(device, threads));
+ExportedFrame export_frame(FrameJob job, GlslDialect dialect, bool with_data) {
   FrameRecorder recorder(dialect, with_data);
-  gpu.set_pass_capture([&recorder](const sim::RenderPassDesc& pass) { recorder.record(pass); });
-  pipeline::render_frame(scene, config, gpu);
+  job.capture = [&recorder](const sim::RenderPassDesc& pass) { recorder.record(pass); };
+  job.reference = false;
+  run_frame_job(job);
+  const pipeline::PipelineConfig& config = job.config;
+  const gpu_model::DeviceProfile& device = *job.device;
   nlohmann::json knobs = nlohmann::json::object();
   for (const std::string& key : pipeline::config_field_names()) {
     knobs[key] = pipeline::get_config_field(config, key);
@@ -263,7 +259,7 @@ ExportedFrame export_frame(const pipeline::GpuScene& scene, const pipeline::Pipe
         {"varyings", "float slots packed four to a vec4: v_slot0 holds slots 0-3"},
         {"samplers", "uniform sN reads texture binding N"},
         {"blend", "alpha = (SRC_ALPHA, ONE_MINUS_SRC_ALPHA), additive = (ONE, ONE)"},
-        {"geometry", "the scene mesh or a screen quad; vertex data is not exported"},
+        {"geometry", "the scene mesh or a screen quad; its vertex data in data/ with --data"},
         {"rows",
          "row 0 of a target is the image's top; gl_FragCoord.y counts from the bottom, so "
          "per-pixel noise seeded by it is mirrored (its statistics are not)"}}}};

@@ -10,9 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "gpu_model/device_profile.h"
-#include "pipeline/config.h"
-#include "pipeline/gpu_scene.h"
+#include "driver/frame_job.h"
 #include "sim/shader_lang.h"
 
 namespace skinsim::driver {
@@ -22,11 +20,9 @@ struct ExportedFrame {
   std::map<std::string, std::string> files;  // path relative to the export → contents
 };
 
-// Renders one frame of a resolved config (resolve_config) on the emulated GPU and records
-// every pass it executes; `with_data` adds the binary payloads (frame_export_data.h).
-ExportedFrame export_frame(const pipeline::GpuScene& scene, const pipeline::PipelineConfig& config,
-                           const gpu_model::DeviceProfile& device, sim::sl::GlslDialect dialect,
-                           bool with_data, int threads);
+// Runs the frame job (without its reference) and records every pass the emulated GPU
+// executes; `with_data` adds the binary payloads (frame_export_data.h).
+ExportedFrame export_frame(FrameJob job, sim::sl::GlslDialect dialect, bool with_data);
 
 // "es100" or "es300"; throws UserError naming the option otherwise.
 sim::sl::GlslDialect parse_glsl_dialect(const std::string& name);

@@ -62,9 +62,6 @@ nlohmann::json ExportData::geometry(const sim::Geometry& g) {
   const std::string file = fmt::format("data/geometry_{}.bin", written_.size());
   std::string out;
   const std::size_t n = g.vertex_count;
-  const auto index_at = [&](std::size_t i) {
-    return g.indices ? g.indices[i] : static_cast<std::uint32_t>(i);
-  };
   // Every attribute, with the value ExecVertexIn gives where the mesh has none.
   nlohmann::json attributes = nlohmann::json::object();
   const auto add = [&](const char* name, int components, auto&& value) {
@@ -85,15 +82,11 @@ nlohmann::json ExportData::geometry(const sim::Geometry& g) {
   add("a_tangent", 4, [](const sim::ExecVertexIn& in) { return in.tangent(); });
   add("a_thickness", 1, [](const sim::ExecVertexIn& in) { return in.thickness(); });
   const std::size_t indices_offset = out.size();
-  const std::size_t index_count = g.indices ? g.index_count : n;
-  for (std::size_t i = 0; i < index_count; ++i) {
-    const std::uint32_t index = index_at(i);
-    append(out, &index, 1);
-  }
+  append(out, g.indices, g.index_count);  // the emulator draws indexed triangles only
   (*files_)[file] = std::move(out);
   nlohmann::json j = {{"file", file},
                       {"attributes", std::move(attributes)},
-                      {"indices", {{"offset", indices_offset}, {"count", index_count}}}};
+                      {"indices", {{"offset", indices_offset}, {"count", g.index_count}}}};
   return written_[key] = j;
 }
 

@@ -18,9 +18,11 @@ pipeline::PipelineConfig resolve_config(pipeline::PipelineConfig config,
 }
 
 FrameResult run_frame(const pipeline::GpuScene& scene, const pipeline::PipelineConfig& config,
-                      const gpu_model::DeviceProfile& device, int threads) {
+                      const gpu_model::DeviceProfile& device, int threads,
+                      const PassCapture& capture) {
   SKINSIM_CHECK(config.width > 0 && config.height > 0);  // resolve_config first
   sim::Gpu gpu(gpu_model::gpu_config(device, threads));
+  if (capture) gpu.set_pass_capture(capture);
   FrameResult r;
   r.config = config;
   r.output = pipeline::render_frame(scene, config, gpu);
@@ -38,7 +40,7 @@ FrameJobResult run_frame_job(const FrameJob& job) {
   const float aspect = static_cast<float>(job.config.width) / static_cast<float>(job.config.height);
   r.scene = std::make_unique<scene::Scene>(load_scene(job.scene, aspect));
   r.gpu_scene = std::make_unique<pipeline::GpuScene>(*r.scene);
-  r.frame = run_frame(*r.gpu_scene, job.config, *job.device, job.threads);
+  r.frame = run_frame(*r.gpu_scene, job.config, *job.device, job.threads, job.capture);
   for (const std::string& notice : r.frame.output.notices) warn(notice);
   if (job.reference) {
     r.reference =

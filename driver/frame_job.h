@@ -6,6 +6,7 @@
 // evaluate_quality) itself.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -34,9 +35,13 @@ struct FrameResult {
 pipeline::PipelineConfig resolve_config(pipeline::PipelineConfig config,
                                         const gpu_model::DeviceProfile& device);
 
+// Called with every pass once the emulated GPU has run it (sim::Gpu::set_pass_capture).
+using PassCapture = std::function<void(const sim::RenderPassDesc&)>;
+
 // Renders and times a frame of a resolved config (resolve_config).
 FrameResult run_frame(const pipeline::GpuScene& scene, const pipeline::PipelineConfig& config,
-                      const gpu_model::DeviceProfile& device, int threads);
+                      const gpu_model::DeviceProfile& device, int threads,
+                      const PassCapture& capture = {});
 
 struct FrameJob {
   const gpu_model::DeviceProfile* device = nullptr;
@@ -44,6 +49,7 @@ struct FrameJob {
   SceneSource scene;                // its `warn` receives the scene's and the frame's warnings
   int threads = 0;
   bool reference = true;  // render the reference and measure the quality against it
+  PassCapture capture;    // optional: sees every pass of the frame (`skinsim export`)
 };
 
 struct FrameJobResult {
