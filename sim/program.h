@@ -84,21 +84,32 @@ class VertexProgramOf final : public VertexProgram {
 
 //   template <class L> static typename L::vec4 fragment(const typename L::FragIn&,
 //                                                       typename L::TexUnit&, const Uniforms&);
-template <class Shader>
+// kPrecision is the program's default precision (`precision mediump float;`): a mediump
+// program runs in the ExecMediump language, its ops are counted as mediump, its source says
+// so, and its name ends in "_mediump".
+template <class Shader, Precision kPrecision = Precision::kHighp>
 class FragmentProgramOf final : public FragmentProgram {
  public:
   explicit FragmentProgramOf(typename Shader::Uniforms uniforms) : uniforms_(std::move(uniforms)) {
-    name_ = Shader::kName;
+    name_ = std::string(Shader::kName) + (kPrecision == Precision::kMediump ? "_mediump" : "");
     CountFragIn in;
     CountTexUnit tex;
     {
+      sl::PrecisionScope precision(kPrecision);
       sl::OpRecorder recorder(&profile_);
       Shader::template fragment<Count>(in, tex, uniforms_);
     }
     profile_.output_floats = 4;
   }
   glm::vec4 shade(const ExecFragIn& in, ExecTexUnit& tex) const override {
-    return Shader::template fragment<Exec>(in, tex, uniforms_);
+    if constexpr (kPrecision == Precision::kHighp) {
+      return Shader::template fragment<Exec>(in, tex, uniforms_);
+    } else {
+      sl::PrecisionScope precision(kPrecision);
+      MediumpFragIn mediump_in(in);
+      MediumpTexUnit mediump_tex(tex);
+      return Shader::template fragment<ExecMediump>(mediump_in, mediump_tex, uniforms_).v;
+    }
   }
   GlslShader glsl(sl::GlslDialect dialect) const override {
     sl::GlslEmitter body(dialect);
@@ -106,7 +117,7 @@ class FragmentProgramOf final : public FragmentProgram {
     EmitFragIn in(&io);
     EmitTexUnit tex(&io);
     const sl::EVec<4> colour = Shader::template fragment<Emit>(in, tex, uniforms_);
-    return {glsl_fragment_shader(io, body, colour.expr, dialect), io};
+    return {glsl_fragment_shader(io, body, colour.expr, dialect, kPrecision), io};
   }
 
  private:
@@ -120,6 +131,15 @@ std::shared_ptr<const VertexProgram> make_vertex_program(typename Shader::Unifor
 template <class Shader>
 std::shared_ptr<const FragmentProgram> make_fragment_program(typename Shader::Uniforms u) {
   return std::make_shared<FragmentProgramOf<Shader>>(std::move(u));
+}
+// The program at a precision chosen at run time (a knob); instantiates both.
+template <class Shader>
+std::shared_ptr<const FragmentProgram> make_fragment_program(typename Shader::Uniforms u,
+                                                             Precision precision) {
+  if (precision == Precision::kMediump) {
+    return std::make_shared<FragmentProgramOf<Shader, Precision::kMediump>>(std::move(u));
+  }
+  return make_fragment_program<Shader>(std::move(u));
 }
 
 }  // namespace skinsim::sim

@@ -41,10 +41,11 @@ const char* sampler_type(SamplerKind kind) {
   return "";
 }
 
-std::string header(GlslDialect d, const std::set<std::string>& extensions) {
+std::string header(GlslDialect d, const std::set<std::string>& extensions, Precision precision) {
   std::string s = es3(d) ? "#version 300 es\n" : "#version 100\n";
   for (const std::string& e : extensions) s += "#extension " + e + " : require\n";
-  return s + "precision highp float;\n";
+  return s + (precision == Precision::kMediump ? "precision mediump float;\n"
+                                               : "precision highp float;\n");
 }
 
 // Declarations of the packed varyings any of whose slots `used` holds.
@@ -166,7 +167,7 @@ sl::EFloat EmitTexUnit::sample_shadow(int binding, const sl::EVec<3>& coord) con
 
 std::string glsl_vertex_shader(const GlslInterface& io, const sl::GlslEmitter& body,
                                const std::string& position, GlslDialect dialect) {
-  std::string s = header(dialect, body.extensions());
+  std::string s = header(dialect, body.extensions(), Precision::kHighp);
   for (int a = 0; a < static_cast<int>(VertexAttribute::kCount); ++a) {
     if (!io.attributes.test(static_cast<size_t>(a))) continue;
     static constexpr const char* kTypes[] = {"vec3", "vec3", "vec2", "vec4", "float"};
@@ -179,8 +180,9 @@ std::string glsl_vertex_shader(const GlslInterface& io, const sl::GlslEmitter& b
 }
 
 std::string glsl_fragment_shader(const GlslInterface& io, const sl::GlslEmitter& body,
-                                 const std::string& colour, GlslDialect dialect) {
-  std::string s = header(dialect, body.extensions());
+                                 const std::string& colour, GlslDialect dialect,
+                                 Precision precision) {
+  std::string s = header(dialect, body.extensions(), precision);
   s += varying_declarations(io.varyings, es3(dialect) ? "in" : "varying");
   if (io.inverse_target_size) s += "uniform vec2 u_inv_target_size;\n";
   s += sampler_declarations(io);

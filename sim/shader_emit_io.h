@@ -125,6 +125,7 @@ struct EmitVertexOut {
 };
 
 struct Emit {
+  static constexpr bool kExecutes = false;
   using f32 = sl::EFloat;
   using vec2 = sl::EVec<2>;
   using vec3 = sl::EVec<3>;
@@ -137,9 +138,12 @@ struct Emit {
 
 // Whole shaders around an emitted body: version, extensions, precision, declarations of
 // what `io` records, and main() ending with the body's result (gl_Position, the colour).
+// Vertex shaders are highp (the GLSL ES vertex default); a fragment shader states its
+// program's default precision.
 std::string glsl_vertex_shader(const GlslInterface& io, const sl::GlslEmitter& body,
                                const std::string& position, sl::GlslDialect dialect);
 std::string glsl_fragment_shader(const GlslInterface& io, const sl::GlslEmitter& body,
-                                 const std::string& colour, sl::GlslDialect dialect);
+                                 const std::string& colour, sl::GlslDialect dialect,
+                                 Precision precision);
 
 }  // namespace skinsim::sim

@@ -102,7 +102,10 @@ struct ExecVertexOut {
   }
 };
 
+// kExecutes: the language computes the image (Exec, ExecMediump), as opposed to recording
+// the profile (Count) or spelling the source (Emit).
 struct Exec {
+  static constexpr bool kExecutes = true;
   using f32 = float;
   using vec2 = glm::vec2;
   using vec3 = glm::vec3;
@@ -193,6 +196,7 @@ struct CountVertexOut {
 };
 
 struct Count {
+  static constexpr bool kExecutes = false;
   using f32 = sl::CFloat;
   using vec2 = sl::CVec<2>;
   using vec3 = sl::CVec<3>;
@@ -205,5 +209,7 @@ struct Count {
 
 }  // namespace skinsim::sim
 
-// The third language, Emit, beside Exec and Count: every shader is written against all three.
-#include "sim/shader_emit_io.h"  // IWYU pragma: export
+// The third language, Emit, beside Exec and Count: every shader is written against all three;
+// and Exec at mediump, which runs them over Count's values in FP16.
+#include "sim/shader_emit_io.h"     // IWYU pragma: export
+#include "sim/shader_mediump_io.h"  // IWYU pragma: export

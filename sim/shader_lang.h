@@ -14,6 +14,8 @@
 //   - exp2, log2, sqrt, rsqrt, reciprocal (division), sin, cos are transcendental, one per
 //     lane; pow = log2 + mul + exp2;
 //   - ops whose operands are all uniforms/constants are folded (not counted);
+//   - a program's ops are counted at its default precision (PrecisionScope), so the profile
+//     says how many of them a device may issue at its mediump rate;
 //   - texture reads: coordinates that are an interpolated varying used unmodified are
 //     independent (fetched before the program runs, hardware.md "dependent reads"); any
 //     computed coordinate, or an explicit LOD, makes the read dependent.
@@ -25,9 +27,36 @@
 #include <glm/glm.hpp>
 #include <type_traits>
 
+#include "sim/fp16.h"
 #include "sim/op_profile.h"
 
 namespace skinsim::sim::sl {
+
+// ---------------------------------------------------------------------------------------
+// Default precision of the program being counted or run, the scope GLSL ES's
+// `precision mediump float;` sets. At mediump every recorded value (CVec) is rounded to FP16
+// when it is made, so a program run over CVec computes what FP16 hardware computes, and
+// its ops are counted as mediump. Nests like OpRecorder.
+class PrecisionScope {
+ public:
+  explicit PrecisionScope(Precision precision) : previous_(current_) { current_ = precision; }
+  ~PrecisionScope() { current_ = previous_; }
+  PrecisionScope(const PrecisionScope&) = delete;
+  PrecisionScope& operator=(const PrecisionScope&) = delete;
+  static Precision current() { return current_; }
+
+ private:
+  static inline thread_local Precision current_ = Precision::kHighp;
+  Precision previous_;
+};
+
+template <int N>
+inline glm::vec<N, float> at_current_precision(glm::vec<N, float> v) {
+  if (PrecisionScope::current() == Precision::kMediump) {
+    for (int i = 0; i < N; ++i) v[i] = round_to_fp16(v[i]);
+  }
+  return v;
+}
 
 // ---------------------------------------------------------------------------------------
 // Op recording (Count mode only).
@@ -40,14 +69,21 @@ class OpRecorder {
 
   static void alu(int lanes, int count = 1) {
     if (!current_) return;
+    const bool mediump = PrecisionScope::current() == Precision::kMediump;
     if (lanes > 1) {
       current_->vector_ops += count;
+      if (mediump) current_->vector_ops_mediump += count;
     } else {
       current_->scalar_ops += count;
+      if (mediump) current_->scalar_ops_mediump += count;
     }
   }
   static void transcendental(int lanes) {
-    if (current_) current_->transcendental_ops += lanes;
+    if (!current_) return;
+    current_->transcendental_ops += lanes;
+    if (PrecisionScope::current() == Precision::kMediump) {
+      current_->transcendental_ops_mediump += lanes;
+    }
   }
   static void texture(bool dependent) {
     if (!current_) return;
@@ -84,8 +120,9 @@ inline auto raw(const CVec<N>& c);
 template <typename... Parts>
 inline bool all_constant(const Parts&... parts);
 
-// A recorded value: the real value (so Count-mode runs compute real results) plus whether
-// it is a constant (folded, free) and whether it is an unfused product.
+// A recorded value: the real value at the current precision (so Count-mode runs compute
+// real results, and a mediump program run over CVec computes in FP16) plus whether it is a
+// constant (folded, free) and whether it is an unfused product.
 template <int N>
 struct CVec {
   using value_type = glm::vec<N, float>;
@@ -94,14 +131,15 @@ struct CVec {
   bool product = false;  // result of a multiply not yet fused into an add
 
   CVec() = default;
-  CVec(const value_type& value) : v(value) {}  // NOLINT: constants convert implicitly
-  CVec(float s) requires(N == 1) : v(s) {}     // NOLINT
-  explicit CVec(float s) requires(N > 1) : v(s) {}
+  CVec(const value_type& value)  // NOLINT: constants convert implicitly
+      : v(at_current_precision<N>(value)) {}
+  CVec(float s) requires(N == 1) : CVec(value_type(s)) {}  // NOLINT
+  explicit CVec(float s) requires(N > 1) : CVec(value_type(s)) {}
   template <int M>
   requires(M == 1 && N > 1) explicit CVec(const CVec<M>& s) : v(s.v.x), constant(s.constant) {}
   template <typename... Parts>
   requires(sizeof...(Parts) >= 2) CVec(const Parts&... parts)
-      : v(raw(parts)...), constant(all_constant(parts...)) {}
+      : v(at_current_precision<N>(value_type(raw(parts)...))), constant(all_constant(parts...)) {}
   static CVec computed(const value_type& value, bool is_product = false) {
     CVec c(value);
     c.constant = false;

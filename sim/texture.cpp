@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "sim/fp16.h"
+
 namespace skinsim::sim {
 
 int bytes_per_texel(TexelFormat format) {
@@ -54,20 +56,6 @@ TexelFormat parse_format(const std::string& name) {
 }
 
 namespace {
-
-// Round to the nearest IEEE 754 binary16 value (ties to even), saturating to +-65504.
-float round_to_half(float v) {
-  if (!std::isfinite(v)) return v;
-  const float a = std::fabs(v);
-  if (a >= 65504.0f) return std::copysign(65504.0f, v);
-  if (a < 6.103515625e-05f) {  // subnormal half: fixed step 2^-24
-    return std::nearbyint(v * 16777216.0f) / 16777216.0f;
-  }
-  int exponent = 0;
-  std::frexp(a, &exponent);                            // a = m * 2^exponent, m in [0.5,1)
-  const float step = std::ldexp(1.0f, exponent - 11);  // 10 stored mantissa bits
-  return std::copysign(std::nearbyint(a / step) * step, v);
-}
 
 // k / 255 for every byte value k: the float an RGBA8 channel holds.
 constexpr std::array<float, 256> make_byte_values() {
@@ -129,7 +117,7 @@ void quantize_span(const glm::vec4* values, glm::vec4* stored, std::size_t count
     case TexelFormat::kRGBA8:
       return each_channel(quantize_unorm8);
     case TexelFormat::kRGBA16F:
-      return each_channel(round_to_half);
+      return each_channel(round_to_fp16);
     case TexelFormat::kRGBA32F:
       std::copy(values, values + count, stored);
       return;

@@ -20,7 +20,7 @@ namespace skinsim::pipeline::shaders {
 // ALU op each (the USSE derives them from neighbouring pixels of the 2x2 quad).
 template <class L>
 typename L::vec3 fwidth3(const typename L::FragIn& in, int slot) {
-  if constexpr (std::is_same_v<L, sim::Exec>) {
+  if constexpr (L::kExecutes) {
     const auto d = in.direction(slot);
     return sl::abs(d.ddx) + sl::abs(d.ddy);
   } else if constexpr (std::is_same_v<L, sim::Emit>) {

@@ -95,8 +95,8 @@ template <class L>
 typename L::vec4 sample_tiled(typename L::TexUnit& tex, int unit,
                               const decltype(std::declval<typename L::FragIn>().texcoord(0))& uv,
                               float tiling) {
-  if constexpr (std::is_same_v<L, sim::Exec>) {
-    return tex.sample(unit, sim::Varying<2>{uv.value * tiling, uv.ddx * tiling, uv.ddy * tiling});
+  if constexpr (L::kExecutes) {
+    return tex.sample(unit, sim::scaled(uv, tiling));
   } else if constexpr (std::is_same_v<L, sim::Emit>) {
     return tex.sample(unit, sim::EmitVarying<2>{uv.value * tiling});  // texture2D's derivatives
   } else {
