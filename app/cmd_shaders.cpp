@@ -29,14 +29,19 @@ Command add_shaders_command(CLI::App& app) {
       fmt::print("{}\n", out.dump(2));
       return 0;
     }
-    fmt::print("{:<30} {:>6} {:>6} {:>6} {:>6} {:>7} {:>6} {:>7}  {}\n", "shader", "vector",
-               "scalar", "transc", "tex_in", "tex_dep", "inputs", "outputs", "techniques");
+    // mediump: how many of the ALU ops run at mediump (the skin_precision knob's variants).
+    fmt::print("{:<38} {:>6} {:>6} {:>6} {:>7} {:>6} {:>7} {:>6} {:>7}  {}\n", "shader", "vector",
+               "scalar", "transc", "mediump", "tex_in", "tex_dep", "inputs", "outputs",
+               "techniques");
     for (const auto& [s, techniques] : catalog) {
       const sim::OpProfile& p = s.profile;
       const bool every = techniques.size() == pipeline::all_techniques().size();
-      fmt::print("{:<30} {:>6} {:>6} {:>6} {:>6} {:>7} {:>6} {:>7}  {}\n", s.name, p.vector_ops,
-                 p.scalar_ops, p.transcendental_ops, p.texture_reads_independent,
-                 p.texture_reads_dependent, p.input_floats, p.output_floats,
+      const std::uint32_t mediump =
+          p.vector_ops_mediump + p.scalar_ops_mediump + p.transcendental_ops_mediump;
+      fmt::print("{:<38} {:>6} {:>6} {:>6} {:>7} {:>6} {:>7} {:>6} {:>7}  {}\n", s.name,
+                 p.vector_ops, p.scalar_ops, p.transcendental_ops, mediump,
+                 p.texture_reads_independent, p.texture_reads_dependent, p.input_floats,
+                 p.output_floats,
                  every ? std::string("all") : fmt::format("{}", fmt::join(techniques, ",")));
     }
     return 0;

@@ -37,6 +37,17 @@ void check_counters(const sim::PassCounters& pass, const DeviceProfile& profile)
     fail(fmt::format("tiles has {} entries, expected tiles_x * tiles_y = {} * {}",
                      pass.tiles.size(), pass.tiles_x, pass.tiles_y));
   }
+  for (std::size_t d = 0; d < pass.draws.size(); ++d) {
+    for (const sim::OpProfile* ops :
+         {&pass.draws[d].vertex_profile, &pass.draws[d].fragment_profile}) {
+      if (ops->vector_ops_mediump > ops->vector_ops || ops->scalar_ops_mediump > ops->scalar_ops ||
+          ops->transcendental_ops_mediump > ops->transcendental_ops) {
+        fail(fmt::format("draws[{}] ({}): more mediump ops than ops of a class", d,
+                         ops == &pass.draws[d].vertex_profile ? pass.draws[d].vertex_program
+                                                              : pass.draws[d].fragment_program));
+      }
+    }
+  }
   std::uint64_t refs = 0, texture = 0, color_load = 0, color_store = 0, depth_load = 0,
                 depth_store = 0;
   for (std::size_t i = 0; i < pass.tiles.size(); ++i) {

@@ -44,6 +44,8 @@ const std::vector<FigureSpec>& figure_specs() {
       {"alu.vector_op_cycles", &P::vector_op_cycles, op_cycles, "cycles", false},
       {"alu.scalar_op_cycles", &P::scalar_op_cycles, op_cycles, "cycles", false},
       {"alu.transcendental_op_cycles", &P::transcendental_op_cycles, op_cycles, "cycles", false},
+      // From a 16-wide FP16 path to mediump costing more than highp (conversions).
+      {"alu.mediump_op_cost", &P::mediump_op_cost, real(1.0 / 16, 4.0), "x", false},
       // Zero when texture instructions co-issue for free.
       {"alu.texture_issue_cycles", &P::texture_issue_cycles, real(0.0, 1000.0), "cycles", false},
       {"alu.blend_cycles", &P::blend_cycles, real(0.0, 1000.0), "cycles", false},

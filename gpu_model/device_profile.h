@@ -42,6 +42,8 @@ struct DeviceProfile {
   Figure vector_op_cycles;
   Figure scalar_op_cycles;
   Figure transcendental_op_cycles;
+  // Issue cost of a mediump (FP16) vector or scalar op as a multiple of the highp one.
+  Figure mediump_op_cost;
   Figure texture_issue_cycles;  // issue slot of a texture instruction in the program
   Figure blend_cycles;          // per blended fragment (SGX blends in the USSE)
 

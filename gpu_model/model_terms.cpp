@@ -5,7 +5,14 @@ namespace skinsim::gpu_model {
 double shader_cycles(const sim::OpProfile& ops, const DeviceProfile& p) {
   // Instruction count x issue cycles per class, as an offline shader compiler reports
   // cycles (PVRShaderEditor); texture instructions take an issue slot (Imagination forum).
-  return ops.vector_ops * p.vector_op_cycles.value + ops.scalar_ops * p.scalar_op_cycles.value +
+  // Mediump vector and scalar ops issue at alu.mediump_op_cost times the highp cost; no
+  // source gives SGX a separate FP16 rate for transcendentals, so they cost the same.
+  const double mediump = p.mediump_op_cost.value;
+  const auto at_precision = [mediump](std::uint32_t all, std::uint32_t at_mediump) {
+    return (all - at_mediump) + mediump * at_mediump;
+  };
+  return at_precision(ops.vector_ops, ops.vector_ops_mediump) * p.vector_op_cycles.value +
+         at_precision(ops.scalar_ops, ops.scalar_ops_mediump) * p.scalar_op_cycles.value +
          ops.transcendental_ops * p.transcendental_op_cycles.value +
          ops.texture_reads() * p.texture_issue_cycles.value;
 }

@@ -27,6 +27,16 @@ const char* gamma_name(GammaMode mode) {
   return mode == GammaMode::kSquare ? "square" : "srgb";
 }
 
+sim::Precision parse_precision(const std::string& text) {
+  if (text == "highp") return sim::Precision::kHighp;
+  if (text == "mediump") return sim::Precision::kMediump;
+  throw ConfigError("skin_precision: expected 'highp' or 'mediump', got '" + text + "'");
+}
+
+const char* precision_name(sim::Precision precision) {
+  return precision == sim::Precision::kMediump ? "mediump" : "highp";
+}
+
 namespace {
 constexpr std::pair<SpecularModel, const char*> kSpecularNames[] = {
     {SpecularModel::kKsLut, "ks_lut"},

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/op_profile.h"
 #include "sim/texture.h"
 #include "util/user_error.h"
 
@@ -100,6 +101,8 @@ struct PipelineConfig {
   // Technique knobs (docs/techniques.md). Specular model of every technique's skin shader;
   // only ks_lut reads the BRDF LUT, so the lut and lut_format knobs matter only with it.
   SpecularModel specular = SpecularModel::kKsLut;
+  // Default float precision of every technique's skin fragment shader (sim/program.h).
+  sim::Precision skin_precision = sim::Precision::kHighp;
   int preintegrated_lut_width = 64;   // N.L axis
   int preintegrated_lut_height = 64;  // curvature axis
   CurvatureSource curvature = CurvatureSource::kVertex;
@@ -135,6 +138,8 @@ std::string get_config_field(const PipelineConfig& config, const std::string& ke
 std::pair<int, int> parse_size(const std::string& text, const std::string& what);
 GammaMode parse_gamma(const std::string& text);
 const char* gamma_name(GammaMode mode);
+sim::Precision parse_precision(const std::string& text);
+const char* precision_name(sim::Precision precision);
 SpecularModel parse_specular(const std::string& text);
 const char* specular_name(SpecularModel model);
 CurvatureSource parse_curvature(const std::string& text);

@@ -146,6 +146,12 @@ const std::vector<KnobSpec>& common_knobs() {
                                    "Specular intensity rho_s (d'Eon & Luebke)",
                                    &PipelineConfig::specular_intensity, {0.0, 1.0})),
         specular_knob(),
+        choice_knob("skin_precision", "--skin-precision",
+                    "Default float precision of the skin fragment shader (GLSL ES `precision "
+                    "... float;`): highp computes in FP32; mediump rounds every value to FP16 "
+                    "and its ALU ops cost the device's alu.mediump_op_cost",
+                    "highp or mediump", &PipelineConfig::skin_precision, parse_precision,
+                    precision_name),
         std::move(lut),
         lut_format_knob(),
         shapes_reference(choice_knob(

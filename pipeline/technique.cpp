@@ -43,7 +43,7 @@ bool knob_applies(const PipelineConfig& config, const std::string& knob) {
 
 std::vector<std::string> summary_knobs(const PipelineConfig& config) {
   std::vector<std::string> names = technique_knobs(config.technique);
-  for (const char* shading : {"specular", "lut", "lut_format"}) {
+  for (const char* shading : {"specular", "lut", "lut_format", "skin_precision"}) {
     if (knob_applies(config, shading)) names.emplace_back(shading);
   }
   return names;

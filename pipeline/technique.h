@@ -57,8 +57,9 @@ std::vector<std::string> technique_knobs(const std::string& technique);
 // technique's own, and the knob's own condition (KnobSpec::applies) holds.
 bool knob_applies(const PipelineConfig& config, const std::string& knob);
 
-// The knobs a one-line summary of a frame names: the technique's own, then the specular model
-// and, when it reads it, the BRDF LUT's (the common knobs that tell techniques' frames apart).
+// The knobs a one-line summary of a frame names: the technique's own, then the specular model,
+// when it reads it the BRDF LUT's, and the skin shader's precision (the common knobs that tell
+// techniques' frames apart).
 std::vector<std::string> summary_knobs(const PipelineConfig& config);
 
 // Whether the config's technique uses the `specular` knob (all but those with their own model).

@@ -11,7 +11,8 @@ template <shaders::DiffusionSource kSource>
 std::shared_ptr<const sim::FragmentProgram> diffused_skin_program(
     const PipelineConfig& config, const shaders::TechniqueUniforms& u) {
   return with_gamma_and_specular(config, [&](auto gamma, auto spec) {
-    return sim::make_fragment_program<shaders::DiffusedSkinFS<gamma(), spec(), kSource>>(u);
+    return sim::make_fragment_program<shaders::DiffusedSkinFS<gamma(), spec(), kSource>>(
+        u, config.skin_precision);
   });
 }
 

@@ -107,7 +107,9 @@ std::vector<sim::NamedProfile> screen_diffusion_programs() {
   return {fragment_entry<shaders::DiffuseDepthFS>(), fragment_entry<shaders::DiffuseDepthOrthoFS>(),
           vertex_entry<shaders::QuadVS>(),
           fragment_entry<shaders::DiffusedSkinFS<GammaMode::kSquare, SpecularModel::kKsLut,
-                                                 shaders::DiffusionSource::kScreen>>()};
+                                                 shaders::DiffusionSource::kScreen>>(),
+          mediump_fragment_entry<shaders::DiffusedSkinFS<GammaMode::kSquare, SpecularModel::kKsLut,
+                                                         shaders::DiffusionSource::kScreen>>()};
 }
 
 }  // namespace skinsim::pipeline

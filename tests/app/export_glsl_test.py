@@ -32,7 +32,7 @@ def declared(source, pattern):
     return set(re.findall(pattern, source))
 
 
-def check_export(skinsim, validator, technique, dialect, out):
+def check_export(skinsim, validator, technique, dialect, out, knobs=()):
     failures = []
     shutil.rmtree(out, ignore_errors=True)
     # A small head, textures, shadow map and texture-space atlas: the same passes and
@@ -40,10 +40,11 @@ def check_export(skinsim, validator, technique, dialect, out):
     subprocess.run([skinsim, "export", "--technique", technique, "--resolution", RESOLUTION,
                     "--head-triangles", "5000", "--texture-size", "128",
                     "--shadow-map-size", "256", "--texture-space-size", "256",
-                    "--glsl", dialect, "--out", out], check=True, stdout=subprocess.DEVNULL)
+                    "--glsl", dialect, "--out", out] + list(knobs), check=True,
+                   stdout=subprocess.DEVNULL)
     with open(os.path.join(out, "frame.json")) as f:
         frame = json.load(f)
-    where = f"{technique} {dialect}"
+    where = " ".join([technique, dialect] + list(knobs))
     if frame["technique"] != technique or frame["glsl"] != dialect:
         failures.append(f"{where}: frame.json names {frame['technique']} {frame['glsl']}")
     version = "#version 300 es" if dialect == "es300" else "#version 100"
@@ -114,9 +115,23 @@ def main():
         for dialect in ("es100", "es300"):
             failures += check_export(skinsim, validator, technique, dialect,
                                      os.path.join(out_dir, f"{technique}_{dialect}"))
+    # The skin shader at mediump: highp vertex shaders link with a mediump fragment shader.
+    for technique in ("mobile", "urp"):
+        for dialect in ("es100", "es300"):
+            out = os.path.join(out_dir, f"{technique}_{dialect}_mediump")
+            failures += check_export(skinsim, validator, technique, dialect, out,
+                                     ("--skin-precision", "mediump"))
+            mediump = [n for n in os.listdir(os.path.join(out, "shaders"))
+                       if n.endswith("_mediump.frag")]
+            for name in mediump:
+                with open(os.path.join(out, "shaders", name)) as f:
+                    if "precision mediump float;\n" not in f.read():
+                        failures.append(f"{technique} {dialect}: {name} is not mediump")
+            if not mediump:
+                failures.append(f"{technique} {dialect} mediump: no *_mediump.frag exported")
     for failure in failures:
         print(failure)
-    print(f"{len(names)} techniques x 2 GLSL versions: {len(failures)} failures")
+    print(f"{len(names)} techniques x 2 GLSL versions, and 2 at mediump: {len(failures)} failures")
     return 1 if failures else 0
 
 

@@ -2,8 +2,11 @@
 """Golden test of one skin technique: render the built-in head with the default knobs and
 compare the frame and the cost model's numbers with the files under tests/golden/data/.
 
-Usage: golden_test.py SKINSIM DATA_DIR OUT_DIR TECHNIQUE [--update]
+Usage: golden_test.py SKINSIM DATA_DIR OUT_DIR GOLDEN [--update]
        golden_test.py SKINSIM DATA_DIR OUT_DIR --coverage
+
+GOLDEN is a directory of DATA_DIR: a technique's name (its defaults), or TECHNIQUE@VARIANT
+whose args.txt holds the knobs that differ (e.g. mobile@mediump: --skin-precision mediump).
 
 The frame is rendered with 1, 2 and 8 host threads (SKINSIM_GOLDEN_THREADS, e.g. "2", picks
 others: the sanitizer stage of scripts/test.sh renders once); each must match the golden. Set
@@ -22,10 +25,23 @@ DEVICE = "ipad4"
 SIGNIFICANT_DIGITS = 9  # modelled times and ratios are compared to this printed precision
 
 
-def render(skinsim, technique, threads, out_dir):
+def technique_of(golden):
+    return golden.split("@")[0]
+
+
+def variant_args(golden_dir):
+    """The knobs a TECHNIQUE@VARIANT golden sets (its args.txt), none for a technique's own."""
+    path = os.path.join(golden_dir, "args.txt")
+    if not os.path.exists(path):
+        return []
+    with open(path) as f:
+        return f.read().split()
+
+
+def render(skinsim, technique, args, threads, out_dir):
     subprocess.run([skinsim, "run", "--technique", technique, "--device", DEVICE,
                     "--resolution", RESOLUTION, "--no-reference", "--threads", str(threads),
-                    "--out", out_dir], check=True, stdout=subprocess.DEVNULL)
+                    "--out", out_dir] + args, check=True, stdout=subprocess.DEVNULL)
     with open(os.path.join(out_dir, "result.json")) as f:
         result = json.load(f)
     numbers = {"counters": result["counters"], "timing": result["timing"]}
@@ -168,7 +184,11 @@ def golden_thread_counts():
 def check_technique(skinsim, data_dir, out_dir, technique, update):
     golden_dir = os.path.join(data_dir, technique)
     work_dir = os.path.join(out_dir, technique)
-    renders = {threads: render(skinsim, technique, threads,
+    args = variant_args(golden_dir)
+    if "@" in technique and not args:
+        print(f"golden {technique}: a variant needs {golden_dir}/args.txt with its knobs")
+        return False
+    renders = {threads: render(skinsim, technique_of(technique), args, threads,
                                os.path.join(work_dir, f"threads{threads}"))
                for threads in golden_thread_counts()}
     if update:
@@ -209,7 +229,8 @@ def check_coverage(skinsim, data_dir):
     listed = subprocess.run([skinsim, "techniques", "--json"], check=True, capture_output=True,
                             text=True).stdout
     techniques = {t["name"] for t in json.loads(listed)}
-    stored = {d for d in os.listdir(data_dir) if os.path.isdir(os.path.join(data_dir, d))}
+    stored = {technique_of(d) for d in os.listdir(data_dir)
+              if os.path.isdir(os.path.join(data_dir, d))}
     for missing in sorted(techniques - stored):
         print(f"golden: technique '{missing}' has no golden in {data_dir}; record it with "
               f"tests/golden/golden_test.py SKINSIM {data_dir} OUT {missing} --update, "

@@ -296,6 +296,25 @@ TEST(PassCost, InconsistentCountersAreRejectedWithTheField) {
   sim::PassCounters sums = pass;
   sums.color_store_bytes += 1;
   EXPECT_NE(counter_error(sums, p).find("color_store_bytes"), std::string::npos);
+
+  sim::PassCounters mediump = pass;
+  mediump.draws[0].fragment_profile.vector_ops_mediump = 7;  // of 6
+  EXPECT_NE(counter_error(mediump, p).find("more mediump ops"), std::string::npos);
+}
+
+TEST(PassCost, MediumpOpsCostTheProfilesMediumpShare) {
+  DeviceProfile p = round_profile();
+  p.mediump_op_cost.value = 0.5;
+  sim::PassCounters pass = make_pass(4, 4, 4);
+  const auto draw = add_draw(pass, 10);
+  pass.draws[draw].fragment_profile.vector_ops_mediump = 6;  // 4 highp + 6 x 0.5
+  pass.draws[draw].fragment_profile.transcendental_ops = 2;  // at mediump: no FP16 rate
+  pass.draws[draw].fragment_profile.transcendental_ops_mediump = 2;
+  for (std::size_t i = 0; i < pass.tiles.size(); ++i) shade(pass, i, draw, 1024);
+  sum_tiles(pass);
+  const PassTiming t = estimate_pass(pass, p);
+  const double cycles = 4 + 6 * 0.5 + 2 * p.transcendental_op_cycles.value;
+  for (const TileTiming& tile : t.tiles) EXPECT_DOUBLE_EQ(tile.alu_cycles, 1024.0 * cycles / 8);
 }
 
 }  // namespace

@@ -81,8 +81,10 @@ sim::PassCounters framebuffer_pass(const GpuScene& gs, const View& view, const P
   const auto shading = [&](const GpuMaterial& mat, sim::DrawCall& d) {
     const shaders::TechniqueUniforms u = technique_uniforms(view, cfg, lights, mat);
     d.fragment_program = with_gamma_and_specular(cfg, [&](auto gamma, auto spec) {
-      if (lod) return sim::make_fragment_program<shaders::SkinLodFS<gamma(), spec()>>(u);
-      return sim::make_fragment_program<shaders::SkinFS<gamma(), spec()>>(u);
+      if (lod)
+        return sim::make_fragment_program<shaders::SkinLodFS<gamma(), spec()>>(u,
+                                                                               cfg.skin_precision);
+      return sim::make_fragment_program<shaders::SkinFS<gamma(), spec()>>(u, cfg.skin_precision);
     });
     d.textures.textures[shaders::SkinBindings::kIrradiance] = irradiance;
     bind_brdf_lut(lut, d);

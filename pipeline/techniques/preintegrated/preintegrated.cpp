@@ -61,10 +61,12 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLig
     d.fragment_program = with_gamma_and_specular(cfg, [&](auto gamma, auto spec) {
       if (cfg.curvature == CurvatureSource::kVertex) {
         return sim::make_fragment_program<
-            shaders::PreintegratedFS<gamma(), spec(), CurvatureSource::kVertex>>(u);
+            shaders::PreintegratedFS<gamma(), spec(), CurvatureSource::kVertex>>(
+            u, cfg.skin_precision);
       }
       return sim::make_fragment_program<
-          shaders::PreintegratedFS<gamma(), spec(), CurvatureSource::kDerivatives>>(u);
+          shaders::PreintegratedFS<gamma(), spec(), CurvatureSource::kDerivatives>>(
+          u, cfg.skin_precision);
     });
     d.textures.textures[shaders::TechniqueBindings::kPreintegratedLut] = &lut;
     if (curvature) d.textures.textures[shaders::TechniqueBindings::kCurvature] = &*curvature;
@@ -81,7 +83,9 @@ std::vector<sim::NamedProfile> programs() {
   constexpr SpecularModel kKsLut = SpecularModel::kKsLut;
   return {
       fragment_entry<shaders::PreintegratedFS<kSquare, kKsLut, CurvatureSource::kVertex>>(),
-      fragment_entry<shaders::PreintegratedFS<kSquare, kKsLut, CurvatureSource::kDerivatives>>()};
+      fragment_entry<shaders::PreintegratedFS<kSquare, kKsLut, CurvatureSource::kDerivatives>>(),
+      mediump_fragment_entry<
+          shaders::PreintegratedFS<kSquare, kKsLut, CurvatureSource::kVertex>>()};
 }
 
 KnobSpec shadow_scatter_knob() {

@@ -110,7 +110,9 @@ std::vector<sim::NamedProfile> programs() {
           vertex_entry<shaders::QuadVS>(),
           fragment_entry<shaders::UvCombineFS>(),
           fragment_entry<shaders::DiffusedSkinFS<GammaMode::kSquare, SpecularModel::kKsLut,
-                                                 shaders::DiffusionSource::kUv>>()};
+                                                 shaders::DiffusionSource::kUv>>(),
+          mediump_fragment_entry<shaders::DiffusedSkinFS<GammaMode::kSquare, SpecularModel::kKsLut,
+                                                         shaders::DiffusionSource::kUv>>()};
 }
 
 }  // namespace

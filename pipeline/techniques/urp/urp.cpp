@@ -93,9 +93,11 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLig
     shaders::UrpUniforms u = urp_uniforms(gs, cfg, technique_uniforms(out.view, cfg, lights, mat));
     u.ssao = ao_texture.has_value();
     if (cfg.gamma == GammaMode::kSquare) {
-      d.fragment_program = sim::make_fragment_program<shaders::UrpFS<GammaMode::kSquare>>(u);
+      d.fragment_program =
+          sim::make_fragment_program<shaders::UrpFS<GammaMode::kSquare>>(u, cfg.skin_precision);
     } else {
-      d.fragment_program = sim::make_fragment_program<shaders::UrpFS<GammaMode::kSrgb>>(u);
+      d.fragment_program =
+          sim::make_fragment_program<shaders::UrpFS<GammaMode::kSrgb>>(u, cfg.skin_precision);
     }
     using B = shaders::UrpBindings;
     // The skin pass binds the cosine-filtered cube at unit 2; urp reads no such cube.
@@ -116,6 +118,7 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLig
 std::vector<sim::NamedProfile> programs() {
   std::vector<sim::NamedProfile> list = ssao_programs(PipelineConfig{}.urp_ssao_taps);
   list.push_back(fragment_entry<shaders::UrpFS<GammaMode::kSquare>>());
+  list.push_back(mediump_fragment_entry<shaders::UrpFS<GammaMode::kSquare>>());
   return list;
 }
 

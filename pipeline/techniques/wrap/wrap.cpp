@@ -18,7 +18,7 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLig
   const auto shading = [&](const GpuMaterial& mat, sim::DrawCall& d) {
     const shaders::TechniqueUniforms u = technique_uniforms(out.view, cfg, lights, mat);
     d.fragment_program = with_gamma_and_specular(cfg, [&](auto gamma, auto spec) {
-      return sim::make_fragment_program<shaders::WrapFS<gamma(), spec()>>(u);
+      return sim::make_fragment_program<shaders::WrapFS<gamma(), spec()>>(u, cfg.skin_precision);
     });
     bind_brdf_lut(brdf_lut, d);
   };
