@@ -130,10 +130,11 @@ TEST(Cli, DevicesListsGoodProfilesAndNamesBrokenOnes) {
   const auto dir = temp_dir("devices");
   std::filesystem::create_directories(dir / "devices");
   for (const char* name : {"ipad3", "ipad4"}) {
-    std::filesystem::copy_file(std::string(SKINSIM_DATA_DIR) + "/devices/" + name + ".toml",
-                               dir / "devices" / (std::string(name) + ".toml"));
+    std::filesystem::copy_file(
+        std::string(skinsim::test_paths::kDataDir) + "/devices/" + name + ".toml",
+        dir / "devices" / (std::string(name) + ".toml"));
   }
-  std::ifstream in(std::string(SKINSIM_DATA_DIR) + "/devices/ipad4.toml");
+  std::ifstream in(std::string(skinsim::test_paths::kDataDir) + "/devices/ipad4.toml");
   std::string profile((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   profile.replace(profile.find("value = 300.0"), 13, "value = 1e-300");
   std::ofstream(dir / "devices" / "broken.toml") << profile;
@@ -162,7 +163,7 @@ double frame_ms_of(const std::filesystem::path& result_json) {
 // to contain it) runs the same frame faster, by at most the clock ratio.
 TEST(Cli, UserProfileWithHigherClockRunsFaster) {
   const auto dir = temp_dir("whatif");
-  std::ifstream in(std::string(SKINSIM_DATA_DIR) + "/devices/ipad4.toml");
+  std::ifstream in(std::string(skinsim::test_paths::kDataDir) + "/devices/ipad4.toml");
   std::string profile((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const std::string from = "value = 300.0\nrange = [280.0, 300.0]";
   ASSERT_NE(profile.find(from), std::string::npos);
@@ -182,7 +183,7 @@ TEST(Cli, UserProfileWithHigherClockRunsFaster) {
 
 TEST(Cli, InvalidProfileNamesTheField) {
   const auto dir = temp_dir("badprofile");
-  std::ifstream in(std::string(SKINSIM_DATA_DIR) + "/devices/ipad4.toml");
+  std::ifstream in(std::string(skinsim::test_paths::kDataDir) + "/devices/ipad4.toml");
   std::string profile((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   profile.replace(profile.find("value = 300.0"), 13, "value = -3.0");
   std::ofstream(dir / "bad.toml") << profile;
@@ -192,10 +193,11 @@ TEST(Cli, InvalidProfileNamesTheField) {
 }
 
 TEST(Cli, RunsTheRealHeadScanAndWritesResults) {
-  if (!std::filesystem::exists(SKINSIM_TEST_LEE)) GTEST_SKIP() << "asset not present";
+  if (!std::filesystem::exists(skinsim::test_paths::kLeePerrySmith))
+    GTEST_SKIP() << "asset not present";
   const auto dir = temp_dir("lee");
   const Result r =
-      run(std::string("run --scene ") + SKINSIM_TEST_LEE +
+      run(std::string("run --scene ") + skinsim::test_paths::kLeePerrySmith +
           " --skin-materials all --units-per-mm 0.035 --resolution 512x384 --out " + dir.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   for (const char* f : {"frame.png", "reference.png", "result.json", "irradiance.png"}) {
@@ -235,10 +237,11 @@ TEST(Cli, OrthographicCameraRendersWithReference) {
 // Without --units-per-mm the scan (7.95 units tall) is read as metres: the run says so, says
 // why the LOD shader was chosen, and records both in result.json's "warnings".
 TEST(Cli, ScanInWrongUnitsWarnsAboutSizeAndLod) {
-  if (!std::filesystem::exists(SKINSIM_TEST_LEE)) GTEST_SKIP() << "asset not present";
+  if (!std::filesystem::exists(skinsim::test_paths::kLeePerrySmith))
+    GTEST_SKIP() << "asset not present";
   const auto dir = temp_dir("lee_units");
   const Result r =
-      run(std::string("run --scene ") + SKINSIM_TEST_LEE +
+      run(std::string("run --scene ") + skinsim::test_paths::kLeePerrySmith +
           " --skin-materials all --no-reference --resolution 256x192 --out " + dir.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   for (const char* expected :
@@ -295,12 +298,14 @@ TEST(Cli, SweepRefusesBadOutHugeSweepsAndOutOfRangeIntegers) {
 // measured over the whole frame, the sweep says once why there are no skin metrics and what to
 // pass, and recommends by FLIP over the frame.
 TEST(Cli, SweepWithoutSkinComparesWholeFrames) {
-  if (!std::filesystem::exists(SKINSIM_TEST_LEE)) GTEST_SKIP() << "asset not present";
+  if (!std::filesystem::exists(skinsim::test_paths::kLeePerrySmith))
+    GTEST_SKIP() << "asset not present";
   const auto dir = temp_dir("sweep_noskin");
-  const Result r = run(std::string("sweep --no-charts --scene ") + SKINSIM_TEST_LEE +
-                       " --skin-materials nosuch --units-per-mm 0.04 --scales 0.5,0.25 --luts "
-                       "8x32 --resolutions 128x96 --out " +
-                       dir.string());
+  const Result r =
+      run(std::string("sweep --no-charts --scene ") + skinsim::test_paths::kLeePerrySmith +
+          " --skin-materials nosuch --units-per-mm 0.04 --scales 0.5,0.25 --luts "
+          "8x32 --resolutions 128x96 --out " +
+          dir.string());
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("warning: 128x96: no skin in the frame"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("no skin in the frame: --skin-materials nosuch match no material of "
@@ -316,9 +321,10 @@ TEST(Cli, SweepWithoutSkinComparesWholeFrames) {
 // `run` on a scene without skin renders and writes everything, warns why, and leaves the skin
 // metrics out of result.json (saying why) while the frame metrics are there.
 TEST(Cli, RunWithoutSkinWritesFrameMetricsAndSaysWhy) {
-  if (!std::filesystem::exists(SKINSIM_TEST_LEE)) GTEST_SKIP() << "asset not present";
+  if (!std::filesystem::exists(skinsim::test_paths::kLeePerrySmith))
+    GTEST_SKIP() << "asset not present";
   const auto dir = temp_dir("run_noskin");
-  const Result r = run(std::string("run --scene ") + SKINSIM_TEST_LEE +
+  const Result r = run(std::string("run --scene ") + skinsim::test_paths::kLeePerrySmith +
                        " --units-per-mm 0.04 --resolution 128x96 --out " + dir.string());
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("no material is skin by its extras.skinsim.kind"), std::string::npos)

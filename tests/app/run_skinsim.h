@@ -1,4 +1,5 @@
-// Runs the skinsim binary under test (SKINSIM_EXE) from a CLI test and captures what it prints.
+// Runs the skinsim binary under test (test_paths::kSkinsimExe) from a CLI test and captures what
+// it prints.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -7,6 +8,8 @@
 #include <array>
 #include <cstdio>
 #include <string>
+
+#include "tests/test_paths.h"
 
 namespace skinsim::test {
 
@@ -17,7 +20,7 @@ struct Result {
 
 // `skinsim ARGS` through the shell; exit_code is -1 when it did not exit normally.
 inline Result run(const std::string& args) {
-  const std::string command = std::string(SKINSIM_EXE) + " " + args + " 2>&1";
+  const std::string command = std::string(test_paths::kSkinsimExe) + " " + args + " 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   EXPECT_NE(pipe, nullptr);
   std::string output;

@@ -10,6 +10,7 @@
 #include "driver/frame_job.h"
 #include "gpu_model/frame_cost.h"
 #include "gpu_model/profile_loader.h"
+#include "tests/test_paths.h"
 
 namespace skinsim::budget {
 namespace {
@@ -45,7 +46,7 @@ class FrameBudget : public ::testing::Test {
     delete device_;
     delete file_;
   }
-  static constexpr const char* kDataDir = SKINSIM_TEST_DATA_DIR;
+  static inline const char* const kDataDir = test_paths::kDataDir;
   static inline BudgetFile* file_ = nullptr;
   static inline gpu_model::DeviceProfile* device_ = nullptr;
   static inline scene::Scene* scene_ = nullptr;

@@ -17,6 +17,7 @@
 #include "driver/sweep_spec.h"
 #include "reports/sweep_table.h"
 #include "sweep_test_support.h"
+#include "tests/test_paths.h"
 
 namespace skinsim::driver {
 namespace {
@@ -222,7 +223,7 @@ TEST(SweepRun, AnEditedDeviceProfileIsAnotherSweep) {
   const fs::path dir = out_dir("edited_profile");
   fs::create_directories(dir);
   const fs::path profile = dir / "mine.toml";
-  fs::copy_file(fs::path(SKINSIM_TEST_DATA_DIR) / "devices" / "ipad4.toml", profile);
+  fs::copy_file(fs::path(test_paths::kDataDir) / "devices" / "ipad4.toml", profile);
   SweepSpec spec = tiny_spec();
   spec.fixed.push_back({"device", profile.string(), "test"});
   const fs::path results = dir / "sweep";

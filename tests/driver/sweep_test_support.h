@@ -8,12 +8,14 @@
 #include <string>
 
 #include "driver/sweep_run.h"
+#include "tests/test_paths.h"
 
 namespace skinsim::driver::test {
 
-// SKINSIM_TEST_OUT_DIR/<name>, emptied; kept after the run for inspection.
+// <build>/tests/driver/sweep_test_out/<name>, emptied; kept after the run for inspection.
 inline std::filesystem::path out_dir(const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::path(SKINSIM_TEST_OUT_DIR) / name;
+  const std::filesystem::path dir =
+      std::filesystem::path(test_paths::kTestsBinaryDir) / "driver" / "sweep_test_out" / name;
   std::filesystem::remove_all(dir);
   return dir;
 }
@@ -22,7 +24,7 @@ inline std::filesystem::path out_dir(const std::string& name) {
 inline SweepRunOptions options(const std::filesystem::path& dir, int threads) {
   SweepRunOptions o;
   o.out_dir = dir.string();
-  o.data_dir = SKINSIM_TEST_DATA_DIR;
+  o.data_dir = test_paths::kDataDir;
   o.threads = threads;
   o.progress = nullptr;
   return o;

@@ -12,6 +12,7 @@
 #include "gpu_model/frame_cost.h"
 #include "io/read_file.h"
 #include "tests/gpu_model/test_support.h"
+#include "tests/test_paths.h"
 
 namespace skinsim::driver {
 namespace {
@@ -282,7 +283,7 @@ TEST(ValidateCompare, ADifferenceThatRoundsToZeroPrintsPlusZero) {
 
 // The shipped example is a valid measurements file (its numbers are the model's own output).
 TEST(ValidateParse, TheShippedExampleParses) {
-  const Measurements m = read_measurements(std::string(SKINSIM_TEST_DATA_DIR) +
+  const Measurements m = read_measurements(std::string(test_paths::kDataDir) +
                                            "/measurements/example-ipad4-model-output.csv");
   EXPECT_EQ(m.passes.size(), 5u);
   EXPECT_TRUE(m.frame.has_value());

@@ -7,10 +7,11 @@
 #include "gpu_model/device_profile.h"
 #include "gpu_model/profile_loader.h"
 #include "sim/counters.h"
+#include "tests/test_paths.h"
 
 namespace skinsim::gpu_model::testing {
 
-inline const std::string kDataDir = SKINSIM_TEST_DATA_DIR;
+inline const std::string kDataDir = test_paths::kDataDir;
 
 // iPad 4 profile with a 100 MHz clock so expected times are easy to compute by hand.
 inline DeviceProfile round_profile() {

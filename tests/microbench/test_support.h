@@ -8,10 +8,11 @@
 
 #include "gpu_model/profile_loader.h"
 #include "microbench/microbench.h"
+#include "tests/test_paths.h"
 
 namespace skinsim::microbench::testing {
 
-inline const std::string kDataDir = SKINSIM_TEST_DATA_DIR;
+inline const std::string kDataDir = test_paths::kDataDir;
 inline const std::vector<std::string> kShippedDevices = {"ipad4", "ipad3", "iphone5"};
 
 inline gpu_model::DeviceProfile profile(const std::string& name) {

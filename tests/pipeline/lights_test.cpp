@@ -9,6 +9,7 @@
 #include "pipeline/lighting.h"
 #include "scene/gltf_loader.h"
 #include "tests/pipeline/small_frames.h"
+#include "tests/test_paths.h"
 
 namespace skinsim::pipeline {
 namespace {
@@ -80,7 +81,7 @@ TEST(BackLight, EachLightAddsItsReads) {
 // The built-in head has no thin parts (its ears are relief on a closed surface); the scan's
 // ears and eyelids are.
 TEST(Transmission, OnlyAddsLightAndMostToRedInThinParts) {
-  const std::string path = SKINSIM_LEE_PERRY_SMITH;
+  const std::string path = test_paths::kLeePerrySmith;
   if (!std::filesystem::exists(path)) GTEST_SKIP() << "asset not found: " << path;
   scene::LoadOptions o;
   o.units_per_mm = 0.0353f;

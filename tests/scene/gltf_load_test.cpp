@@ -9,6 +9,7 @@
 #include "scene/bounds.h"
 #include "scene/gltf_loader.h"
 #include "tests/scene/gltf_fixture.h"
+#include "tests/test_paths.h"
 
 namespace skinsim::scene {
 namespace {
@@ -350,7 +351,7 @@ TEST(GltfLoad, UnitsOverride) {
 }
 
 TEST(GltfLoad, LeePerrySmith) {
-  const std::string path = SKINSIM_LEE_PERRY_SMITH;
+  const std::string path = test_paths::kLeePerrySmith;
   if (!std::filesystem::exists(path)) GTEST_SKIP() << "asset not found: " << path;
   LoadOptions o = quiet();
   o.environment_size = 64;  // as in real use
