@@ -116,6 +116,15 @@ void print_recommendations(const reports::SweepTable& table) {
   }
 }
 
+// How many render passes were replayed from identical ones (sim/pass_memo.h), when this run
+// rendered any.
+void print_replayed_passes(const driver::SweepRunSummary& summary) {
+  const int passes = summary.passes_replayed + summary.passes_rendered;
+  if (passes == 0) return;
+  fmt::print("render passes: {} of {} replayed from identical ones of earlier configurations\n",
+             summary.passes_replayed, passes);
+}
+
 // A shard's run: its configurations into the shared directory, no tables or report (the
 // merge writes those once every shard has finished).
 int finish_shard(const driver::SweepShard& shard, const driver::SweepRunSummary& summary,
@@ -127,6 +136,7 @@ int finish_shard(const driver::SweepShard& shard, const driver::SweepRunSummary&
       summary.resumed,
       summary.failed.empty() ? "" : fmt::format(", {} failed", summary.failed.size()),
       summary.seconds);
+  print_replayed_passes(summary);
   for (const driver::FailedConfig& f : summary.failed) {
     fmt::print(stderr, "skinsim sweep: configuration {} failed: {}\n", f.id, f.reason);
   }
@@ -198,6 +208,7 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
                             "does not use)",
                             skipped)
               : "");
+  print_replayed_passes(summary);
   for (const std::string& w : summary.warnings) {
     fmt::print(stderr, "skinsim sweep: warning: {}\n", w);
   }

@@ -19,13 +19,15 @@ pipeline::PipelineConfig resolve_config(pipeline::PipelineConfig config,
 
 FrameResult run_frame(const pipeline::GpuScene& scene, const pipeline::PipelineConfig& config,
                       const gpu_model::DeviceProfile& device, int threads,
-                      const PassCapture& capture) {
+                      const PassCapture& capture, sim::PassMemo* memo) {
   SKINSIM_CHECK(config.width > 0 && config.height > 0);  // resolve_config first
   sim::Gpu gpu(gpu_model::gpu_config(device, threads));
   if (capture) gpu.set_pass_capture(capture);
+  gpu.set_pass_memo(memo);
   FrameResult r;
   r.config = config;
   r.output = pipeline::render_frame(scene, config, gpu);
+  if (memo) memo->end_frame();
   r.timing = gpu_model::estimate_frame(r.output.passes, device);
   r.range = gpu_model::frame_ms_range(r.output.passes, device);
   return r;

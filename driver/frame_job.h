@@ -19,6 +19,7 @@
 #include "pipeline/config.h"
 #include "pipeline/frame.h"
 #include "pipeline/gpu_scene.h"
+#include "sim/pass_memo.h"
 
 namespace skinsim::driver {
 
@@ -38,10 +39,11 @@ pipeline::PipelineConfig resolve_config(pipeline::PipelineConfig config,
 // Called with every pass once the emulated GPU has run it (sim::Gpu::set_pass_capture).
 using PassCapture = std::function<void(const sim::RenderPassDesc&)>;
 
-// Renders and times a frame of a resolved config (resolve_config).
+// Renders and times a frame of a resolved config (resolve_config). With `memo`, passes
+// identical to ones an earlier frame rendered are replayed from it (sim/pass_memo.h).
 FrameResult run_frame(const pipeline::GpuScene& scene, const pipeline::PipelineConfig& config,
                       const gpu_model::DeviceProfile& device, int threads,
-                      const PassCapture& capture = {});
+                      const PassCapture& capture = {}, sim::PassMemo* memo = nullptr);
 
 struct FrameJob {
   const gpu_model::DeviceProfile* device = nullptr;

@@ -91,9 +91,10 @@ std::string non_finite_figure(const reports::ConfigResult& row) {
 // Renders, times and measures one configuration and writes its files; the JSON goes last, so
 // a configuration counts as finished only once all its files are in place. Throws SweepError
 // when a figure is not a finite number.
-void compute(const fs::path& dir, const Job& job, int frame_threads) {
+void compute(const fs::path& dir, const Job& job, int frame_threads, sim::PassMemo& memo) {
   const std::string& id = job.config->id;
-  const FrameResult frame = run_frame(*job.scene, job.resolved, *job.device, frame_threads);
+  const FrameResult frame =
+      run_frame(*job.scene, job.resolved, *job.device, frame_threads, {}, &memo);
   const FrameQuality measured = evaluate_quality(frame.output.frame, *job.reference);
   write_png(frame.output.frame, dir / config_frame_path(id));
   quality::save_png(measured.error_map, dir / config_error_path(id));
@@ -113,6 +114,12 @@ void compute(const fs::path& dir, const Job& job, int frame_threads) {
 // the device has cores runs several frames at once. One frame at a time otherwise: the same
 // speed (a frame scales with its threads up to the cores) and the memory of one frame's
 // render targets, not several (about 330 MB at 2048x1536, scale 1).
+// What a frame in flight keeps of earlier frames' passes for replay. The passes worth keeping
+// are the ones later passes sample (PassMemo::end_frame): at 2048x1536 and buffer scale 1 a
+// mobile frame's are about 55 MB (shadow map, irradiance, two blurs), so this holds those of
+// several scales and techniques without raising the sweep's peak much.
+constexpr std::size_t kPassMemoBytes = std::size_t{192} << 20;
+
 struct InFlight {
   int frames = 1;
   int frame_threads = 1;
@@ -247,14 +254,14 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
   std::mutex mutex;
   std::map<std::size_t, std::string> failures;  // by job index: expansion order
   std::atomic<int> not_run{0};
-  const auto run_job = [&](std::size_t i, int frame_threads) {
+  const auto run_job = [&](std::size_t i, int frame_threads, sim::PassMemo& memo) {
     if (cancelled(options) || !jobs[i].reference) {
       ++not_run;
       return;
     }
     const Clock::time_point t0 = Clock::now();
     try {
-      compute(dir, jobs[i], frame_threads);
+      compute(dir, jobs[i], frame_threads, memo);
     } catch (const UserError& e) {
       // One configuration that cannot be measured (a figure that is not a finite number) is
       // reported with its reason; the others still run.
@@ -273,8 +280,16 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
     // `plan.frames` lanes, each taking the next configuration until none is left; a frame's
     // quality metrics use whatever threads of the arena are free.
     std::atomic<std::size_t> next{0};
+    // Each lane replays passes from its own memo: the configurations come in expansion
+    // order, the last axis fastest, so consecutive ones share the passes that axis leaves be.
     tbb::parallel_for(0, plan.frames, [&](int) {
-      for (std::size_t i = next++; i < jobs.size(); i = next++) run_job(i, plan.frame_threads);
+      sim::PassMemo memo(kPassMemoBytes);
+      for (std::size_t i = next++; i < jobs.size(); i = next++) {
+        run_job(i, plan.frame_threads, memo);
+      }
+      const std::lock_guard lock(mutex);
+      summary.passes_replayed += memo.stats().replayed;
+      summary.passes_rendered += memo.stats().rendered;
     });
   });
   progress.close();

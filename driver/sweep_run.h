@@ -59,6 +59,10 @@ struct SweepRunSummary {
   // shards have written to the directory (this run computes what they left).
   std::vector<MissingConfig> left_by_shards;
   int references_rendered = 0;  // references rendered (not loaded from refs/)
+  // Render passes of the computed configurations: replayed from an identical pass of an
+  // earlier configuration (sim/pass_memo.h), and rendered.
+  int passes_replayed = 0;
+  int passes_rendered = 0;
   bool cancelled = false;
   double seconds = 0.0;  // wall time
   // Per configuration id, the fingerprint (config_fingerprint) a stored result must have to

@@ -8,6 +8,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libembree-dev  # ray casting: the reference's shadows and the thickness bake
+  libxxhash-dev  # XXH3: keys of the render-pass memo that lets sweeps replay shared passes
   libvtk9-dev xvfb xauth
   glslang-tools  # glslangValidator checks the exported GLSL ES in the tests
   # Mesa llvmpipe through EGL/GLES: the speed anchor (bench/, scripts/bench_vs_llvmpipe.py)

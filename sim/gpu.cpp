@@ -7,6 +7,7 @@
 
 #include "sim/binner.h"
 #include "sim/geometry.h"
+#include "sim/pass_memo.h"
 #include "sim/tile_renderer.h"
 
 namespace skinsim::sim {
@@ -72,8 +73,20 @@ PassCounters Gpu::execute(const RenderPassDesc& pass) {
       }
     }
   }
+  std::optional<PassKey> key;
+  std::optional<PassCounters> replayed;
+  if (memo_) {
+    memo_->note_sampled(pass);
+    key = pass_key(pass, config_);
+    if (key) replayed = memo_->replay(*key, pass);
+  }
   PassCounters result;
-  arena_->execute([&] { result = execute_impl(pass); });
+  if (replayed) {
+    result = std::move(*replayed);
+  } else {
+    arena_->execute([&] { result = execute_impl(pass); });
+    if (key) memo_->store(*key, pass, result);
+  }
   if (capture_) capture_(pass);
   return result;
 }

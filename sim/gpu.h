@@ -11,6 +11,8 @@
 
 namespace skinsim::sim {
 
+class PassMemo;
+
 class Gpu {
  public:
   explicit Gpu(GpuConfig config);
@@ -31,6 +33,9 @@ class Gpu {
   void set_pass_capture(std::function<void(const RenderPassDesc&)> capture) {
     capture_ = std::move(capture);
   }
+  // Passes identical to one the memo holds are replayed from it, and the others stored in
+  // it (sim/pass_memo.h). The memo must outlive the calls to execute.
+  void set_pass_memo(PassMemo* memo) { memo_ = memo; }
 
  private:
   PassCounters execute_impl(const RenderPassDesc& pass);
@@ -38,6 +43,7 @@ class Gpu {
   GpuConfig config_;
   std::unique_ptr<tbb::task_arena> arena_;
   std::function<void(const RenderPassDesc&)> capture_;
+  PassMemo* memo_ = nullptr;
 };
 
 // Emulated core a tile is dispatched to: tiles in row-major order, dealt round-robin. The

@@ -306,6 +306,32 @@ TEST(SweepRun, ResultsDoNotDependOnThreadCount) {
   }
 }
 
+// Across LUT sizes at one buffer scale the shadow map, irradiance and blurs are the same
+// passes: the second configuration replays them (sim/pass_memo.h), and its files are those of
+// the same configuration rendered alone.
+TEST(SweepRun, ReplayedPassesGiveWhatRenderingGives) {
+  SweepSpec both = tiny_spec();
+  set_axis(both, "scale", {"0.5"}, "test");
+  set_axis(both, "lut", {"8x32", "32x128"}, "test");
+  SweepSpec alone = both;
+  set_axis(alone, "lut", {"32x128"}, "test");
+
+  const fs::path shared = out_dir("replayed");
+  const fs::path rendered = out_dir("rendered");
+  SweepRunSummary summary;
+  run_and_write(both, options(shared, 2), &summary);
+  EXPECT_EQ(summary.passes_replayed, 4);  // shadow, irradiance, blur_h, blur_v
+  EXPECT_EQ(summary.passes_rendered, 6);
+  run_and_write(alone, options(rendered, 2), &summary);
+  EXPECT_EQ(summary.passes_replayed, 0);
+
+  const std::string id = "scale0.5_lut32x128";
+  for (const std::string& file :
+       {config_json_path(id), config_frame_path(id), config_error_path(id)}) {
+    EXPECT_EQ(read_file(shared / file), read_file(rendered / file)) << file;
+  }
+}
+
 TEST(SweepRun, UnknownDeviceFailsBeforeAnyWork) {
   const fs::path dir = out_dir("bad_device");
   SweepSpec spec = tiny_spec();

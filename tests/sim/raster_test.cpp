@@ -10,23 +10,9 @@ namespace skinsim::sim {
 namespace {
 
 using testing::FlatColorFS;
+using testing::Mesh;
 using testing::PassThroughVS;
 using testing::TexturedFS;
-
-struct Mesh {
-  std::vector<glm::vec3> positions;
-  std::vector<glm::vec2> uvs;
-  std::vector<std::uint32_t> indices;
-  Geometry geometry() const {
-    Geometry g;
-    g.attributes.positions = positions.data();
-    g.attributes.uvs = uvs.data();
-    g.vertex_count = positions.size();
-    g.indices = indices.data();
-    g.index_count = indices.size();
-    return g;
-  }
-};
 
 // An n x n grid over clip-space [x0,x1]x[y0,y1] at depth z, counter-clockwise triangles;
 // interior vertices jittered (shared edges at arbitrary sub-pixel positions).
