@@ -13,10 +13,10 @@
 #include <utility>
 
 #include "pipeline/bake/error.h"
-#include "pipeline/bake/half_float.h"
 #include "pipeline/bake/hemisphere.h"
 #include "pipeline/bake/specular.h"
 #include "quality/image.h"
+#include "sim/fp16.h"
 
 namespace skinsim::bake {
 namespace {
@@ -143,7 +143,7 @@ BrdfLut quantize(const BrdfLut& lut, LutFormat format) {
       const float clamped = std::isnan(value) ? 0.0f : std::clamp(value, 0.0f, 1.0f);
       return std::round(clamped * 255.0f) / 255.0f;
     }
-    return half_to_float(float_to_half(value));
+    return sim::round_to_fp16(value);  // the emulated RGBA16F texel's rounding
   };
   BrdfLut out = lut;
   for (LutLevel& level : out.levels) {

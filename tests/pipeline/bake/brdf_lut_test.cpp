@@ -8,11 +8,9 @@
 #include <cstring>
 #include <filesystem>
 #include <glm/geometric.hpp>
-#include <limits>
 #include <numbers>
 
 #include "pipeline/bake/error.h"
-#include "pipeline/bake/half_float.h"
 #include "pipeline/bake/specular.h"
 #include "quality/image.h"
 
@@ -191,32 +189,6 @@ TEST(BrdfLut, QuantizeRoundsToTheFormat) {
       EXPECT_LE(std::abs(half - original),
                 std::max(std::ldexp(std::abs(original), -11), std::ldexp(1.0f, -25)));
     }
-  }
-}
-
-TEST(HalfFloat, KnownValuesAndRounding) {
-  EXPECT_EQ(float_to_half(1.0f), 0x3C00);
-  EXPECT_EQ(float_to_half(-2.0f), 0xC000);
-  EXPECT_EQ(float_to_half(0.0f), 0x0000);
-  EXPECT_EQ(float_to_half(-0.0f), 0x8000);
-  EXPECT_EQ(float_to_half(65504.0f), 0x7BFF);                             // largest half
-  EXPECT_EQ(float_to_half(65519.0f), 0x7BFF);                             // rounds down
-  EXPECT_EQ(float_to_half(65520.0f), 0x7C00);                             // ties to even: overflow
-  EXPECT_EQ(float_to_half(std::ldexp(1.0f, -24)), 0x0001);                // smallest subnormal
-  EXPECT_EQ(float_to_half(std::ldexp(1.0f, -25)), 0x0000);                // tie -> even (0)
-  EXPECT_EQ(float_to_half(std::ldexp(3.0f, -25)), 0x0002);                // tie -> even (2)
-  EXPECT_EQ(float_to_half(1.0f + std::ldexp(1.0f, -11)), 0x3C00);         // tie -> even
-  EXPECT_EQ(float_to_half(1.0f + 3.0f * std::ldexp(1.0f, -11)), 0x3C02);  // tie -> even
-  EXPECT_EQ(float_to_half(std::ldexp(1023.5f, -24)), 0x0400);  // subnormal rounds to normal
-  EXPECT_EQ(float_to_half(std::numeric_limits<float>::infinity()), 0x7C00);
-  EXPECT_TRUE(std::isnan(half_to_float(float_to_half(std::nanf("")))));
-}
-
-TEST(HalfFloat, EveryHalfRoundTrips) {
-  for (unsigned bits = 0; bits < 0x10000u; ++bits) {
-    const auto half = static_cast<std::uint16_t>(bits);
-    if ((half & 0x7C00u) == 0x7C00u && (half & 0x03FFu) != 0) continue;  // NaN
-    ASSERT_EQ(float_to_half(half_to_float(half)), half) << std::hex << bits;
   }
 }
 
