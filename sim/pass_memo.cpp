@@ -185,19 +185,36 @@ PassMemo::StoredPixels PassMemo::pack(const RenderTarget& target) {
       }
     }
     if (exact) return s;
-    s.unorm8.clear();
-    s.unorm8.shrink_to_fit();
+    s.unorm8 = {};
+  }
+  if (is_depth_format(target.format)) {
+    // quantize() stores depth in red and 0 in the rest; a bit pattern other than +0 (one the
+    // host wrote) keeps the target in floats.
+    s.depth.resize(target.pixels.size());
+    bool exact = true;
+    for (std::size_t i = 0; i < target.pixels.size() && exact; ++i) {
+      const glm::vec4& p = target.pixels[i];
+      exact = std::bit_cast<std::uint32_t>(p.y) == 0 && std::bit_cast<std::uint32_t>(p.z) == 0 &&
+              std::bit_cast<std::uint32_t>(p.w) == 0;
+      s.depth[i] = p.x;
+    }
+    if (exact) return s;
+    s.depth = {};
   }
   s.floats = target.pixels;
   return s;
 }
 
 void PassMemo::unpack(const StoredPixels& stored, RenderTarget& target) {
-  if (stored.floats.empty()) {
+  if (!stored.unorm8.empty()) {
     for (std::size_t i = 0; i < target.pixels.size(); ++i) {
       for (int c = 0; c < 4; ++c) {
         target.pixels[i][c] = static_cast<float>(stored.unorm8[i * 4 + c]) / 255.0f;
       }
+    }
+  } else if (!stored.depth.empty()) {
+    for (std::size_t i = 0; i < target.pixels.size(); ++i) {
+      target.pixels[i] = glm::vec4(stored.depth[i], 0.0f, 0.0f, 0.0f);
     }
   } else {
     std::copy(stored.floats.begin(), stored.floats.end(), target.pixels.begin());

@@ -67,12 +67,16 @@ class PassMemo {
   struct KeyHash {
     std::size_t operator()(const PassKey& k) const { return static_cast<std::size_t>(k.low); }
   };
-  // A target's pixels as stored: RGBA8 ones as their bytes (a quarter of the floats the
-  // emulator holds them in), others as floats.
+  // A target's pixels as stored, in a quarter of the floats the emulator holds them in where
+  // that is exact: RGBA8 ones as their bytes, depth ones as their red channel (the others
+  // are 0); anything else as floats.
   struct StoredPixels {
     std::vector<std::uint8_t> unorm8;
+    std::vector<float> depth;
     std::vector<glm::vec4> floats;
-    std::size_t bytes() const { return unorm8.size() + floats.size() * sizeof(glm::vec4); }
+    std::size_t bytes() const {
+      return unorm8.size() + depth.size() * sizeof(float) + floats.size() * sizeof(glm::vec4);
+    }
   };
   struct Entry {
     PassKey key;

@@ -208,6 +208,7 @@ TEST(PassMemo, ReplaysADepthTargetAndAFloatTarget) {
   frame();
   const std::vector<glm::vec4> rendered = depth.pixels;
   std::fill(depth.pixels.begin(), depth.pixels.end(), glm::vec4(0.0f));
+  EXPECT_EQ(memo.stats().bytes, 16u * 16u * 4u);  // the depth's red channel only
   frame();
   EXPECT_EQ(memo.stats().replayed, 1);
   EXPECT_EQ(depth.pixels, rendered);
