@@ -4,6 +4,7 @@
 #include "gpu_model/frame_cost.h"
 #include "gpu_model/gpu_config.h"
 #include "pipeline/reference/reference.h"
+#include "sim/pass_memo.h"
 #include "util/check.h"
 
 namespace skinsim::driver {

@@ -19,7 +19,10 @@
 #include "pipeline/config.h"
 #include "pipeline/frame.h"
 #include "pipeline/gpu_scene.h"
-#include "sim/pass_memo.h"
+
+namespace skinsim::sim {
+class PassMemo;
+}
 
 namespace skinsim::driver {
 

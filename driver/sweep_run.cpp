@@ -26,6 +26,7 @@
 #include "io/read_file.h"
 #include "pipeline/frame.h"
 #include "quality/image.h"
+#include "sim/pass_memo.h"
 #include "util/fingerprint.h"
 
 namespace skinsim::driver {
@@ -108,18 +109,18 @@ void compute(const fs::path& dir, const Job& job, int frame_threads, sim::PassMe
   io::write_file_atomically((dir / config_json_path(id)).string(), to_json(stored).dump(1) + "\n");
 }
 
+// What a frame in flight keeps of earlier frames' passes for replay. The passes worth keeping
+// are the ones later passes sample (PassMemo::end_frame): at 2048x1536 and buffer scale 1 a
+// mobile frame's are about 42 MB (shadow map, irradiance, two blurs), so this holds those of
+// several scales and techniques without raising the sweep's peak much.
+constexpr std::size_t kPassMemoBytes = std::size_t{192} << 20;
+
 // How many frames are emulated at once, and with how many host threads each. A frame uses
 // at most one host thread per emulated core (one host task per core keeps each core's
 // texture cache deterministic; docs/performance.md), so only a host with more threads than
 // the device has cores runs several frames at once. One frame at a time otherwise: the same
 // speed (a frame scales with its threads up to the cores) and the memory of one frame's
 // render targets, not several (about 330 MB at 2048x1536, scale 1).
-// What a frame in flight keeps of earlier frames' passes for replay. The passes worth keeping
-// are the ones later passes sample (PassMemo::end_frame): at 2048x1536 and buffer scale 1 a
-// mobile frame's are about 55 MB (shadow map, irradiance, two blurs), so this holds those of
-// several scales and techniques without raising the sweep's peak much.
-constexpr std::size_t kPassMemoBytes = std::size_t{192} << 20;
-
 struct InFlight {
   int frames = 1;
   int frame_threads = 1;

@@ -2,16 +2,6 @@
 
 namespace skinsim::microbench {
 
-sim::Geometry Mesh::geometry() const {
-  sim::Geometry g;
-  g.attributes.positions = positions.data();
-  g.attributes.uvs = uvs.data();
-  g.vertex_count = positions.size();
-  g.indices = indices.data();
-  g.index_count = indices.size();
-  return g;
-}
-
 Mesh grid_mesh(int cells_x, int cells_y, float z, Winding winding) {
   Mesh m;
   const auto columns = static_cast<std::size_t>(cells_x) + 1;

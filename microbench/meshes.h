@@ -1,22 +1,11 @@
 // Geometry of the micro-benchmark passes: regular grids in clip space.
 #pragma once
 
-#include <glm/glm.hpp>
-#include <vector>
-
-#include "sim/render_pass.h"
+#include "sim/mesh.h"
 
 namespace skinsim::microbench {
 
-struct Mesh {
-  std::vector<glm::vec3> positions;
-  std::vector<glm::vec2> uvs;
-  std::vector<std::uint32_t> indices;
-
-  std::size_t triangle_count() const { return indices.size() / 3; }
-  // Views into this mesh: it must outlive the draw that uses them.
-  sim::Geometry geometry() const;
-};
+using sim::Mesh;
 
 enum class Winding { kCounterClockwise, kClockwise };
 

@@ -8,19 +8,9 @@ ScreenQuad::ScreenQuad(const sim::PixelRect& r, int w, int h) {
   // Texture v grows downwards (row 0 at the top), clip y upwards.
   for (const glm::vec2 uv :
        {glm::vec2(u0, v1), glm::vec2(u1, v1), glm::vec2(u1, v0), glm::vec2(u0, v0)}) {
-    positions_.emplace_back(uv.x * 2.0f - 1.0f, 1.0f - uv.y * 2.0f, 0.0f);
-    uvs_.push_back(uv);
+    mesh_.positions.emplace_back(uv.x * 2.0f - 1.0f, 1.0f - uv.y * 2.0f, 0.0f);
+    mesh_.uvs.push_back(uv);
   }
-}
-
-sim::Geometry ScreenQuad::geometry() const {
-  sim::Geometry g;
-  g.attributes.positions = positions_.data();
-  g.attributes.uvs = uvs_.data();
-  g.vertex_count = positions_.size();
-  g.indices = indices_.data();
-  g.index_count = indices_.size();
-  return g;
 }
 
 sim::PassCounters quad_pass(const std::string& name, sim::DrawCall draw, sim::RenderTarget& target,

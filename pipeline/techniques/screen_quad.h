@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "sim/gpu.h"
+#include "sim/mesh.h"
 #include "sim/render_pass.h"
 
 namespace skinsim::pipeline {
@@ -13,12 +14,10 @@ namespace skinsim::pipeline {
 class ScreenQuad {
  public:
   ScreenQuad(const sim::PixelRect& rect, int width, int height);
-  sim::Geometry geometry() const;
+  sim::Geometry geometry() const { return mesh_.geometry(); }
 
  private:
-  std::vector<glm::vec3> positions_;
-  std::vector<glm::vec2> uvs_;
-  std::vector<std::uint32_t> indices_{0, 1, 2, 0, 2, 3};
+  sim::Mesh mesh_{{}, {}, {0, 1, 2, 0, 2, 3}};
 };
 
 // A quad pass (no culling, no depth) named `name` drawing one draw over `rect`.

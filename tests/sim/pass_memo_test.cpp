@@ -6,13 +6,14 @@
 #include <gtest/gtest.h>
 
 #include "sim/gpu.h"
+#include "sim/mesh.h"
 #include "tests/sim/test_shaders.h"
 
 namespace skinsim::sim {
 namespace {
 
 // A full-target quad in clip space with uvs over [0, 1]^2.
-testing::Mesh full_quad() {
+Mesh full_quad() {
   return {{{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}},
           {{0, 0}, {1, 0}, {1, 1}, {0, 1}},
           {0, 1, 2, 0, 2, 3}};
@@ -30,8 +31,8 @@ Texture2D gradient_texture(float shift) {
 }
 
 // Draws `texture` minified onto a 20x12 target, or a flat colour without one.
-RenderPassDesc textured_pass(RenderTarget& target, const testing::Mesh& quad,
-                             const Texture2D* texture, glm::vec4 color = glm::vec4(1.0f)) {
+RenderPassDesc textured_pass(RenderTarget& target, const Mesh& quad, const Texture2D* texture,
+                             glm::vec4 color = glm::vec4(1.0f)) {
   RenderPassDesc pass;
   pass.name = "textured";
   pass.color = &target;
@@ -74,7 +75,7 @@ struct TwoPassFrame {
   RenderTarget first{"first", 20, 12, TexelFormat::kRGBA8};
   RenderTarget second{"second", 20, 12, TexelFormat::kRGBA8};
   PassCounters first_counters, second_counters;
-  void render(Gpu& gpu, const testing::Mesh& quad, const Texture2D& source, PassMemo* memo) {
+  void render(Gpu& gpu, const Mesh& quad, const Texture2D& source, PassMemo* memo) {
     first_counters = gpu.execute(textured_pass(first, quad, &source));
     const Texture2D view = texture_view(first, {Filter::kBilinear, Wrap::kClamp});
     second_counters = gpu.execute(textured_pass(second, quad, &view));
@@ -83,7 +84,7 @@ struct TwoPassFrame {
 };
 
 TEST(PassMemo, AReplayedPassLeavesWhatRenderingItLeaves) {
-  const testing::Mesh quad = full_quad();
+  const Mesh quad = full_quad();
   const Texture2D source = gradient_texture(0.0f);
   TwoPassFrame rendered;
   {
@@ -113,7 +114,7 @@ TEST(PassMemo, AReplayedPassLeavesWhatRenderingItLeaves) {
 }
 
 TEST(PassMemo, AnyChangedInputIsRenderedAgain) {
-  const testing::Mesh quad = full_quad();
+  const Mesh quad = full_quad();
   const Texture2D source = gradient_texture(0.0f);
   PassMemo memo(1 << 20);
   RenderTarget target("t", 20, 12, TexelFormat::kRGBA8);
@@ -142,7 +143,7 @@ TEST(PassMemo, AnyChangedInputIsRenderedAgain) {
   EXPECT_FALSE(replayed(textured_pass(target, quad, nullptr, glm::vec4(0.5f, 0.5f, 0.5f, 0.25f))))
       << "a uniform changed";
 
-  testing::Mesh moved = full_quad();
+  Mesh moved = full_quad();
   moved.positions[2].x = 0.5f;
   EXPECT_FALSE(replayed(textured_pass(target, moved, &source))) << "a vertex moved";
 
@@ -163,7 +164,7 @@ TEST(PassMemo, AnyChangedInputIsRenderedAgain) {
 }
 
 TEST(PassMemo, KeepsOnlyPassesALaterPassSamples) {
-  const testing::Mesh quad = full_quad();
+  const Mesh quad = full_quad();
   const Texture2D source = gradient_texture(0.0f);
   PassMemo memo(1 << 20);
   Gpu gpu(test_config());
@@ -184,7 +185,7 @@ TEST(PassMemo, KeepsOnlyPassesALaterPassSamples) {
 }
 
 TEST(PassMemo, ReplaysADepthTargetAndAFloatTarget) {
-  const testing::Mesh quad = full_quad();
+  const Mesh quad = full_quad();
   RenderTarget depth("depth", 16, 16, TexelFormat::kDepth24);
   RenderPassDesc pass;
   pass.name = "shadow";

@@ -4,13 +4,13 @@
 #include <random>
 
 #include "sim/gpu.h"
+#include "sim/mesh.h"
 #include "tests/sim/test_shaders.h"
 
 namespace skinsim::sim {
 namespace {
 
 using testing::FlatColorFS;
-using testing::Mesh;
 using testing::PassThroughVS;
 using testing::TexturedFS;
 

@@ -4,33 +4,23 @@
 #include <gtest/gtest.h>
 
 #include "sim/gpu.h"
+#include "sim/mesh.h"
 #include "tests/sim/test_shaders.h"
 
 namespace skinsim::sim {
 namespace {
 
 // Two clip-space triangles covering [x0, x1] x [-1, 1] at NDC depth z.
-struct Quad {
-  std::vector<glm::vec3> positions;
-  std::vector<std::uint32_t> indices{0, 1, 2, 0, 2, 3};
-  Quad(float x0, float x1, float z)
-      : positions{{x0, -1.0f, z}, {x1, -1.0f, z}, {x1, 1.0f, z}, {x0, 1.0f, z}} {}
-  Geometry geometry() const {
-    Geometry g;
-    g.attributes.positions = positions.data();
-    g.vertex_count = positions.size();
-    g.indices = indices.data();
-    g.index_count = indices.size();
-    return g;
-  }
-};
+Mesh quad(float x0, float x1, float z) {
+  return {{{x0, -1.0f, z}, {x1, -1.0f, z}, {x1, 1.0f, z}, {x0, 1.0f, z}}, {}, {0, 1, 2, 0, 2, 3}};
+}
 
-PassCounters depth_only(RenderTarget& depth, const std::vector<const Quad*>& quads) {
+PassCounters depth_only(RenderTarget& depth, const std::vector<const Mesh*>& quads) {
   RenderPassDesc pass;
   pass.name = "shadow";
   pass.depth = &depth;
   pass.store_depth = true;
-  for (const Quad* q : quads) {
+  for (const Mesh* q : quads) {
     DrawCall d;
     d.geometry = q->geometry();
     d.vertex_program = make_vertex_program<testing::PassThroughVS>({});
@@ -44,7 +34,8 @@ PassCounters depth_only(RenderTarget& depth, const std::vector<const Quad*>& qua
 
 TEST(DepthOnlyPass, StoresTheNearestDepthAndShadesNothing) {
   RenderTarget depth("shadow_map", 64, 32, TexelFormat::kDepth16);
-  const Quad far(-1.0f, 1.0f, 0.5f), near(-1.0f, 0.0f, -0.5f);  // near covers the left half
+  const Mesh far = quad(-1.0f, 1.0f, 0.5f),
+             near = quad(-1.0f, 0.0f, -0.5f);  // near covers the left half
   const PassCounters c = depth_only(depth, {&far, &near});
   EXPECT_EQ(c.fragments_shaded, 0u);
   EXPECT_EQ(c.fragments_depth_tested, 64u * 32u + 32u * 32u);
@@ -57,7 +48,7 @@ TEST(DepthOnlyPass, StoresTheNearestDepthAndShadesNothing) {
 
 TEST(DepthOnlyPass, RejectsAColourFormatDepthTarget) {
   RenderTarget depth("not_depth", 8, 8, TexelFormat::kRGBA8);
-  const Quad q(-1.0f, 1.0f, 0.0f);
+  const Mesh q = quad(-1.0f, 1.0f, 0.0f);
   EXPECT_THROW(depth_only(depth, {&q}), std::invalid_argument);
 }
 

@@ -1,28 +1,9 @@
-// Minimal shaders and meshes for the emulator's own tests.
+// Minimal shaders for the emulator's own tests.
 #pragma once
 
-#include <vector>
-
 #include "sim/program.h"
-#include "sim/render_pass.h"
 
 namespace skinsim::sim::testing {
-
-// Positions in clip space (PassThroughVS), uvs, triangles.
-struct Mesh {
-  std::vector<glm::vec3> positions;
-  std::vector<glm::vec2> uvs;
-  std::vector<std::uint32_t> indices;
-  Geometry geometry() const {
-    Geometry g;
-    g.attributes.positions = positions.data();
-    g.attributes.uvs = uvs.data();
-    g.vertex_count = positions.size();
-    g.indices = indices.data();
-    g.index_count = indices.size();
-    return g;
-  }
-};
 
 // Positions are already in clip space (z, w from the attribute; w = 1).
 struct PassThroughVS {
