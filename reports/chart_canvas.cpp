@@ -35,12 +35,13 @@ namespace skinsim::reports {
 namespace fs = std::filesystem;
 
 vtkSmartPointer<vtkContextView> make_chart_view(const ChartOptions& options) {
-  require_charts_available();  // VTK aborts the process if it cannot open a display
+  void* display = require_chart_display();  // before any VTK window exists: see display_check.h
   if (options.width < 200 || options.height < 150) {
     throw ReportError("chart size " + std::to_string(options.width) + "x" +
                       std::to_string(options.height) + " is too small (minimum 200x150)");
   }
   auto view = vtkSmartPointer<vtkContextView>::New();
+  view->GetRenderWindow()->SetDisplayId(display);
   view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
   view->GetRenderWindow()->SetOffScreenRendering(1);
   view->GetRenderWindow()->SetSize(options.width, options.height);

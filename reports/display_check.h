@@ -1,17 +1,25 @@
-// VTK's Debian build renders through an X display (even "offscreen"); creating a render
-// window without one aborts the process. Check first, and fail with a message instead.
+// VTK's Debian build renders through an X display (even "offscreen"). Left to itself, a VTK
+// render window opens its own connection, once, without retrying, and when that is refused
+// (a loaded machine, an xvfb-run server still starting) VTK carries on with no display and
+// crashes in XSync (seen twice in a sweep's chart phase while CI ran beside it). So skinsim
+// opens the display itself, with retries, keeps that one connection for the whole process and
+// hands it to every chart's render window.
 #pragma once
 
 #include <string>
 
 namespace skinsim::reports {
 
-// True if an X display can be opened (DISPLAY set and XOpenDisplay succeeds). Otherwise false,
-// and *why (if given) says what is missing and how to run with a display or without charts.
-// Creates no VTK object.
+// True if the X display named by DISPLAY is open or can be opened (it is then kept open).
+// Otherwise false, and *why (if given) says what is missing and how to run with a display or
+// without charts. Creates no VTK object.
 bool charts_available(std::string* why);
 
-// Throws ReportError with charts_available's message if charts cannot be drawn.
-void require_charts_available();
+// The open connection (an Xlib Display*) to the display named by DISPLAY, opened on first use
+// and never closed, for vtkRenderWindow::SetDisplayId. Throws ReportError with
+// charts_available's message if there is none. If the X server goes away later, skinsim
+// prints which display was lost and exits with status 2 (Xlib cannot continue after a lost
+// connection); every file written until then is complete, because files are written whole.
+void* require_chart_display();
 
 }  // namespace skinsim::reports

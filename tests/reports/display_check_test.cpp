@@ -1,8 +1,13 @@
 // charts_available() says no, with a useful message, when there is no X display; chart
-// functions then throw instead of letting VTK abort the process.
+// functions then throw instead of letting VTK abort the process; an X server that goes away
+// while charts are drawn ends the process with a message and status 2, not a crash.
 #include "reports/display_check.h"
 
 #include <gtest/gtest.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <optional>
@@ -63,6 +68,65 @@ TEST(ChartsAvailable, ChartFunctionsThrowInsteadOfCrashing) {
   } catch (const ReportError& e) {
     EXPECT_NE(std::string(e.what()).find("X display"), std::string::npos) << e.what();
   }
+}
+
+// A private Xvfb on a free display number (Xvfb -displayfd picks it and writes it when it
+// accepts connections), killed when the scope ends. name() is empty if it could not start.
+class PrivateXServer {
+ public:
+  PrivateXServer() {
+    int ready[2];
+    if (pipe(ready) != 0) return;
+    pid_ = fork();
+    if (pid_ == 0) {
+      close(ready[0]);
+      const std::string fd = std::to_string(ready[1]);
+      execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-nolisten", "tcp", "-screen", "0",
+             "640x480x24", static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    close(ready[1]);
+    std::string number;
+    pollfd wait_for{ready[0], POLLIN, 0};
+    char c = 0;
+    while (pid_ > 0 && poll(&wait_for, 1, 10000) == 1 && read(ready[0], &c, 1) == 1 && c != '\n') {
+      number += c;
+    }
+    close(ready[0]);
+    if (!number.empty()) name_ = ":" + number;
+  }
+  ~PrivateXServer() { stop(); }
+  PrivateXServer(const PrivateXServer&) = delete;
+  PrivateXServer& operator=(const PrivateXServer&) = delete;
+
+  const std::string& name() const { return name_; }
+  void stop() {
+    if (pid_ <= 0) return;
+    kill(pid_, SIGTERM);
+    waitpid(pid_, nullptr, 0);
+    pid_ = -1;
+  }
+
+ private:
+  pid_t pid_ = -1;
+  std::string name_;
+};
+
+TEST(ChartDisplayDeathTest, ALostXServerEndsTheProcessWithStatus2AndSaysWhichDisplay) {
+  PrivateXServer server;
+  if (server.name().empty()) GTEST_SKIP() << "cannot start Xvfb (is the xvfb package installed?)";
+  ScopedDisplay use(server.name());
+  ASSERT_TRUE(charts_available(nullptr));
+  ConfigResult row;
+  row.id = "a";
+  row.passes = {{"shade", 1.0, "alu", {{"color_store", 1e6}}}};
+  const std::string dir = ::testing::TempDir() + "lost_display_charts";
+  EXPECT_EXIT(
+      {
+        server.stop();  // in the forked child: the server dies under the open connection
+        for (;;) write_dram_by_cause_chart(row, dir + "/dram");
+      },
+      ::testing::ExitedWithCode(2), "lost the connection to X display '" + server.name() + "'");
 }
 
 }  // namespace
