@@ -30,11 +30,8 @@ struct MediumpVarying {
         iterated(v) {}
 };
 
-// Coordinates scaled by a constant (a tiling detail map): the read stays a derivative-scaled
-// read, as in the Exec language (pipeline/shaders/urp.h, sample_tiled).
-inline Varying<2> scaled(const Varying<2>& uv, float s) {
-  return {uv.value * s, uv.ddx * s, uv.ddy * s};
-}
+// scaled() for a mediump varying: the iterated coordinates are scaled (texture_unit.h), and
+// the program sees them rounded, as for any varying.
 inline MediumpVarying<2> scaled(const MediumpVarying<2>& uv, float s) {
   return MediumpVarying<2>(scaled(uv.iterated, s));
 }

@@ -24,6 +24,13 @@ struct Varying {
   glm::vec<N, float> ddy{0.0f};
 };
 
+// Coordinates scaled by a constant (a tiling detail map), their derivatives with them, so the
+// map is filtered at its own mip (pipeline/shaders/urp.h, sample_tiled).
+template <int N>
+Varying<N> scaled(const Varying<N>& v, float s) {
+  return {v.value * s, v.ddx * s, v.ddy * s};
+}
+
 struct TextureBindings {
   std::array<const Texture2D*, kMaxTextureBindings> textures{};
   std::array<const TextureCube*, kMaxTextureBindings> cubes{};
