@@ -1,5 +1,6 @@
 #include "reports/display_check.h"
 
+#include <GL/glx.h>
 #include <X11/Xlib.h>
 
 #include <chrono>
@@ -22,7 +23,8 @@ constexpr int kOpenAttempts = 20;
 constexpr auto kRetryDelay = std::chrono::milliseconds(100);
 
 constexpr const char* kHowTo =
-    "charts need an X display: run under `xvfb-run -a skinsim ...` or pass --no-charts";
+    "charts need an X display with OpenGL (GLX): run under `xvfb-run -a skinsim ...` or pass "
+    "--no-charts";
 
 // Xlib calls this when a connection breaks (the server exited or was killed) and exits the
 // process when it returns, so it never returns: it names the display and exits with 2.
@@ -37,27 +39,84 @@ int report_lost_display(Display* display) {
   std::_Exit(2);
 }
 
+// Set by note_x_error while missing_opengl creates its test context (under OpenDisplays'
+// lock, so one at a time).
+bool x_error_seen = false;
+int note_x_error(Display*, XErrorEvent*) {
+  x_error_seen = true;
+  return 0;
+}
+
+// Empty if VTK can draw on `display`, else what the display lacks. VTK 9.1 aborts the process
+// where it finds no GLX frame-buffer configuration ("Could not find a decent config"), so
+// this asks for the least VTK settles for (vtkXOpenGLRenderWindow: an RGBA window with alpha
+// and depth) and creates a context on it. A display without GLX (a VNC server), or whose
+// server refuses indirect contexts (ssh -X to a modern Xorg) fails here instead.
+std::string missing_opengl(Display* display) {
+  int error_base = 0, event_base = 0;
+  if (!glXQueryExtension(display, &error_base, &event_base)) return "it has no GLX extension";
+  // Attribute, value pairs.
+  // clang-format off
+  const int attributes[] = {GLX_DRAWABLE_TYPE, GLX_WINDOW_BIT, GLX_RENDER_TYPE, GLX_RGBA_BIT,
+                            GLX_RED_SIZE, 1, GLX_GREEN_SIZE, 1, GLX_BLUE_SIZE, 1,
+                            GLX_ALPHA_SIZE, 1, GLX_DEPTH_SIZE, 1, None};
+  // clang-format on
+  int count = 0;
+  GLXFBConfig* configs = glXChooseFBConfig(display, DefaultScreen(display), attributes, &count);
+  if (configs == nullptr || count == 0) {
+    if (configs != nullptr) XFree(configs);
+    return "it offers no OpenGL frame-buffer configuration with colour, alpha and depth";
+  }
+  // A refused context arrives as an X error, which Xlib's default handler turns into exit(1).
+  x_error_seen = false;
+  const XErrorHandler previous = XSetErrorHandler(note_x_error);
+  GLXContext context = glXCreateNewContext(display, configs[0], GLX_RGBA_TYPE, nullptr, True);
+  XSync(display, False);
+  XSetErrorHandler(previous);
+  XFree(configs);
+  if (context != nullptr) glXDestroyContext(display, context);
+  if (context == nullptr || x_error_seen) return "it cannot create an OpenGL context";
+  return "";
+}
+
 // One connection per display name, opened once and kept: render windows that were handed a
 // connection hold it until they are destroyed, so it is never closed under them.
 class OpenDisplays {
  public:
-  Display* open(const std::string& name) {
+  // The display, or nullptr with *why saying what is wrong.
+  Display* open(const std::string& name, std::string* why) {
     const std::lock_guard lock(mutex_);
-    if (auto it = displays_.find(name); it != displays_.end()) return it->second;
+    auto it = displays_.find(name);
+    if (it == displays_.end()) it = displays_.emplace(name, connect(name)).first;
+    if (why) *why = it->second.problem;
+    return it->second.problem.empty() ? it->second.display : nullptr;
+  }
+
+ private:
+  struct Connection {
+    Display* display = nullptr;
+    std::string problem;  // empty when charts can be drawn on `display`
+  };
+
+  static Connection connect(const std::string& name) {
     Display* display = XOpenDisplay(name.c_str());
     for (int attempt = 1; display == nullptr && attempt < kOpenAttempts; ++attempt) {
       std::this_thread::sleep_for(kRetryDelay);
       display = XOpenDisplay(name.c_str());
     }
-    if (display == nullptr) return nullptr;
+    if (display == nullptr) {
+      return {nullptr, std::string(kHowTo) + " (cannot open X display '" + name + "')"};
+    }
     XSetIOErrorHandler(report_lost_display);
-    displays_.emplace(name, display);
-    return display;
+    const std::string missing = missing_opengl(display);
+    if (!missing.empty()) {
+      return {display, std::string(kHowTo) + " (X display '" + name + "': " + missing + ")"};
+    }
+    return {display, ""};
   }
 
- private:
   std::mutex mutex_;
-  std::map<std::string, Display*> displays_;
+  std::map<std::string, Connection> displays_;
 };
 
 // The display named by DISPLAY, or nullptr with *why set.
@@ -68,19 +127,13 @@ Display* display_from_environment(std::string* why) {
     if (why) *why = std::string(kHowTo) + " (the DISPLAY environment variable is not set)";
     return nullptr;
   }
-  Display* display = displays.open(name);
-  if (display == nullptr && why) {
-    *why = std::string(kHowTo) + " (cannot open X display '" + name + "')";
-  }
-  return display;
+  return displays.open(name, why);
 }
 
 }  // namespace
 
 bool charts_available(std::string* why) {
-  const bool open = display_from_environment(why) != nullptr;
-  if (open && why) why->clear();
-  return open;
+  return display_from_environment(why) != nullptr;
 }
 
 void* require_chart_display() {

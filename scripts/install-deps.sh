@@ -10,6 +10,7 @@ packages=(
   libembree-dev  # ray casting: the reference's shadows and the thickness bake
   libxxhash-dev  # XXH3: keys of the render-pass memo that lets sweeps replay shared passes
   libvtk9-dev xvfb xauth
+  libglx-dev  # GLX: charts check the X display offers the OpenGL VTK needs (reports/)
   glslang-tools  # glslangValidator checks the exported GLSL ES in the tests
   # Mesa llvmpipe through EGL/GLES: the speed anchor (bench/, scripts/bench_vs_llvmpipe.py)
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri

@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "reports/charts.h"
 #include "reports/error.h"
@@ -71,18 +72,24 @@ TEST(ChartsAvailable, ChartFunctionsThrowInsteadOfCrashing) {
 }
 
 // A private Xvfb on a free display number (Xvfb -displayfd picks it and writes it when it
-// accepts connections), killed when the scope ends. name() is empty if it could not start.
+// accepts connections), with `options` added to its command line, killed when the scope
+// ends. name() is empty if it could not start.
 class PrivateXServer {
  public:
-  PrivateXServer() {
+  explicit PrivateXServer(std::vector<std::string> options = {}) {
     int ready[2];
     if (pipe(ready) != 0) return;
     pid_ = fork();
     if (pid_ == 0) {
       close(ready[0]);
-      const std::string fd = std::to_string(ready[1]);
-      execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-nolisten", "tcp", "-screen", "0",
-             "640x480x24", static_cast<char*>(nullptr));
+      std::vector<std::string> args = {"Xvfb",      "-displayfd", std::to_string(ready[1]),
+                                       "-nolisten", "tcp",        "-screen",
+                                       "0",         "640x480x24"};
+      args.insert(args.end(), options.begin(), options.end());
+      std::vector<char*> argv;
+      for (std::string& a : args) argv.push_back(a.data());
+      argv.push_back(nullptr);
+      execvp("Xvfb", argv.data());
       _exit(127);
     }
     close(ready[1]);
@@ -112,18 +119,38 @@ class PrivateXServer {
   std::string name_;
 };
 
+// VTK aborts the process on a display without GLX ("Could not find a decent config"); the
+// check finds it first, names it, and the chart functions throw instead.
+TEST(ChartsAvailable, NoWhenTheDisplayHasNoOpenGL) {
+  PrivateXServer server({"-extension", "GLX"});
+  if (server.name().empty()) GTEST_SKIP() << "cannot start Xvfb (is the xvfb package installed?)";
+  ScopedDisplay use(server.name());
+  std::string why;
+  EXPECT_FALSE(charts_available(&why));
+  EXPECT_NE(why.find("X display '" + server.name() + "': it has no GLX extension"),
+            std::string::npos)
+      << why;
+  EXPECT_NE(why.find("--no-charts"), std::string::npos) << why;
+  ConfigResult row;
+  row.id = "a";
+  row.passes = {{"shade", 1.0, "alu", {{"color_store", 1e6}}}};
+  EXPECT_THROW(write_dram_by_cause_chart(row, ::testing::TempDir() + "no_glx/dram"), ReportError);
+}
+
 TEST(ChartDisplayDeathTest, ALostXServerEndsTheProcessWithStatus2AndSaysWhichDisplay) {
   PrivateXServer server;
   if (server.name().empty()) GTEST_SKIP() << "cannot start Xvfb (is the xvfb package installed?)";
   ScopedDisplay use(server.name());
-  ASSERT_TRUE(charts_available(nullptr));
   ConfigResult row;
   row.id = "a";
   row.passes = {{"shade", 1.0, "alu", {{"color_store", 1e6}}}};
   const std::string dir = ::testing::TempDir() + "lost_display_charts";
+  // Only the forked child connects, so this process keeps no connection to the killed server
+  // (a later test's Xvfb may get the same display number).
   EXPECT_EXIT(
       {
-        server.stop();  // in the forked child: the server dies under the open connection
+        if (!charts_available(nullptr)) std::_Exit(3);
+        server.stop();  // the server dies under the open connection
         for (;;) write_dram_by_cause_chart(row, dir + "/dram");
       },
       ::testing::ExitedWithCode(2), "lost the connection to X display '" + server.name() + "'");
