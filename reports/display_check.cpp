@@ -48,10 +48,13 @@ int note_x_error(Display*, XErrorEvent*) {
 }
 
 // Empty if VTK can draw on `display`, else what the display lacks. VTK 9.1 aborts the process
-// where it finds no GLX frame-buffer configuration ("Could not find a decent config"), so
-// this asks for the least VTK settles for (vtkXOpenGLRenderWindow: an RGBA window with alpha
-// and depth) and creates a context on it. A display without GLX (a VNC server), or whose
-// server refuses indirect contexts (ssh -X to a modern Xorg) fails here instead.
+// where it finds no GLX frame-buffer configuration ("Could not find a decent config"), and
+// crashes where it gets no OpenGL 3.2 ("GLEW could not be initialized"), so this asks for what
+// vtkXOpenGLRenderWindow asks for: a configuration for an RGBA window with alpha and depth,
+// and on it a core context of OpenGL 3.2 or later through GLX_ARB_create_context (VTK falls
+// back to a legacy context only to fail with it). A display without GLX (a VNC server), a
+// server that refuses indirect contexts (ssh -X to a modern Xorg), or one that gives them only
+// OpenGL 1.4 (indirect GLX enabled) fails here instead.
 std::string missing_opengl(Display* display) {
   int error_base = 0, event_base = 0;
   if (!glXQueryExtension(display, &error_base, &event_base)) return "it has no GLX extension";
@@ -60,7 +63,12 @@ std::string missing_opengl(Display* display) {
   const int attributes[] = {GLX_DRAWABLE_TYPE, GLX_WINDOW_BIT, GLX_RENDER_TYPE, GLX_RGBA_BIT,
                             GLX_RED_SIZE, 1, GLX_GREEN_SIZE, 1, GLX_BLUE_SIZE, 1,
                             GLX_ALPHA_SIZE, 1, GLX_DEPTH_SIZE, 1, None};
+  const int core_3_2[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 3, GLX_CONTEXT_MINOR_VERSION_ARB, 2,
+                          GLX_CONTEXT_PROFILE_MASK_ARB, GLX_CONTEXT_CORE_PROFILE_BIT_ARB, None};
   // clang-format on
+  const auto create_context = reinterpret_cast<PFNGLXCREATECONTEXTATTRIBSARBPROC>(
+      glXGetProcAddressARB(reinterpret_cast<const GLubyte*>("glXCreateContextAttribsARB")));
+  if (create_context == nullptr) return "its GLX cannot create OpenGL 3.2 contexts";
   int count = 0;
   GLXFBConfig* configs = glXChooseFBConfig(display, DefaultScreen(display), attributes, &count);
   if (configs == nullptr || count == 0) {
@@ -70,12 +78,14 @@ std::string missing_opengl(Display* display) {
   // A refused context arrives as an X error, which Xlib's default handler turns into exit(1).
   x_error_seen = false;
   const XErrorHandler previous = XSetErrorHandler(note_x_error);
-  GLXContext context = glXCreateNewContext(display, configs[0], GLX_RGBA_TYPE, nullptr, True);
+  GLXContext context = create_context(display, configs[0], nullptr, True, core_3_2);
   XSync(display, False);
   XSetErrorHandler(previous);
   XFree(configs);
   if (context != nullptr) glXDestroyContext(display, context);
-  if (context == nullptr || x_error_seen) return "it cannot create an OpenGL context";
+  if (context == nullptr || x_error_seen) {
+    return "it cannot create an OpenGL 3.2 core context, which VTK needs";
+  }
   return "";
 }
 

@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "reports/charts.h"
@@ -20,29 +21,33 @@
 namespace skinsim::reports {
 namespace {
 
-// Sets DISPLAY (or unsets it, for nullopt) for the scope, then restores it.
-class ScopedDisplay {
+// Sets environment variable `name` (or unsets it, for nullopt) for the scope, then restores it.
+class ScopedEnv {
  public:
-  explicit ScopedDisplay(const std::optional<std::string>& value) {
-    if (const char* old = std::getenv("DISPLAY")) old_ = old;
+  ScopedEnv(std::string name, const std::optional<std::string>& value) : name_(std::move(name)) {
+    if (const char* old = std::getenv(name_.c_str())) old_ = old;
+    set(value);
+  }
+  ~ScopedEnv() { set(old_); }
+  ScopedEnv(const ScopedEnv&) = delete;
+  ScopedEnv& operator=(const ScopedEnv&) = delete;
+
+ private:
+  void set(const std::optional<std::string>& value) {
     if (value)
-      ::setenv("DISPLAY", value->c_str(), 1);
+      ::setenv(name_.c_str(), value->c_str(), 1);
     else
-      ::unsetenv("DISPLAY");
+      ::unsetenv(name_.c_str());
   }
-  ~ScopedDisplay() {
-    if (old_)
-      ::setenv("DISPLAY", old_->c_str(), 1);
-    else
-      ::unsetenv("DISPLAY");
-  }
+
+  std::string name_;
 
  private:
   std::optional<std::string> old_;
 };
 
 TEST(ChartsAvailable, NoWhenDisplayIsUnset) {
-  ScopedDisplay none(std::nullopt);
+  ScopedEnv none("DISPLAY", std::nullopt);
   std::string why;
   EXPECT_FALSE(charts_available(&why));
   EXPECT_NE(why.find("xvfb-run -a"), std::string::npos) << why;
@@ -52,14 +57,14 @@ TEST(ChartsAvailable, NoWhenDisplayIsUnset) {
 }
 
 TEST(ChartsAvailable, NoWhenTheDisplayCannotBeOpened) {
-  ScopedDisplay bogus(std::string(":4711"));  // no X server listens there
+  ScopedEnv bogus("DISPLAY", ":4711");  // no X server listens there
   std::string why;
   EXPECT_FALSE(charts_available(&why));
   EXPECT_NE(why.find(":4711"), std::string::npos) << why;
 }
 
 TEST(ChartsAvailable, ChartFunctionsThrowInsteadOfCrashing) {
-  ScopedDisplay none(std::nullopt);
+  ScopedEnv none("DISPLAY", std::nullopt);
   ConfigResult row;
   row.id = "a";
   row.passes = {{"shade", 1.0, "alu", {{"color_store", 1e6}}}};
@@ -122,9 +127,11 @@ class PrivateXServer {
 // VTK aborts the process on a display without GLX ("Could not find a decent config"); the
 // check finds it first, names it, and the chart functions throw instead.
 TEST(ChartsAvailable, NoWhenTheDisplayHasNoOpenGL) {
-  PrivateXServer server({"-extension", "GLX"});
+  // Kept until the process ends: skinsim keeps a display name's connection for the process
+  // (display_check.h), so a later test's Xvfb must not get this one's number.
+  static PrivateXServer server({"-extension", "GLX"});
   if (server.name().empty()) GTEST_SKIP() << "cannot start Xvfb (is the xvfb package installed?)";
-  ScopedDisplay use(server.name());
+  ScopedEnv use("DISPLAY", server.name());
   std::string why;
   EXPECT_FALSE(charts_available(&why));
   EXPECT_NE(why.find("X display '" + server.name() + "': it has no GLX extension"),
@@ -137,10 +144,27 @@ TEST(ChartsAvailable, NoWhenTheDisplayHasNoOpenGL) {
   EXPECT_THROW(write_dram_by_cause_chart(row, ::testing::TempDir() + "no_glx/dram"), ReportError);
 }
 
+// A server that gives indirect contexts (+iglx) gives only OpenGL 1.4, on which VTK crashes
+// ("GLEW could not be initialized"); Mesa's libGL asks for indirect ones when told to, as it
+// must over ssh -X.
+TEST(ChartsAvailable, NoWhenTheDisplayGivesOnlyAnOldOpenGL) {
+  // Kept until the process ends: skinsim keeps a display name's connection for the process
+  // (display_check.h), so a later test's Xvfb must not get this one's number.
+  static PrivateXServer server({"+iglx"});
+  if (server.name().empty()) GTEST_SKIP() << "cannot start Xvfb (is the xvfb package installed?)";
+  ScopedEnv use("DISPLAY", server.name());
+  ScopedEnv indirect("LIBGL_ALWAYS_INDIRECT", "1");
+  std::string why;
+  EXPECT_FALSE(charts_available(&why));
+  EXPECT_NE(why.find("X display '" + server.name() + "': it cannot create an OpenGL 3.2"),
+            std::string::npos)
+      << why;
+}
+
 TEST(ChartDisplayDeathTest, ALostXServerEndsTheProcessWithStatus2AndSaysWhichDisplay) {
   PrivateXServer server;
   if (server.name().empty()) GTEST_SKIP() << "cannot start Xvfb (is the xvfb package installed?)";
-  ScopedDisplay use(server.name());
+  ScopedEnv use("DISPLAY", server.name());
   ConfigResult row;
   row.id = "a";
   row.passes = {{"shade", 1.0, "alu", {{"color_store", 1e6}}}};
