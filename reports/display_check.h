@@ -1,18 +1,20 @@
 // VTK's Debian build renders through an X display (even "offscreen"). Left to itself, a VTK
 // render window opens its own connection, once, without retrying, and when that is refused
 // (a loaded machine, an xvfb-run server still starting) VTK carries on with no display and
-// crashes in XSync (seen twice in a sweep's chart phase while CI ran beside it). So skinsim
-// opens the display itself, with retries, keeps that one connection for the whole process and
-// hands it to every chart's render window.
+// crashes in XSync (seen twice in a sweep's chart phase while CI ran beside it); on a display
+// without a usable OpenGL it aborts. So skinsim opens the display itself, with retries,
+// checks its OpenGL, keeps that one connection for the whole process and hands it to every
+// chart's render window.
 #pragma once
 
 #include <string>
 
 namespace skinsim::reports {
 
-// True if the X display named by DISPLAY is open or can be opened (it is then kept open).
-// Otherwise false, and *why (if given) says what is missing and how to run with a display or
-// without charts. Creates no VTK object.
+// True if the X display named by DISPLAY is open or can be opened (it is then kept open) and
+// offers the OpenGL VTK renders with (GLX, an OpenGL 3.2 core context). Otherwise false, and
+// *why (if given) says what is missing and how to run with a display or without charts.
+// Creates no VTK object.
 bool charts_available(std::string* why);
 
 // The open connection (an Xlib Display*) to the display named by DISPLAY, opened on first use
