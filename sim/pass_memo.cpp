@@ -10,6 +10,8 @@
 #include <type_traits>
 #include <typeinfo>
 
+#include "sim/unorm8.h"
+
 namespace skinsim::sim {
 
 namespace {
@@ -172,16 +174,15 @@ PassMemo::PassMemo(std::size_t capacity_bytes) : capacity_bytes_(capacity_bytes)
 PassMemo::StoredPixels PassMemo::pack(const RenderTarget& target) {
   StoredPixels s;
   if (target.format == TexelFormat::kRGBA8) {
-    // A stored RGBA8 value is k / 255 (quantize); a value that is not (one the host wrote)
-    // keeps the target in floats.
+    // A stored RGBA8 value is one of the 256 (quantize); a value that is not (one the host
+    // wrote) keeps the target in floats.
     s.unorm8.resize(target.pixels.size() * 4);
     bool exact = true;
     for (std::size_t i = 0; i < target.pixels.size() && exact; ++i) {
-      for (int c = 0; c < 4; ++c) {
-        const float v = target.pixels[i][c];
-        const int k = static_cast<int>(v * 255.0f + 0.5f);
-        exact = exact && k >= 0 && k <= 255 && static_cast<float>(k) / 255.0f == v;
-        s.unorm8[i * 4 + c] = static_cast<std::uint8_t>(k);
+      for (int c = 0; c < 4 && exact; ++c) {
+        const std::optional<std::uint8_t> k = unorm8_code(target.pixels[i][c]);
+        exact = k.has_value();
+        s.unorm8[i * 4 + c] = k.value_or(0);
       }
     }
     if (exact) return s;
@@ -209,7 +210,7 @@ void PassMemo::unpack(const StoredPixels& stored, RenderTarget& target) {
   if (!stored.unorm8.empty()) {
     for (std::size_t i = 0; i < target.pixels.size(); ++i) {
       for (int c = 0; c < 4; ++c) {
-        target.pixels[i][c] = static_cast<float>(stored.unorm8[i * 4 + c]) / 255.0f;
+        target.pixels[i][c] = kUnorm8Value[stored.unorm8[i * 4 + c]];
       }
     }
   } else if (!stored.depth.empty()) {

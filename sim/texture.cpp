@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "sim/fp16.h"
+#include "sim/unorm8.h"
 
 namespace skinsim::sim {
 
@@ -57,14 +58,6 @@ TexelFormat parse_format(const std::string& name) {
 
 namespace {
 
-// k / 255 for every byte value k: the float an RGBA8 channel holds.
-constexpr std::array<float, 256> make_byte_values() {
-  std::array<float, 256> v{};
-  for (int i = 0; i < 256; ++i) v[i] = static_cast<float>(i) / 255.0f;
-  return v;
-}
-constexpr std::array<float, 256> kByteValue = make_byte_values();
-
 float quantize_unorm8(float v) {
   // NaN converts to 0, the D3D10+/Vulkan float-to-UNORM rule (GLES leaves it open): the
   // argument order of std::max makes NaN (and -0) give +0.
@@ -72,7 +65,7 @@ float quantize_unorm8(float v) {
   // Round half away from zero (as glm::round), without a libm call: the scaled value is in
   // [0,255], where x - floor(x) is exact.
   const int whole = static_cast<int>(x);
-  return kByteValue[whole + (x - static_cast<float>(whole) >= 0.5f ? 1 : 0)];
+  return kUnorm8Value[whole + (x - static_cast<float>(whole) >= 0.5f ? 1 : 0)];
 }
 
 // Depth as a normalised integer of `steps` + 1 levels (NaN to 0, as UNORM conversion).

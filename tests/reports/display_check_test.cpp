@@ -46,6 +46,14 @@ class ScopedEnv {
   std::optional<std::string> old_;
 };
 
+// A sweep row with one pass: enough for write_dram_by_cause_chart.
+ConfigResult one_pass_row() {
+  ConfigResult row;
+  row.id = "a";
+  row.passes = {{"shade", 1.0, "alu", {{"color_store", 1e6}}}};
+  return row;
+}
+
 TEST(ChartsAvailable, NoWhenDisplayIsUnset) {
   ScopedEnv none("DISPLAY", std::nullopt);
   std::string why;
@@ -65,9 +73,7 @@ TEST(ChartsAvailable, NoWhenTheDisplayCannotBeOpened) {
 
 TEST(ChartsAvailable, ChartFunctionsThrowInsteadOfCrashing) {
   ScopedEnv none("DISPLAY", std::nullopt);
-  ConfigResult row;
-  row.id = "a";
-  row.passes = {{"shade", 1.0, "alu", {{"color_store", 1e6}}}};
+  const ConfigResult row = one_pass_row();
   try {
     write_dram_by_cause_chart(row, "never_written");
     FAIL() << "expected ReportError";
@@ -138,9 +144,7 @@ TEST(ChartsAvailable, NoWhenTheDisplayHasNoOpenGL) {
             std::string::npos)
       << why;
   EXPECT_NE(why.find("--no-charts"), std::string::npos) << why;
-  ConfigResult row;
-  row.id = "a";
-  row.passes = {{"shade", 1.0, "alu", {{"color_store", 1e6}}}};
+  const ConfigResult row = one_pass_row();
   EXPECT_THROW(write_dram_by_cause_chart(row, ::testing::TempDir() + "no_glx/dram"), ReportError);
 }
 
@@ -165,9 +169,7 @@ TEST(ChartDisplayDeathTest, ALostXServerEndsTheProcessWithStatus2AndSaysWhichDis
   PrivateXServer server;
   if (server.name().empty()) GTEST_SKIP() << "cannot start Xvfb (is the xvfb package installed?)";
   ScopedEnv use("DISPLAY", server.name());
-  ConfigResult row;
-  row.id = "a";
-  row.passes = {{"shade", 1.0, "alu", {{"color_store", 1e6}}}};
+  const ConfigResult row = one_pass_row();
   const std::string dir = ::testing::TempDir() + "lost_display_charts";
   // Only the forked child connects, so this process keeps no connection to the killed server
   // (a later test's Xvfb may get the same display number).

@@ -1,0 +1,30 @@
+// RGBA8 channels as the emulator holds them: byte k is the float k / 255 (quantize stores
+// RGBA8 targets and textures as these values). Shared by quantize and by the pass memo,
+// which keeps RGBA8 targets as their bytes.
+#pragma once
+
+#include <array>
+#include <bit>
+#include <cstdint>
+#include <optional>
+
+namespace skinsim::sim {
+
+inline constexpr std::array<float, 256> kUnorm8Value = [] {
+  std::array<float, 256> v{};
+  for (int k = 0; k < 256; ++k) v[k] = static_cast<float>(k) / 255.0f;
+  return v;
+}();
+
+// The byte whose value is `v` bit for bit, or nullopt when `v` is no RGBA8 value (one the
+// host wrote, say; -0 included).
+inline std::optional<std::uint8_t> unorm8_code(float v) {
+  if (!(v >= 0.0f && v <= 1.0f)) return std::nullopt;
+  const int k = static_cast<int>(v * 255.0f + 0.5f);
+  if (std::bit_cast<std::uint32_t>(kUnorm8Value[k]) != std::bit_cast<std::uint32_t>(v)) {
+    return std::nullopt;
+  }
+  return static_cast<std::uint8_t>(k);
+}
+
+}  // namespace skinsim::sim
