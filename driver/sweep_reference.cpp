@@ -32,12 +32,6 @@ nlohmann::json reference_fingerprint(const pipeline::PipelineConfig& c, const Sc
             {"units_per_mm", s.units_per_mm}}}};
 }
 
-// The 8-bit quantisation reference_images applies, applied to a loaded PNG too, so the
-// cached and the fresh reference hold exactly the same floats.
-void quantise(quality::Image& image) {
-  for (glm::vec3& c : image.rgb) c = glm::round(c * 255.0f) / 255.0f;
-}
-
 bool load_cached(const std::filesystem::path& marker, const nlohmann::json& fingerprint,
                  const std::filesystem::path& image_path, const std::filesystem::path& mask_path,
                  ReferenceImages& out) {
@@ -54,7 +48,6 @@ bool load_cached(const std::filesystem::path& marker, const nlohmann::json& fing
   } catch (const std::exception&) {
     return false;  // damaged or deleted by hand: render again
   }
-  quantise(out.image);
   return out.image.width == out.skin.width && out.image.height == out.skin.height;
 }
 

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <optional>
 #include <span>
 #include <string>
 #include <utility>
@@ -18,6 +19,7 @@
 #include "quality/metric_inputs.h"
 #include "quality/metrics.h"
 #include "quality/separable_stream.h"
+#include "util/unorm8.h"
 
 namespace skinsim::quality {
 namespace {
@@ -149,17 +151,17 @@ ImageOutputs add_image_filters(SeparableStream& stream, int image, double ppd,
   return out;
 }
 
-// sRGB decoding of the 256 values an 8-bit image holds, which is what rendered frames
-// usually are; other values take the pow() path. Both give identical results.
+// sRGB decoding of the 256 values an 8-bit image holds (util/unorm8.h), which is what
+// rendered frames and their PNGs are; other values take the pow() path. Both give identical
+// results.
 class SrgbDecoder {
  public:
   SrgbDecoder() {
-    for (int i = 0; i < 256; ++i) table_[i] = decode(static_cast<float>(i / 255.0));
+    for (int i = 0; i < 256; ++i) table_[i] = decode(kUnorm8Value[i]);
   }
   double operator()(float encoded) const {
-    const long code = std::lround(static_cast<double>(encoded) * 255.0);
-    const bool eight_bit = code >= 0 && code <= 255 && static_cast<float>(code / 255.0) == encoded;
-    return eight_bit ? table_[code] : decode(encoded);
+    const std::optional<std::uint8_t> code = unorm8_code(encoded);
+    return code ? table_[*code] : decode(encoded);
   }
 
  private:

@@ -11,6 +11,7 @@
 #include "io/atomic_file.h"
 #include "io/read_file.h"
 #include "quality/error.h"
+#include "util/unorm8.h"
 
 namespace skinsim::quality {
 namespace {
@@ -44,9 +45,23 @@ int read_floats(const std::filesystem::path& path, int& width, int& height,
   width = spec.width;
   height = spec.height;
   const int channels = spec.nchannels;
-  pixels.resize(static_cast<std::size_t>(width) * height * channels);
-  if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data())) {
-    throw QualityError("cannot read pixels of '" + path.string() + "': " + input->geterror());
+  const std::size_t count = static_cast<std::size_t>(width) * height * channels;
+  const auto read = [&](OIIO::TypeDesc type, void* data) {
+    if (!input->read_image(0, 0, 0, channels, type, data)) {
+      throw QualityError("cannot read pixels of '" + path.string() + "': " + input->geterror());
+    }
+  };
+  pixels.resize(count);
+  if (spec.format == OIIO::TypeDesc::UINT8) {
+    // Byte k becomes k / 255 exactly as the emulator stores it (util/unorm8.h). OpenImageIO 2.4's
+    // own conversion multiplies by 1/255, which is one ulp off for 126 of the 256 bytes, so
+    // a frame read back from its PNG would differ from the frame that was written.
+    std::vector<std::uint8_t> bytes(count);
+    read(OIIO::TypeDesc::UINT8, bytes.data());
+    std::transform(bytes.begin(), bytes.end(), pixels.begin(),
+                   [](std::uint8_t k) { return kUnorm8Value[k]; });
+  } else {
+    read(OIIO::TypeDesc::FLOAT, pixels.data());
   }
   input->close();
   return channels;

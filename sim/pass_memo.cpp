@@ -10,7 +10,7 @@
 #include <type_traits>
 #include <typeinfo>
 
-#include "sim/unorm8.h"
+#include "util/unorm8.h"
 
 namespace skinsim::sim {
 

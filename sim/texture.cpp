@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "sim/fp16.h"
-#include "sim/unorm8.h"
+#include "util/unorm8.h"
 
 namespace skinsim::sim {
 

@@ -1,6 +1,7 @@
-// RGBA8 channels as the emulator holds them: byte k is the float k / 255 (quantize stores
-// RGBA8 targets and textures as these values). Shared by quantize and by the pass memo,
-// which keeps RGBA8 targets as their bytes.
+// 8-bit unsigned normalised channels as skinsim holds them: byte k is the float k / 255. The
+// emulator's quantize stores RGBA8 targets and textures as these values, the pass memo keeps
+// such targets as their bytes, and quality::load_png decodes 8-bit images to them, so a frame
+// read back from its PNG is the very frame that was written.
 #pragma once
 
 #include <array>
@@ -8,7 +9,7 @@
 #include <cstdint>
 #include <optional>
 
-namespace skinsim::sim {
+namespace skinsim {
 
 inline constexpr std::array<float, 256> kUnorm8Value = [] {
   std::array<float, 256> v{};
@@ -27,4 +28,4 @@ inline std::optional<std::uint8_t> unorm8_code(float v) {
   return static_cast<std::uint8_t>(k);
 }
 
-}  // namespace skinsim::sim
+}  // namespace skinsim
