@@ -1,6 +1,6 @@
 #include "driver/images.h"
 
-#include <algorithm>
+#include "util/parallel_pixels.h"
 
 namespace skinsim::driver {
 
@@ -9,9 +9,9 @@ quality::Image to_image(const sim::RenderTarget& target, float scale) {
   img.width = target.width;
   img.height = target.height;
   img.rgb.resize(target.pixels.size());
-  std::transform(
-      target.pixels.begin(), target.pixels.end(), img.rgb.begin(),
-      [scale](const glm::vec4& p) { return glm::clamp(glm::vec3(p) * scale, 0.0f, 1.0f); });
+  for_each_pixel(target.pixels.size(), [&](std::size_t i) {
+    img.rgb[i] = glm::clamp(glm::vec3(target.pixels[i]) * scale, 0.0f, 1.0f);
+  });
   return img;
 }
 

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -97,8 +98,9 @@ void compute(const fs::path& dir, const Job& job, int frame_threads, sim::PassMe
   const FrameResult frame =
       run_frame(*job.scene, job.resolved, *job.device, frame_threads, {}, &memo);
   const FrameQuality measured = evaluate_quality(frame.output.frame, *job.reference);
-  write_png(frame.output.frame, dir / config_frame_path(id));
-  quality::save_png(measured.error_map, dir / config_error_path(id));
+  // Each PNG's zlib stream is encoded by one thread (~80 ms at 2048x1536): the two at once.
+  tbb::parallel_invoke([&] { write_png(frame.output.frame, dir / config_frame_path(id)); },
+                       [&] { quality::save_png(measured.error_map, dir / config_error_path(id)); });
   StoredConfig stored;
   stored.fingerprint = job.fingerprint;
   stored.row = config_row(*job.config, frame, measured, config_frame_path(id),

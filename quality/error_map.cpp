@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "quality/error.h"
+#include "util/parallel_pixels.h"
 
 namespace skinsim::quality {
 namespace {
@@ -55,8 +56,8 @@ Image false_colour(const ScalarMap& map, ColorMap colors) {
   image.width = map.width;
   image.height = map.height;
   image.rgb.resize(map.values.size());
-  std::transform(map.values.begin(), map.values.end(), image.rgb.begin(),
-                 [&](float v) { return color_map(colors, v); });
+  for_each_pixel(map.values.size(),
+                 [&](std::size_t i) { image.rgb[i] = color_map(colors, map.values[i]); });
   return image;
 }
 

@@ -11,6 +11,7 @@
 #include "io/atomic_file.h"
 #include "io/read_file.h"
 #include "quality/error.h"
+#include "util/parallel_pixels.h"
 #include "util/unorm8.h"
 
 namespace skinsim::quality {
@@ -20,6 +21,15 @@ std::uint8_t to_u8(float value) {
   if (!(value > 0.0f)) return 0;  // also maps NaN to 0
   if (value >= 1.0f) return 255;
   return static_cast<std::uint8_t>(std::lround(value * 255.0f));
+}
+
+// The bytes save_png writes, RGB interleaved.
+std::vector<std::uint8_t> to_rgb8(const Image& image) {
+  std::vector<std::uint8_t> bytes(image.rgb.size() * 3);
+  for_each_pixel(image.rgb.size(), [&](std::size_t i) {
+    for (int c = 0; c < 3; ++c) bytes[i * 3 + c] = to_u8(image.rgb[i][c]);
+  });
+  return bytes;
 }
 
 // An 8K 16-bit RGBA PNG is at most ~256 MiB uncompressed; anything larger is not an image
@@ -109,11 +119,7 @@ void save_png(const Image& image, const std::filesystem::path& path) {
                        std::to_string(image.rgb.size()) + " pixels, expected " +
                        std::to_string(image.width) + "x" + std::to_string(image.height));
   }
-  std::vector<std::uint8_t> bytes(image.rgb.size() * 3);
-  for (std::size_t i = 0; i < image.rgb.size(); ++i) {
-    for (int c = 0; c < 3; ++c) bytes[i * 3 + c] = to_u8(image.rgb[i][c]);
-  }
-  write_png_u8(path, image.width, image.height, 3, bytes);
+  write_png_u8(path, image.width, image.height, 3, to_rgb8(image));
 }
 
 Mask load_mask_png(const std::filesystem::path& path) {

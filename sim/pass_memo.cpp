@@ -10,6 +10,7 @@
 #include <type_traits>
 #include <typeinfo>
 
+#include "util/parallel_pixels.h"
 #include "util/unorm8.h"
 
 namespace skinsim::sim {
@@ -208,15 +209,13 @@ PassMemo::StoredPixels PassMemo::pack(const RenderTarget& target) {
 
 void PassMemo::unpack(const StoredPixels& stored, RenderTarget& target) {
   if (!stored.unorm8.empty()) {
-    for (std::size_t i = 0; i < target.pixels.size(); ++i) {
-      for (int c = 0; c < 4; ++c) {
-        target.pixels[i][c] = kUnorm8Value[stored.unorm8[i * 4 + c]];
-      }
-    }
+    for_each_pixel(target.pixels.size(), [&](std::size_t i) {
+      for (int c = 0; c < 4; ++c) target.pixels[i][c] = kUnorm8Value[stored.unorm8[i * 4 + c]];
+    });
   } else if (!stored.depth.empty()) {
-    for (std::size_t i = 0; i < target.pixels.size(); ++i) {
+    for_each_pixel(target.pixels.size(), [&](std::size_t i) {
       target.pixels[i] = glm::vec4(stored.depth[i], 0.0f, 0.0f, 0.0f);
-    }
+    });
   } else {
     std::copy(stored.floats.begin(), stored.floats.end(), target.pixels.begin());
   }
