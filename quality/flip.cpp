@@ -171,9 +171,10 @@ class SrgbDecoder {
   std::array<double, 256> table_;
 };
 
-void write_source_row(const Image& image, int y, const SrgbDecoder& decode, float* const* rows) {
+void write_source_row(const Image& image, int y, Columns columns, const SrgbDecoder& decode,
+                      float* const* rows) {
   const std::size_t begin = static_cast<std::size_t>(y) * image.width;
-  for (int x = 0; x < image.width; ++x) {
+  for (int x = columns.begin; x < columns.end; ++x) {
     const glm::vec3& p = image.rgb[begin + x];
     const dvec3 linear(decode(p.r), decode(p.g), decode(p.b));
     const dvec3 opponent = flip_color::xyz_to_ycxcz(flip_color::linear_rgb_to_xyz(linear));
@@ -253,7 +254,12 @@ float pixel_error(const FlipPixel& t, const FlipPixel& r, double cmax) {
 // where the images differ within `radius` along x and along y. Elsewhere every filter reads
 // the same values in the same order, so both images' FLIP pixels are equal bit for bit and
 // the error is exactly 0 (the images' borders clamp to pixels inside the same window).
-std::vector<std::uint8_t> near_differences(const Image& a, const Image& b, int radius) {
+// Returns the mask and, per row, the columns from its first such pixel to its last.
+struct NearDifferences {
+  std::vector<std::uint8_t> mask;
+  std::vector<Columns> rows;
+};
+NearDifferences near_differences(const Image& a, const Image& b, int radius) {
   const int w = a.width, h = a.height;
   std::vector<std::uint8_t> across(a.pixel_count(), 0);  // a difference within radius along x
   tbb::parallel_for(0, h, [&](int y) {
@@ -264,15 +270,23 @@ std::vector<std::uint8_t> near_differences(const Image& a, const Image& b, int r
       if (x - radius >= 0 && last >= x - 2 * radius) across[row + x - radius] = 1;
     }
   });
-  std::vector<std::uint8_t> near(a.pixel_count(), 0);
+  NearDifferences near{std::vector<std::uint8_t>(a.pixel_count(), 0),
+                       std::vector<Columns>(static_cast<std::size_t>(h))};
   tbb::parallel_for(0, w, [&](int x) {
     int last = -radius - 1;
     for (int y = 0; y < h + radius; ++y) {
       if (y < h && across[static_cast<std::size_t>(y) * w + x]) last = y;
       if (y - radius >= 0 && last >= y - 2 * radius) {
-        near[static_cast<std::size_t>(y - radius) * w + x] = 1;
+        near.mask[static_cast<std::size_t>(y - radius) * w + x] = 1;
       }
     }
+  });
+  tbb::parallel_for(0, h, [&](int y) {
+    const std::uint8_t* row = &near.mask[static_cast<std::size_t>(y) * w];
+    int begin = 0, end = w;
+    while (begin < end && !row[begin]) ++begin;
+    while (end > begin && !row[end - 1]) --end;
+    near.rows[y] = {begin, end};
   });
   return near;
 }
@@ -285,7 +299,7 @@ void stream_flip_pixels(std::span<const Image* const> images, double ppd,
                         const Image* unchanged_from, const Sink& sink) {
   const FeatureKernels features = feature_kernels(ppd);
   const int count = static_cast<int>(images.size());
-  SeparableStream stream{images[0]->width, images[0]->height, count * kSourcesPerImage, {}, {}};
+  SeparableStream stream{images[0]->width, images[0]->height, count * kSourcesPerImage, {}, {}, {}};
   std::vector<ImageOutputs> outputs;
   for (int i = 0; i < count; ++i) outputs.push_back(add_image_filters(stream, i, ppd, features));
   std::vector<std::uint8_t> near;
@@ -297,17 +311,19 @@ void stream_flip_pixels(std::span<const Image* const> images, double ppd,
     for (const ColumnFilter& f : stream.column_filters) {
       radius = std::max(radius, static_cast<int>(f.kernel.size() / 2));
     }
-    near = near_differences(*images[0], *unchanged_from, radius);
+    NearDifferences differences = near_differences(*images[0], *unchanged_from, radius);
+    near = std::move(differences.mask);
+    stream.wanted = std::move(differences.rows);  // only there can the error be other than 0
   }
   const SrgbDecoder decode;
-  const auto source = [&](int y, std::span<float* const> rows) {
+  const auto source = [&](int y, Columns columns, std::span<float* const> rows) {
     for (int i = 0; i < count; ++i) {
-      write_source_row(*images[i], y, decode, rows.data() + i * kSourcesPerImage);
+      write_source_row(*images[i], y, columns, decode, rows.data() + i * kSourcesPerImage);
     }
   };
-  const auto row_sink = [&](int y, std::span<const float* const> filtered) {
+  const auto row_sink = [&](int y, Columns columns, std::span<const float* const> filtered) {
     const std::size_t row = static_cast<std::size_t>(y) * stream.width;
-    for (int x = 0; x < stream.width; ++x) {
+    for (int x = columns.begin; x < columns.end; ++x) {
       if (!near.empty() && !near[row + x]) continue;
       const FlipPixel first = pixel_features(outputs[0], filtered, x);
       if (count == 1) {

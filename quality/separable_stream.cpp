@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <stdexcept>
+#include <string>
 
 namespace skinsim::quality {
 namespace {
@@ -18,18 +20,21 @@ int radius_of(const std::vector<float>& kernel) {
   return static_cast<int>(kernel.size() / 2);
 }
 
-// Filters one row along x with edge-clamped borders. `padded` is scratch of >= width + 2r.
-void filter_row(const float* source, int width, const std::vector<float>& kernel, float* padded,
-                float* out) {
+// Filters columns [out_columns) of one row along x with edge-clamped borders: out[x] reads
+// source[clamp(x - r .. x + r)]. `padded` is scratch of >= width + 2r.
+void filter_row(const float* source, int width, const std::vector<float>& kernel,
+                Columns out_columns, float* padded, float* out) {
   const int radius = radius_of(kernel);
-  for (int i = 0; i < width + 2 * radius; ++i)
+  const int begin = out_columns.begin, end = out_columns.end;
+  for (int i = begin; i < end + 2 * radius; ++i) {
     padded[i] = source[std::clamp(i - radius, 0, width - 1)];
-  std::fill(out, out + width, 0.0f);
+  }
+  std::fill(out + begin, out + end, 0.0f);
   // Tap-outer, pixel-inner: each output sums its taps in order, and the inner loop vectorises.
   for (std::size_t k = 0; k < kernel.size(); ++k) {
     const float weight = kernel[k];
     const float* src = padded + k;
-    for (int x = 0; x < width; ++x) out[x] += weight * src[x];
+    for (int x = begin; x < end; ++x) out[x] += weight * src[x];
   }
 }
 
@@ -39,12 +44,12 @@ class ChunkWorker {
       : s_(stream), source_(source), sink_(sink) {
     halo_ = 0;
     for (const ColumnFilter& f : s_.column_filters) halo_ = std::max(halo_, radius_of(f.kernel));
-    int widest = 0;
-    for (const RowFilter& f : s_.row_filters) widest = std::max(widest, radius_of(f.kernel));
+    widest_ = 0;
+    for (const RowFilter& f : s_.row_filters) widest_ = std::max(widest_, radius_of(f.kernel));
     ring_rows_ = 2 * halo_ + 1;
     const std::size_t w = static_cast<std::size_t>(s_.width);
     source_rows_.resize(w * s_.source_channels);
-    padded_.resize(w + 2 * static_cast<std::size_t>(widest));
+    padded_.resize(w + 2 * static_cast<std::size_t>(widest_));
     ring_.resize(w * ring_rows_ * s_.row_filters.size());
     output_.resize(w * s_.column_filters.size());
     for (int c = 0; c < s_.source_channels; ++c) source_pointers_.push_back(&source_rows_[w * c]);
@@ -52,12 +57,16 @@ class ChunkWorker {
       output_pointers_.push_back(&output_[w * f]);
   }
 
-  void run(int y_begin, int y_end) {
+  // Output rows [y_begin, y_end), columns `columns` of each.
+  void run(int y_begin, int y_end, Columns columns) {
+    columns_ = columns;
+    source_columns_ = {std::max(0, columns.begin - widest_),
+                       std::min(s_.width, columns.end + widest_)};
     for (int sy = y_begin - halo_; sy < y_begin + halo_; ++sy) push_source_row(sy);
     for (int y = y_begin; y < y_end; ++y) {
       push_source_row(y + halo_);
       for (std::size_t f = 0; f < s_.column_filters.size(); ++f) filter_column(f, y);
-      sink_(y, output_pointers_);
+      sink_(y, columns_, output_pointers_);
     }
   }
 
@@ -69,11 +78,11 @@ class ChunkWorker {
 
   // Generates source row sy (clamped into the image) and filters it along x into the ring.
   void push_source_row(int sy) {
-    source_(std::clamp(sy, 0, s_.height - 1), source_pointers_);
+    source_(std::clamp(sy, 0, s_.height - 1), source_columns_, source_pointers_);
     for (std::size_t f = 0; f < s_.row_filters.size(); ++f) {
       const RowFilter& filter = s_.row_filters[f];
-      filter_row(source_pointers_[filter.source_channel], s_.width, filter.kernel, padded_.data(),
-                 ring_row(f, sy));
+      filter_row(source_pointers_[filter.source_channel], s_.width, filter.kernel, columns_,
+                 padded_.data(), ring_row(f, sy));
     }
   }
 
@@ -81,11 +90,11 @@ class ChunkWorker {
     const ColumnFilter& filter = s_.column_filters[f];
     const int radius = radius_of(filter.kernel);
     float* out = output_pointers_[f];
-    std::fill(out, out + s_.width, 0.0f);
+    std::fill(out + columns_.begin, out + columns_.end, 0.0f);
     for (int k = 0; k <= 2 * radius; ++k) {
       const float weight = filter.kernel[k];
       const float* src = ring_row(filter.row_filter, y + k - radius);
-      for (int x = 0; x < s_.width; ++x) out[x] += weight * src[x];
+      for (int x = columns_.begin; x < columns_.end; ++x) out[x] += weight * src[x];
     }
   }
 
@@ -93,7 +102,10 @@ class ChunkWorker {
   const SourceRowFn& source_;
   const OutputRowFn& sink_;
   int halo_ = 0;
+  int widest_ = 0;
   int ring_rows_ = 1;
+  Columns columns_;         // output (and row-filtered) columns of the current chunk
+  Columns source_columns_;  // the source columns those read
   std::vector<float> source_rows_;
   std::vector<float> padded_;
   std::vector<float> ring_;
@@ -102,15 +114,35 @@ class ChunkWorker {
   std::vector<float*> output_pointers_;
 };
 
+// The columns rows [y_begin, y_end) want together (all when the stream names none).
+Columns chunk_columns(const SeparableStream& stream, int y_begin, int y_end) {
+  if (stream.wanted.empty()) return {0, stream.width};
+  Columns all{stream.width, 0};
+  for (int y = y_begin; y < y_end; ++y) {
+    const Columns& row = stream.wanted[y];
+    if (row.empty()) continue;
+    all = {std::min(all.begin, row.begin), std::max(all.end, row.end)};
+  }
+  return all;
+}
+
 }  // namespace
 
 void run_separable_stream(const SeparableStream& stream, const SourceRowFn& source,
                           const OutputRowFn& sink) {
+  if (!stream.wanted.empty() && stream.wanted.size() != static_cast<std::size_t>(stream.height)) {
+    throw std::invalid_argument("separable stream: wanted columns for " +
+                                std::to_string(stream.wanted.size()) + " rows of " +
+                                std::to_string(stream.height));
+  }
   const int chunks = (stream.height + kChunkRows - 1) / kChunkRows;
   tbb::parallel_for(tbb::blocked_range<int>(0, chunks), [&](const tbb::blocked_range<int>& range) {
     ChunkWorker worker(stream, source, sink);
     for (int chunk = range.begin(); chunk < range.end(); ++chunk) {
-      worker.run(chunk * kChunkRows, std::min(stream.height, (chunk + 1) * kChunkRows));
+      const int y_begin = chunk * kChunkRows;
+      const int y_end = std::min(stream.height, (chunk + 1) * kChunkRows);
+      const Columns columns = chunk_columns(stream, y_begin, y_end);
+      if (!columns.empty()) worker.run(y_begin, y_end, columns);
     }
   });
 }

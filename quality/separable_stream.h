@@ -24,20 +24,35 @@ struct ColumnFilter {
   std::vector<float> kernel;
 };
 
+// Columns [begin, end) of a row; none when begin >= end.
+struct Columns {
+  int begin = 0;
+  int end = 0;
+  bool empty() const { return begin >= end; }
+};
+
 struct SeparableStream {
   int width = 0;
   int height = 0;
   int source_channels = 0;
   std::vector<RowFilter> row_filters;
   std::vector<ColumnFilter> column_filters;
+  // The output columns wanted in each row (`height` entries), or empty for every pixel. Each
+  // chunk of rows then computes only the columns its rows want, and the source columns
+  // those read; a chunk that wants none is skipped. A computed value is the same whatever
+  // else is computed.
+  std::vector<Columns> wanted;
 };
 
-// Writes row y of every source channel: channels[c] points to `width` floats.
-using SourceRowFn = std::function<void(int y, std::span<float* const> channels)>;
-// Receives output row y: filtered[f] is column filter f's result (`width` floats).
-using OutputRowFn = std::function<void(int y, std::span<const float* const> filtered)>;
+// Writes row y of every source channel: channels[c] points to `width` floats, of which the
+// stream reads `columns`.
+using SourceRowFn = std::function<void(int y, Columns columns, std::span<float* const> channels)>;
+// Receives output row y: filtered[f] is column filter f's result (`width` floats), valid in
+// `columns` (which hold every column the row wants, and perhaps more).
+using OutputRowFn =
+    std::function<void(int y, Columns columns, std::span<const float* const> filtered)>;
 
-// Runs the filters over the whole image in parallel (TBB) chunks of rows.
+// Runs the filters over the image (or its wanted columns) in parallel (TBB) chunks of rows.
 void run_separable_stream(const SeparableStream& stream, const SourceRowFn& source,
                           const OutputRowFn& sink);
 

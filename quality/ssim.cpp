@@ -26,14 +26,14 @@ double ssim(const Image& test, const Image& reference, const Mask* mask, ScalarM
   check_metric_inputs("SSIM", test, reference, mask);
   const std::vector<float> window = gaussian_kernel(kWindowSigma, kWindowRadius);
   // Source channels: x, y, x^2, y^2, xy; each is averaged by the window along x, then y.
-  SeparableStream stream{test.width, test.height, 5, {}, {}};
+  SeparableStream stream{test.width, test.height, 5, {}, {}, {}};
   for (int c = 0; c < 5; ++c) {
     stream.row_filters.push_back({c, window});
     stream.column_filters.push_back({c, window});
   }
-  const auto source = [&](int y, std::span<float* const> rows) {
+  const auto source = [&](int y, Columns columns, std::span<float* const> rows) {
     const std::size_t begin = static_cast<std::size_t>(y) * test.width;
-    for (int x = 0; x < test.width; ++x) {
+    for (int x = columns.begin; x < columns.end; ++x) {
       const float a = luma(test.rgb[begin + x]);
       const float b = luma(reference.rgb[begin + x]);
       rows[0][x] = a;
@@ -46,9 +46,9 @@ double ssim(const Image& test, const Image& reference, const Mask* mask, ScalarM
   const double c1 = (kK1 * kL) * (kK1 * kL);
   const double c2 = (kK2 * kL) * (kK2 * kL);
   std::vector<float> values(test.pixel_count());
-  const auto sink = [&](int y, std::span<const float* const> mean) {
+  const auto sink = [&](int y, Columns columns, std::span<const float* const> mean) {
     float* out = &values[static_cast<std::size_t>(y) * test.width];
-    for (int x = 0; x < test.width; ++x) {
+    for (int x = columns.begin; x < columns.end; ++x) {
       const double mx = mean[0][x];
       const double my = mean[1][x];
       const double var_x = mean[2][x] - mx * mx;

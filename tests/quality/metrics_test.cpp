@@ -3,12 +3,18 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <span>
+#include <stdexcept>
+#include <vector>
 #include <glm/common.hpp>
 #include <limits>
 #include <utility>
 
 #include "quality/error.h"
+#include "quality/separable_stream.h"
 #include "tests/quality/test_image.h"
 
 namespace skinsim::quality {
@@ -123,6 +129,68 @@ TEST(Ssim, MaskRestrictsTheStatistic) {
   }
   EXPECT_EQ(ssim(test, reference, &half), map_mean(map, &half));
   EXPECT_LT(map_mean(map, &half), 0.95);
+}
+
+// A stream restricted to wanted columns computes those values exactly as the whole-image
+// stream does (FLIP restricts itself to the pixels near a difference), asks its source only
+// for what they read, and skips chunks of rows that want nothing.
+TEST(SeparableStream, WantedColumnsGiveTheWholeImagesValuesToTheLastBit) {
+  const int w = 300, h = 400;
+  SeparableStream stream{w, h, 2, {}, {}, {}};
+  stream.row_filters = {{0, gaussian_kernel(2.0, 6)}, {1, {0.25f, -1.0f, 0.5f}}};
+  stream.column_filters = {{0, gaussian_kernel(1.5, 4)}, {1, {0.5f, 0.25f, 0.125f, 1.0f, 3.0f}}};
+  const auto value = [](int c, int x, int y) {
+    return std::sin(0.37f * static_cast<float>(x * (c + 1)) + 0.11f * static_cast<float>(y)) +
+           0.001f * static_cast<float>((x * 7919 + y * 104729 + c) % 1000);
+  };
+  std::vector<Columns> asked(h);  // the source columns asked for, per row
+  const auto source = [&](int y, Columns columns, std::span<float* const> rows) {
+    asked[y] = columns;
+    for (int c = 0; c < 2; ++c) {
+      for (int x = 0; x < w; ++x) rows[c][x] = std::nanf("");  // unasked columns are garbage
+      for (int x = columns.begin; x < columns.end; ++x) rows[c][x] = value(c, x, y);
+    }
+  };
+  const auto run = [&](std::vector<std::vector<float>>& out) {
+    out.assign(2, std::vector<float>(static_cast<std::size_t>(w) * h, -1.0f));
+    run_separable_stream(stream, source,
+                         [&](int y, Columns columns, std::span<const float* const> filtered) {
+                           for (int f = 0; f < 2; ++f) {
+                             for (int x = columns.begin; x < columns.end; ++x) {
+                               out[f][static_cast<std::size_t>(y) * w + x] = filtered[f][x];
+                             }
+                           }
+                         });
+  };
+  std::vector<std::vector<float>> whole, restricted;
+  run(whole);
+  // Rows 0-127 (the first chunk) want nothing; below, columns that wander within a chunk: in
+  // the middle, at the right edge, at the left edge.
+  stream.wanted.assign(h, Columns{});
+  for (int y = 128; y < 256; ++y) stream.wanted[y] = {100 + y % 20, 140 + y % 20};
+  for (int y = 256; y < 384; ++y) stream.wanted[y] = {w - 40 + y % 10, w};
+  for (int y = 384; y < h; ++y) stream.wanted[y] = {0, 10 + y % 5};
+  std::fill(asked.begin(), asked.end(), Columns{-1, -1});
+  run(restricted);
+  for (int y = 0; y < h; ++y) {
+    for (int x = stream.wanted[y].begin; x < stream.wanted[y].end; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * w + x;
+      for (int f = 0; f < 2; ++f) {
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(restricted[f][i]),
+                  std::bit_cast<std::uint32_t>(whole[f][i]))
+            << "filter " << f << " at (" << x << ", " << y << ")";
+      }
+    }
+  }
+  // The first chunk (rows 0-127, and the source rows only its own filters read) was skipped.
+  for (int y = 0; y < 100; ++y) EXPECT_EQ(asked[y].begin, -1) << "row " << y;
+  EXPECT_EQ(restricted[0][0], -1.0f);
+  EXPECT_THROW(
+      {
+        stream.wanted.resize(h - 1);
+        run(restricted);
+      },
+      std::invalid_argument);
 }
 
 TEST(Flip, IdenticalImagesGiveZero) {
