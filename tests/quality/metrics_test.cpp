@@ -6,12 +6,12 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <span>
-#include <stdexcept>
-#include <vector>
 #include <glm/common.hpp>
 #include <limits>
+#include <span>
+#include <stdexcept>
 #include <utility>
+#include <vector>
 
 #include "quality/error.h"
 #include "quality/separable_stream.h"
