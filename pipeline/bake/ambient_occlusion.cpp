@@ -37,11 +37,12 @@ float ambient_occlusion_at(const RayScene& rays, const glm::vec3& p, const glm::
   const glm::vec3 axis = glm::abs(n.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
   const glm::vec3 x = glm::normalize(glm::cross(axis, n));
   const glm::vec3 y = glm::cross(n, x);
-  int open = 0;
-  for (const glm::vec3& c : kHemisphere) {
-    if (!rays.occluded(p, x * c.x + y * c.y + n * c.z, start, reach)) ++open;
+  std::array<glm::vec3, kRays> directions;
+  for (int i = 0; i < kRays; ++i) {
+    const glm::vec3& c = kHemisphere[i];
+    directions[i] = x * c.x + y * c.y + n * c.z;
   }
-  return static_cast<float>(open) / kRays;
+  return static_cast<float>(rays.unoccluded(p, directions, start, reach)) / kRays;
 }
 
 std::vector<float> bake_ambient_occlusion(const RayScene& rays,

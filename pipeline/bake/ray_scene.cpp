@@ -2,6 +2,7 @@
 
 #include <embree3/rtcore.h>
 
+#include <array>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -86,6 +87,38 @@ bool RayScene::occluded(const glm::vec3& origin, const glm::vec3& direction, flo
   RTCRay ray = make_ray(origin, direction, t_near, t_far);
   rtcOccluded1(impl_->scene, &context, &ray);
   return ray.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
+}
+
+int RayScene::unoccluded(const glm::vec3& origin, std::span<const glm::vec3> directions,
+                         float t_near, float t_far) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;  // one origin, nearby directions
+  constexpr int kPacket = 16;
+  int open = 0;
+  for (std::size_t first = 0; first < directions.size(); first += kPacket) {
+    alignas(64) std::array<int, kPacket> valid{};
+    RTCRay16 rays{};
+    for (int i = 0; i < kPacket; ++i) {
+      const std::size_t k = first + i;
+      valid[i] = k < directions.size() ? -1 : 0;
+      const glm::vec3 d = k < directions.size() ? directions[k] : glm::vec3(0.0f, 0.0f, 1.0f);
+      rays.org_x[i] = origin.x;
+      rays.org_y[i] = origin.y;
+      rays.org_z[i] = origin.z;
+      rays.dir_x[i] = d.x;
+      rays.dir_y[i] = d.y;
+      rays.dir_z[i] = d.z;
+      rays.tnear[i] = t_near;
+      rays.tfar[i] = t_far;
+      rays.mask[i] = 0xFFFFFFFFu;
+    }
+    rtcOccluded16(valid.data(), impl_->scene, &context, &rays);
+    for (int i = 0; i < kPacket; ++i) {
+      if (valid[i] && rays.tfar[i] >= 0.0f) ++open;  // Embree sets tfar to -inf on a hit
+    }
+  }
+  return open;
 }
 
 }  // namespace skinsim::bake

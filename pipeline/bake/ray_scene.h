@@ -5,6 +5,7 @@
 #include <glm/glm.hpp>
 #include <limits>
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace skinsim::bake {
@@ -29,6 +30,11 @@ class RayScene {
   // Whether any triangle lies along the ray within (t_near, t_far). Thread-safe.
   bool occluded(const glm::vec3& origin, const glm::vec3& direction, float t_near,
                 float t_far = std::numeric_limits<float>::infinity()) const;
+  // How many of the rays from `origin` along `directions` (unit) no triangle blocks within
+  // (t_near, t_far): the rays of a shadow or occlusion estimate, traced together as coherent
+  // packets. Each ray's answer is occluded()'s. Thread-safe.
+  int unoccluded(const glm::vec3& origin, std::span<const glm::vec3> directions, float t_near,
+                 float t_far = std::numeric_limits<float>::infinity()) const;
 
  private:
   struct Impl;

@@ -418,14 +418,13 @@ float visibility(const bake::RayScene& rays, const glm::vec3& p, const glm::vec3
                                                         1.0f),
                                 1.0f);
   const float rotation = 6.2831853f * noise;
-  int lit = 0;
+  std::array<glm::vec3, kShadowRays> directions;
   for (int i = 0; i < kShadowRays; ++i) {
     const float r = kLightRadiusRad * std::sqrt((static_cast<float>(i) + 0.5f) / kShadowRays);
     const float phi = 2.39996323f * static_cast<float>(i) + rotation;
-    const glm::vec3 dir = glm::normalize(l + r * (std::cos(phi) * t + std::sin(phi) * b));
-    if (!rays.occluded(p, dir, offset, reach)) ++lit;
+    directions[i] = glm::normalize(l + r * (std::cos(phi) * t + std::sin(phi) * b));
   }
-  return static_cast<float>(lit) / kShadowRays;
+  return static_cast<float>(rays.unoccluded(p, directions, offset, reach)) / kShadowRays;
 }
 
 // Transmittance of a slab `s` mm thick: the profile's Gaussians, as the pipelines use it

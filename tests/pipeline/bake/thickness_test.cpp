@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+#include <vector>
+
 #include "pipeline/bake/ray_scene.h"
 #include "pipeline/bake/shadow_scatter_lut.h"
 
@@ -16,6 +20,56 @@ struct Slab {
                                    {-50, -50, 3}, {50, -50, 3}, {50, 50, 3}, {-50, 50, 3}};
   std::vector<std::uint32_t> indices{0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7};
 };
+
+// Rays traced as packets (unoccluded) answer as one at a time (occluded): over a bumpy
+// surface, from points just above it, in directions from grazing to steep, in packets that
+// are full, partial and more than one.
+TEST(RayScene, PacketsAnswerAsSingleRays) {
+  constexpr int kGrid = 48;
+  std::vector<glm::vec3> positions;
+  std::vector<std::uint32_t> indices;
+  for (int j = 0; j <= kGrid; ++j) {
+    for (int i = 0; i <= kGrid; ++i) {
+      const float x = static_cast<float>(i), y = static_cast<float>(j);
+      positions.emplace_back(x, y, 2.0f * std::sin(0.7f * x) * std::cos(0.45f * y));
+    }
+  }
+  for (int j = 0; j < kGrid; ++j) {
+    for (int i = 0; i < kGrid; ++i) {
+      const std::uint32_t a = j * (kGrid + 1) + i, b = a + 1, c = a + kGrid + 1, d = c + 1;
+      indices.insert(indices.end(), {a, b, d, a, d, c});
+    }
+  }
+  const RayScene rays({{&positions, &indices}});
+  int blocked = 0, open = 0;
+  for (int p = 0; p < 60; ++p) {
+    const float x = 4.0f + 0.67f * static_cast<float>(p), y = 5.0f + 0.61f * static_cast<float>(p);
+    const glm::vec3 origin(x, y, 2.0f * std::sin(0.7f * x) * std::cos(0.45f * y) + 0.05f);
+    for (const int count : {1, 16, 17, 40}) {
+      std::vector<glm::vec3> directions;
+      for (int k = 0; k < count; ++k) {
+        const float azimuth = 0.83f * static_cast<float>(k + p);
+        const float elevation = 0.02f + 1.2f * static_cast<float>(k) / static_cast<float>(count);
+        directions.push_back(glm::normalize(glm::vec3(std::cos(azimuth) * std::cos(elevation),
+                                                      std::sin(azimuth) * std::cos(elevation),
+                                                      std::sin(elevation))));
+      }
+      for (const float reach : {3.0f, std::numeric_limits<float>::infinity()}) {
+        int single = 0;
+        for (const glm::vec3& d : directions)
+          single += rays.occluded(origin, d, 0.01f, reach) ? 0 : 1;
+        ASSERT_EQ(rays.unoccluded(origin, directions, 0.01f, reach), single)
+            << "point " << p << ", " << count << " rays, reach " << reach;
+        open += single;
+        blocked += count - single;
+      }
+    }
+  }
+  // Both answers occur often, or the comparison would prove little.
+  EXPECT_GT(blocked, 1000);
+  EXPECT_GT(open, 1000);
+  EXPECT_EQ(rays.unoccluded({0, 0, 10}, {}, 0.0f), 0);
+}
 
 TEST(Thickness, IsTheDistanceThroughThePart) {
   const Slab slab;
