@@ -1,13 +1,18 @@
-// Wall time of emulating one frame of the default scene through the full skin pipeline on
-// the iPad 4 profile at its display resolution, per host thread count. Run:
+// Wall time of the host's hot paths on the default scene at the iPad 4's display resolution,
+// per host thread count: emulating one frame through the full skin pipeline, and what a
+// sweep adds to each frame (the reference render, FLIP against a prepared frame). Run:
 //   build/bench/bench_frame --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>
+#include <tbb/task_arena.h>
 
 #include "driver/frame_job.h"
 #include "driver/host_memory.h"
+#include "driver/images.h"
 #include "driver/scene_source.h"
 #include "gpu_model/profile_loader.h"
 #include "pipeline/bake/brdf_lut.h"
+#include "pipeline/reference/reference.h"
+#include "quality/metrics.h"
 
 namespace {
 
@@ -40,6 +45,41 @@ void BM_SkinFrame(benchmark::State& state) {
       static_cast<double>(fragments) * state.iterations(), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_SkinFrame)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3.0);
+
+// The ground-truth reference a sweep renders once per scene and resolution (ray-cast shadows,
+// diffusion over the skin's 3D positions).
+void BM_ReferenceFrame(benchmark::State& state) {
+  Fixture& f = fixture();
+  for (auto _ : state) {
+    const pipeline::ReferenceFrame r =
+        pipeline::render_reference(f.gpu_scene, f.config, static_cast<int>(state.range(0)));
+    benchmark::DoNotOptimize(r.frame.pixels.data());
+  }
+}
+BENCHMARK(BM_ReferenceFrame)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// FLIP of one configuration's frame against another's, prepared once (quality::FlipFeatures),
+// as a sweep compares each configuration with its group's best: the default sweep's buffer
+// scales 0.125 and 0.25, which differ in about 11% of the pixels.
+void BM_FlipAgainstPrepared(benchmark::State& state) {
+  Fixture& f = fixture();
+  static const auto frames = [&f] {
+    const auto frame_at = [&f](float scale) {
+      pipeline::PipelineConfig config = f.config;
+      config.scale = scale;
+      config.lut_width = 64;
+      config.lut_height = 256;
+      return driver::to_image(driver::run_frame(f.gpu_scene, config, f.device, 0).output.frame);
+    };
+    return std::pair{frame_at(0.125f), quality::FlipFeatures(frame_at(0.25f))};
+  }();
+  tbb::task_arena arena(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    arena.execute(
+        [&] { benchmark::DoNotOptimize(quality::flip(frames.first, frames.second).mean); });
+  }
+}
+BENCHMARK(BM_FlipAgainstPrepared)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_DefaultSceneBuild(benchmark::State& state) {
   for (auto _ : state) {
