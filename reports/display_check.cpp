@@ -4,10 +4,13 @@
 #include <X11/Xlib.h>
 
 #include <chrono>
+#include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
+#include <memory>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include "reports/error.h"
@@ -21,6 +24,11 @@ namespace {
 // so a refused display is tried again for up to 2 s before charts are declared unavailable.
 constexpr int kOpenAttempts = 20;
 constexpr auto kRetryDelay = std::chrono::milliseconds(100);
+// Xlib waits for a display's answer without limit: a display whose port takes connections but
+// never answers (a hung X server, another program listening there) or whose host drops the
+// packets (a stale DISPLAY naming a machine that is down) would hold skinsim forever. After
+// this long it counts as unavailable.
+constexpr auto kAnswerDeadline = std::chrono::seconds(10);
 
 constexpr const char* kHowTo =
     "charts need an X display with OpenGL (GLX): run under `xvfb-run -a skinsim ...` or pass "
@@ -89,6 +97,32 @@ std::string missing_opengl(Display* display) {
   return "";
 }
 
+// XOpenDisplay(name), or nullopt when it has not returned by `deadline`. The attempt runs on
+// a thread of its own; one still waiting at the deadline is left to finish alone, and a
+// connection it opens after that is never used.
+std::optional<Display*> open_before(const std::string& name,
+                                    std::chrono::steady_clock::time_point deadline) {
+  struct Attempt {
+    std::mutex mutex;
+    std::condition_variable done;
+    bool finished = false;
+    Display* display = nullptr;
+  };
+  const auto attempt = std::make_shared<Attempt>();
+  std::thread([attempt, name] {
+    Display* display = XOpenDisplay(name.c_str());
+    const std::lock_guard lock(attempt->mutex);
+    attempt->display = display;
+    attempt->finished = true;
+    attempt->done.notify_one();
+  }).detach();
+  std::unique_lock lock(attempt->mutex);
+  if (!attempt->done.wait_until(lock, deadline, [&] { return attempt->finished; })) {
+    return std::nullopt;
+  }
+  return attempt->display;
+}
+
 // One connection per display name, opened once and kept: render windows that were handed a
 // connection hold it until they are destroyed, so it is never closed under them.
 class OpenDisplays {
@@ -109,10 +143,20 @@ class OpenDisplays {
   };
 
   static Connection connect(const std::string& name) {
-    Display* display = XOpenDisplay(name.c_str());
-    for (int attempt = 1; display == nullptr && attempt < kOpenAttempts; ++attempt) {
-      std::this_thread::sleep_for(kRetryDelay);
-      display = XOpenDisplay(name.c_str());
+    // Connections are opened on other threads than the one drawing, and an abandoned attempt
+    // may still be inside Xlib, so Xlib must lock: XInitThreads, before any other Xlib call.
+    static const bool threads = XInitThreads() != 0;
+    if (!threads) return {nullptr, std::string(kHowTo) + " (Xlib cannot be used from threads)"};
+    const auto deadline = std::chrono::steady_clock::now() + kAnswerDeadline;
+    Display* display = nullptr;
+    for (int attempt = 0; display == nullptr && attempt < kOpenAttempts; ++attempt) {
+      if (attempt > 0) std::this_thread::sleep_for(kRetryDelay);
+      const std::optional<Display*> opened = open_before(name, deadline);
+      if (!opened) {
+        return {nullptr, std::string(kHowTo) + " (X display '" + name + "' did not answer within " +
+                             std::to_string(kAnswerDeadline.count()) + " s)"};
+      }
+      display = *opened;
     }
     if (display == nullptr) {
       return {nullptr, std::string(kHowTo) + " (cannot open X display '" + name + "')"};

@@ -1,14 +1,20 @@
-// charts_available() says no, with a useful message, when there is no X display; chart
-// functions then throw instead of letting VTK abort the process; an X server that goes away
-// while charts are drawn ends the process with a message and status 2, not a crash.
+// charts_available() says no, with a useful message, when there is no X display, one that
+// never answers, or one without the OpenGL VTK needs; chart functions then throw instead of
+// letting VTK abort the process; an X server that goes away while charts are drawn ends the
+// process with a message and status 2, not a crash.
 #include "reports/display_check.h"
 
+#include <arpa/inet.h>
 #include <gtest/gtest.h>
+#include <netinet/in.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
+#include <cstdint>
 #include <cstdlib>
 #include <optional>
 #include <string>
@@ -41,8 +47,6 @@ class ScopedEnv {
   }
 
   std::string name_;
-
- private:
   std::optional<std::string> old_;
 };
 
@@ -69,6 +73,33 @@ TEST(ChartsAvailable, NoWhenTheDisplayCannotBeOpened) {
   std::string why;
   EXPECT_FALSE(charts_available(&why));
   EXPECT_NE(why.find(":4711"), std::string::npos) << why;
+}
+
+// A display that takes the connection but never answers (a hung X server, another program
+// on its port) would block Xlib forever: the check gives up after its deadline and says so.
+TEST(ChartsAvailable, NoWhenTheDisplayNeverAnswers) {
+  // A listener on 127.0.0.1:6000+N, display N over TCP: the kernel accepts the connection,
+  // nobody answers it.
+  const int listener = socket(AF_INET, SOCK_STREAM, 0);
+  ASSERT_GE(listener, 0);
+  int number = -1;
+  for (int n = 200; n < 400 && number < 0; ++n) {
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(static_cast<std::uint16_t>(6000 + n));
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    if (bind(listener, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0) number = n;
+  }
+  ASSERT_GE(number, 0) << "no free port in 6200-6399";
+  ASSERT_EQ(listen(listener, 4), 0);
+  const std::string name = "127.0.0.1:" + std::to_string(number);
+  ScopedEnv use("DISPLAY", name);
+  const auto start = std::chrono::steady_clock::now();
+  std::string why;
+  EXPECT_FALSE(charts_available(&why));
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(30));
+  EXPECT_NE(why.find("'" + name + "' did not answer within"), std::string::npos) << why;
+  close(listener);  // resets the abandoned attempt's connection: it returns and ends
 }
 
 TEST(ChartsAvailable, ChartFunctionsThrowInsteadOfCrashing) {
