@@ -79,6 +79,21 @@ TEST_F(ImageIo, SaveClampsOutOfRangeValues) {
   EXPECT_NEAR(loaded.rgb[1].r, 128.0f / 255.0f, 1e-6);  // 127.5 rounds up
 }
 
+// Rounding to bytes is lround's: a product just below a half rounds down (0.49999997 + 0.5
+// in float rounds up to 1), a half rounds up.
+TEST_F(ImageIo, SaveRoundsToTheNearestByte) {
+  Image image = Image::filled(3, 1, glm::vec3(0.0f));
+  image.rgb[0] = glm::vec3(0.0019607842f);  // x 255 = 0.49999997f
+  image.rgb[1] = glm::vec3(0.5f / 255.0f);  // x 255 = 0.5
+  image.rgb[2] = glm::vec3(254.49998f / 255.0f);
+  const auto path = dir_ / "rounding.png";
+  save_png(image, path);
+  const Image loaded = load_png(path);
+  EXPECT_EQ(loaded.rgb[0].r, 0.0f);
+  EXPECT_EQ(loaded.rgb[1].r, kUnorm8Value[1]);
+  EXPECT_EQ(loaded.rgb[2].r, kUnorm8Value[254]);
+}
+
 TEST_F(ImageIo, AlphaDoesNotScaleColour) {
   // A LUT's alpha is a data channel: colour must be written and read back unpremultiplied.
   const std::vector<std::uint8_t> rgba{200, 100, 50, 64};
