@@ -3,8 +3,9 @@
 #include <fmt/format.h>
 
 #include <bit>
-#include <cmath>
 #include <vector>
+
+#include "util/unorm8.h"
 
 namespace skinsim::driver {
 
@@ -31,7 +32,7 @@ void append_texels(std::string& out, const glm::vec4* texels, std::size_t count,
   std::vector<std::uint8_t> bytes(count * 4);
   for (std::size_t i = 0; i < count; ++i) {
     for (int c = 0; c < 4; ++c) {
-      bytes[i * 4 + c] = static_cast<std::uint8_t>(std::lround(texels[i][c] * 255.0f));
+      bytes[i * 4 + c] = unorm8_nearest(texels[i][c]);
     }
   }
   append(out, bytes.data(), bytes.size());

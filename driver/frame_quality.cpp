@@ -5,6 +5,7 @@
 #include "driver/images.h"
 #include "quality/error_map.h"
 #include "quality/metrics.h"
+#include "util/unorm8.h"
 
 namespace skinsim::driver {
 
@@ -12,7 +13,9 @@ ReferenceImages reference_images(const pipeline::ReferenceFrame& reference) {
   ReferenceImages r;
   // Quantise to 8 bits as a display would: the frames compared against it are RGBA8.
   r.image = to_image(reference.frame);
-  for (glm::vec3& c : r.image.rgb) c = glm::round(c * 255.0f) / 255.0f;
+  for (glm::vec3& c : r.image.rgb) {
+    for (int i = 0; i < 3; ++i) c[i] = kUnorm8Value[unorm8_nearest(c[i])];
+  }
   r.skin.width = reference.frame.width;
   r.skin.height = reference.frame.height;
   r.skin.values = reference.skin_mask;

@@ -16,20 +16,11 @@
 namespace skinsim::quality {
 namespace {
 
-std::uint8_t to_u8(float value) {
-  if (!(value > 0.0f)) return 0;  // also maps NaN to 0
-  if (value >= 1.0f) return 255;
-  // lround(value * 255) without the libm call: in double, + 0.5 is exact for every product
-  // below 255, so the truncation rounds halves up as lround does (checked for every float in
-  // (0, 1); in float, 0.49999997f + 0.5f would round up to 1).
-  return static_cast<std::uint8_t>(static_cast<double>(value * 255.0f) + 0.5);
-}
-
 // The bytes save_png writes, RGB interleaved.
 std::vector<std::uint8_t> to_rgb8(const Image& image) {
   std::vector<std::uint8_t> bytes(image.rgb.size() * 3);
   for_each_pixel(image.rgb.size(), [&](std::size_t i) {
-    for (int c = 0; c < 3; ++c) bytes[i * 3 + c] = to_u8(image.rgb[i][c]);
+    for (int c = 0; c < 3; ++c) bytes[i * 3 + c] = unorm8_nearest(image.rgb[i][c]);
   });
   return bytes;
 }

@@ -59,13 +59,7 @@ TexelFormat parse_format(const std::string& name) {
 namespace {
 
 float quantize_unorm8(float v) {
-  // NaN converts to 0, the D3D10+/Vulkan float-to-UNORM rule (GLES leaves it open): the
-  // argument order of std::max makes NaN (and -0) give +0.
-  const float x = std::min(std::max(0.0f, v), 1.0f) * 255.0f;
-  // Round half away from zero (as glm::round), without a libm call: the scaled value is in
-  // [0,255], where x - floor(x) is exact.
-  const int whole = static_cast<int>(x);
-  return kUnorm8Value[whole + (x - static_cast<float>(whole) >= 0.5f ? 1 : 0)];
+  return kUnorm8Value[unorm8_nearest(v)];
 }
 
 // Depth as a normalised integer of `steps` + 1 levels (NaN to 0, as UNORM conversion).

@@ -1,9 +1,11 @@
-// 8-bit unsigned normalised channels as skinsim holds them: byte k is the float k / 255. The
-// emulator's quantize stores RGBA8 targets and textures as these values, the pass memo keeps
-// such targets as their bytes, and quality::load_png decodes 8-bit images to them, so a frame
-// read back from its PNG is the very frame that was written.
+// 8-bit unsigned normalised channels as skinsim holds them: byte k is the float k / 255, and a
+// float is stored as its nearest byte. The emulator's quantize stores RGBA8 targets and
+// textures as these values, the pass memo keeps such targets as their bytes, PNGs are written
+// with the nearest bytes, and quality::load_png decodes 8-bit images to these values, so a
+// frame read back from its PNG is the very frame that was written.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cstdint>
@@ -16,6 +18,16 @@ inline constexpr std::array<float, 256> kUnorm8Value = [] {
   for (int k = 0; k < 256; ++k) v[k] = static_cast<float>(k) / 255.0f;
   return v;
 }();
+
+// The byte nearest `v`: clamped to [0,1], halves rounded away from zero (as glm::round and
+// lround), NaN to 0 (the D3D10+/Vulkan float-to-UNORM rule; GLES leaves it open). No libm
+// call: the scaled value is in [0,255], where x - floor(x) is exact.
+inline std::uint8_t unorm8_nearest(float v) {
+  // The argument order of std::max makes NaN (and -0) give +0.
+  const float x = std::min(std::max(0.0f, v), 1.0f) * 255.0f;
+  const int whole = static_cast<int>(x);
+  return static_cast<std::uint8_t>(whole + (x - static_cast<float>(whole) >= 0.5f ? 1 : 0));
+}
 
 // The byte whose value is `v` bit for bit, or nullopt when `v` is no RGBA8 value (one the
 // host wrote, say; -0 included).

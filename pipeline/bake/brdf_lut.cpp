@@ -17,6 +17,7 @@
 #include "pipeline/bake/specular.h"
 #include "quality/image.h"
 #include "sim/fp16.h"
+#include "util/unorm8.h"
 
 namespace skinsim::bake {
 namespace {
@@ -140,8 +141,7 @@ BrdfLut bake_brdf_lut(const BrdfLutParams& params) {
 BrdfLut quantize(const BrdfLut& lut, LutFormat format) {
   const auto store = [format](float value) {
     if (format == LutFormat::kRGBA8) {
-      const float clamped = std::isnan(value) ? 0.0f : std::clamp(value, 0.0f, 1.0f);
-      return std::round(clamped * 255.0f) / 255.0f;
+      return kUnorm8Value[unorm8_nearest(value)];
     }
     return sim::round_to_fp16(value);  // the emulated RGBA16F texel's rounding
   };
@@ -163,8 +163,7 @@ void write_lut_png(const BrdfLut& lut, const std::filesystem::path& path, int le
   std::vector<std::uint8_t> bytes(l.texels.size() * 4);
   for (std::size_t i = 0; i < l.texels.size(); ++i) {
     for (int c = 0; c < 4; ++c) {
-      bytes[i * 4 + c] =
-          static_cast<std::uint8_t>(std::lround(std::clamp(l.texels[i][c], 0.0f, 1.0f) * 255.0f));
+      bytes[i * 4 + c] = unorm8_nearest(l.texels[i][c]);
     }
   }
   quality::write_png_u8(path, l.width, l.height, 4, bytes);
