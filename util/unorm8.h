@@ -5,7 +5,6 @@
 // frame read back from its PNG is the very frame that was written.
 #pragma once
 
-#include <algorithm>
 #include <array>
 #include <bit>
 #include <cstdint>
@@ -21,12 +20,13 @@ inline constexpr std::array<float, 256> kUnorm8Value = [] {
 
 // The byte nearest `v`: clamped to [0,1], halves rounded away from zero (as glm::round and
 // lround), NaN to 0 (the D3D10+/Vulkan float-to-UNORM rule; GLES leaves it open). No libm
-// call: the scaled value is in [0,255], where x - floor(x) is exact.
+// call: the scaled value is below 255, where adding 0.5 in double is exact, so truncating it
+// rounds as lround does (the same byte for every float, checked exhaustively; in float,
+// 0.49999997f + 0.5f would round up to 1).
 inline std::uint8_t unorm8_nearest(float v) {
-  // The argument order of std::max makes NaN (and -0) give +0.
-  const float x = std::min(std::max(0.0f, v), 1.0f) * 255.0f;
-  const int whole = static_cast<int>(x);
-  return static_cast<std::uint8_t>(whole + (x - static_cast<float>(whole) >= 0.5f ? 1 : 0));
+  if (!(v > 0.0f)) return 0;  // NaN, -0 and below
+  if (v >= 1.0f) return 255;
+  return static_cast<std::uint8_t>(static_cast<double>(v * 255.0f) + 0.5);
 }
 
 // The byte whose value is `v` bit for bit, or nullopt when `v` is no RGBA8 value (one the
