@@ -28,7 +28,7 @@ SweepReportOutcome write_sweep_report(const reports::SweepTable& table, const st
   options.higher_is_better = false;
   options.draw_charts = charts;
   options.write_data_files = false;  // write_sweep_data writes results.json / results.csv
-  write_thumbnails(table, out_dir);
+  options.alongside_charts = [&] { write_thumbnails(table, out_dir); };
   outcome.report_path = reports::write_report(table, out_dir, options);
   outcome.charts_drawn = charts;
   return outcome;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <future>
 #include <optional>
 #include <set>
 
@@ -379,10 +380,15 @@ std::string write_report(const SweepTable& table, const std::string& dir,
         table.rows.begin(), table.rows.end(),
         [](const ConfigResult& a, const ConfigResult& b) { return a.frame_ms < b.frame_ms; });
   }
+  std::future<void> alongside;  // its destructor waits, should the charts throw
+  if (options.alongside_charts) {
+    alongside = std::async(std::launch::async, options.alongside_charts);
+  }
   std::vector<ReportFigure> figures;
   if (options.draw_charts && !table.rows.empty()) {
     figures = draw_report_charts(table, dir, options, dram_row);
   }
+  if (alongside.valid()) alongside.get();
   if (options.write_data_files) {
     write_sweep_json(table, dir + "/results.json");
     write_sweep_csv(table, dir + "/sweep.csv");

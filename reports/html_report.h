@@ -3,6 +3,7 @@
 // thumbnails, and the model's assumptions with their sensitivity.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -26,6 +27,10 @@ struct ReportOptions {
   bool draw_charts = true;  // false: no VTK, no display needed (the CLI's --no-charts)
   ChartOptions chart;
   bool write_data_files = true;  // also write results.json and sweep.csv beside the page
+  // Work run on another thread while the charts draw (VTK draws on this thread, on one core),
+  // and finished before the page is assembled: the sweep writes its thumbnails there, which
+  // the page then links. Its exception, if any, is the report's.
+  std::function<void()> alongside_charts;
 };
 
 // Writes dir/report.html (creating dir), and with draw_charts the chart PNG/SVG files it

@@ -4,9 +4,11 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "io/read_file.h"
 #include "reports/display_check.h"
@@ -90,6 +92,26 @@ TEST(HtmlReport, ShowsThumbnailsWhereTheyExistAndLinksTheFullImages) {
   EXPECT_NE(html.find("<img src=\"" + url_encode_path(sweep.rows[1].frame_image) + "\""),
             std::string::npos);
   EXPECT_TRUE(missing_report_links(dir).empty());
+}
+
+// The sweep writes its thumbnails beside the charts: the page, assembled after that work has
+// finished, shows them; and the work's failure is the report's.
+TEST(HtmlReport, WorkAlongsideTheChartsEndsBeforeThePage) {
+  const SweepTable sweep = synthetic_sweep();
+  const std::string dir = fresh_output_dir();
+  touch_images(sweep, dir);
+  const std::string small = thumbnail_path(sweep.rows[0].frame_image);
+  ReportOptions options = no_charts();
+  options.alongside_charts = [&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));  // later than the page would be
+    fs::create_directories((fs::path(dir) / small).parent_path());
+    std::ofstream(fs::path(dir) / small) << "thumb";
+  };
+  const std::string html = read_text(write_report(sweep, dir, options));
+  EXPECT_NE(html.find("<img src=\"" + url_encode_path(small) + "\""), std::string::npos) << html;
+
+  options.alongside_charts = [] { throw ReportError("thumbnail failed"); };
+  EXPECT_THROW(write_report(sweep, fresh_output_dir(), options), ReportError);
 }
 
 TEST(HtmlReport, DrawsATimelinePerConfigurationWithTheRecommendedOneOpen) {
