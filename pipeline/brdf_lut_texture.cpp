@@ -61,8 +61,4 @@ std::shared_ptr<const BrdfLutTexture> BrdfLutTexture::shared(const PipelineConfi
   return lut;
 }
 
-void BrdfLutTexture::write_png(const std::string& path) const {
-  bake::write_lut_png(stored_, path);
-}
-
 }  // namespace skinsim::pipeline
