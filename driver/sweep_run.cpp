@@ -117,12 +117,12 @@ void compute(const fs::path& dir, const Job& job, int frame_threads, sim::PassMe
 // several scales and techniques without raising the sweep's peak much.
 constexpr std::size_t kPassMemoBytes = std::size_t{192} << 20;
 
-// How many frames are emulated at once, and with how many host threads each. A frame uses
-// at most one host thread per emulated core (one host task per core keeps each core's
-// texture cache deterministic; docs/performance.md), so only a host with more threads than
-// the device has cores runs several frames at once. One frame at a time otherwise: the same
-// speed (a frame scales with its threads up to the cores) and the memory of one frame's
-// render targets, not several (about 330 MB at 2048x1536, scale 1).
+// How many frames are emulated at once, and with how many host threads each. A frame's
+// tiles use any number of host threads (sim/gpu.cpp), but its set-up, binning, metrics and
+// PNG encoding use fewer, so a host with more threads than the device has cores runs several
+// frames at once, each with as many threads as the device has cores. One frame at a time
+// otherwise, with every thread: the memory of one frame's render targets, not several
+// (about 330 MB at 2048x1536, scale 1).
 struct InFlight {
   int frames = 1;
   int frame_threads = 1;

@@ -1,6 +1,5 @@
 #include "sim/gpu.h"
 
-#include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include <stdexcept>
@@ -8,7 +7,7 @@
 #include "sim/binner.h"
 #include "sim/geometry.h"
 #include "sim/pass_memo.h"
-#include "sim/tile_renderer.h"
+#include "sim/tile_stage.h"
 
 namespace skinsim::sim {
 
@@ -133,18 +132,7 @@ PassCounters Gpu::execute_impl(const RenderPassDesc& pass) {
     c.tiles[i].triangle_refs = static_cast<std::uint32_t>(bins.lists[i].size());
   }
 
-  // One host task per emulated core, each with the core's texture cache, cold at the start
-  // of the render, walking its tiles in order.
-  auto run_core = [&](int core) {
-    TextureCache cache(config_.texture_cache);
-    TileRenderer renderer(pass, setup, grid, config_, cache);
-    for (int i = core; i < tile_count; i += c.cores) {
-      TileCounters& tc = c.tiles[i];
-      if (!grid.in_area(tc.tile_x, tc.tile_y)) continue;
-      renderer.render(tc.tile_x, tc.tile_y, bins.lists[i], tc);
-    }
-  };
-  tbb::parallel_for(0, c.cores, run_core);
+  render_tiles(pass, config_, setup, grid, bins, c);
 
   for (const TileCounters& t : c.tiles) {
     if (!grid.in_area(t.tile_x, t.tile_y)) continue;

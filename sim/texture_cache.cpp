@@ -6,7 +6,7 @@
 namespace skinsim::sim {
 
 namespace {
-constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
+constexpr std::uint32_t kEmpty = ~std::uint32_t{0};
 
 bool is_pow2(std::uint32_t v) {
   return v != 0 && (v & (v - 1)) == 0;
@@ -46,6 +46,13 @@ TextureCache::TextureCache(const TextureCacheConfig& config)
     while ((std::uint64_t{index_bits_} << fold_steps_) < 64) ++fold_steps_;
   }
   tags_.assign(static_cast<size_t>(sets_) * ways_, kEmpty);
+}
+
+void TextureCache::replay(const TextureLineLog& log, TextureCounters& counters) {
+  std::uint64_t misses = 0;
+  for (const std::uint32_t line : log.lines()) misses += !access_line(line);
+  counters.cache_misses += misses;
+  counters.dram_bytes += misses * line_bytes_;
 }
 
 void TextureCache::clear() {

@@ -3,8 +3,13 @@
 // so the profile states its assumption (hardware.md).
 #pragma once
 
+#include <emmintrin.h>  // SSE2, in every x86-64 processor
+
 #include <cstdint>
 #include <vector>
+
+#include "sim/counters.h"
+#include "sim/texture_line_log.h"
 
 namespace skinsim::sim {
 
@@ -33,9 +38,14 @@ class TextureCache {
 
   // Looks up the line holding `address`; returns true on a hit. A miss fills the line,
   // evicting the least recently used way of its set.
-  bool access(std::uint64_t address);
+  // Addresses lie below 2^32 lines (texture_unit.h), so a line number is 32 bits.
+  bool access(std::uint64_t address) {
+    return access_line(static_cast<std::uint32_t>(address >> line_shift_));
+  }
+  bool access_line(std::uint32_t line);
+  // Looks up a tile's recorded lines in order, counting its misses and their DRAM bytes.
+  void replay(const TextureLineLog& log, TextureCounters& counters);
   std::uint32_t line_bytes() const { return line_bytes_; }
-  std::uint64_t line_of(std::uint64_t address) const { return address >> line_shift_; }
   void clear();
 
  private:
@@ -49,21 +59,45 @@ class TextureCache {
   std::uint32_t fold_steps_;
   std::uint32_t ways_;
   // Per set, `ways_` line tags ordered most recently used first; kEmpty marks a free way.
-  std::vector<std::uint64_t> tags_;
+  std::vector<std::uint32_t> tags_;
+
+  std::uint64_t set_of(std::uint32_t line) const;
+  bool access_4_ways(std::uint32_t* ways, std::uint32_t line);
 };
 
-inline bool TextureCache::access(std::uint64_t address) {
-  const std::uint64_t line = address >> line_shift_;
-  std::uint64_t set;
+inline std::uint64_t TextureCache::set_of(std::uint32_t line) const {
   if (fold_steps_ != 0) {  // constant per cache, so the branch predicts perfectly
     std::uint64_t folded = line;
     for (std::uint32_t k = 0; k < fold_steps_; ++k) folded ^= folded >> (index_bits_ << k);
-    set = folded & set_mask_;
-  } else {
-    set = set_mask_ ? (line & set_mask_) : line % sets_;
+    return folded & set_mask_;
   }
-  std::uint64_t* ways = &tags_[set * ways_];
-  if (ways[0] == line) return true;  // already the most recent: the common hit
+  return set_mask_ ? (line & set_mask_) : line % sets_;
+}
+
+// The 4-way set of every shipped profile, without a branch on where the line is: which of
+// its replays hit, and how far back, is data the branch predictor cannot learn. The four
+// tags compare at once; the ways before the hit (all but the last on a miss, which evicts
+// it) move back one and the line takes way 0.
+inline bool TextureCache::access_4_ways(std::uint32_t* ways, std::uint32_t line) {
+  // kKeepFrom[i]: the lanes after way i, which keep their tags (lane 0 first).
+  alignas(16) static constexpr std::int32_t kKeepFrom[4][4] = {
+      {0, -1, -1, -1}, {0, 0, -1, -1}, {0, 0, 0, -1}, {0, 0, 0, 0}};
+  const __m128i tags = _mm_loadu_si128(reinterpret_cast<const __m128i*>(ways));
+  const __m128i same = _mm_cmpeq_epi32(tags, _mm_set1_epi32(static_cast<int>(line)));
+  const int hit_mask = _mm_movemask_ps(_mm_castsi128_ps(same));  // one bit at most
+  const int way = hit_mask ? __builtin_ctz(static_cast<unsigned>(hit_mask)) : 3;
+  const __m128i keep = _mm_load_si128(reinterpret_cast<const __m128i*>(kKeepFrom[way]));
+  const __m128i moved = _mm_or_si128(_mm_slli_si128(tags, 4),  // way k takes way k - 1's tag
+                                     _mm_cvtsi32_si128(static_cast<int>(line)));
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(ways),
+                   _mm_or_si128(_mm_and_si128(keep, tags), _mm_andnot_si128(keep, moved)));
+  return hit_mask != 0;
+}
+
+inline bool TextureCache::access_line(std::uint32_t line) {
+  std::uint32_t* ways = &tags_[set_of(line) * ways_];
+  if (ways_ == 4) return access_4_ways(ways, line);  // constant per cache
+  if (ways[0] == line) return true;                  // already the most recent: the common hit
   for (std::uint32_t i = 1; i < ways_; ++i) {
     if (ways[i] == line) {
       for (std::uint32_t j = i; j > 0; --j) ways[j] = ways[j - 1];  // move to front

@@ -1,6 +1,6 @@
 // The texture unit of one emulated core, as the Exec-mode shaders see it: filtered
-// sampling of the bound textures, with every fetch counted and every texel it touches
-// looked up in the core's texture cache.
+// sampling of the bound textures, with every fetch counted and the distinct cache lines of
+// every sample recorded for the core's texture cache (TextureLineLog, replayed in tile order).
 #pragma once
 
 #include <array>
@@ -9,7 +9,7 @@
 
 #include "sim/counters.h"
 #include "sim/texture.h"
-#include "sim/texture_cache.h"
+#include "sim/texture_line_log.h"
 
 namespace skinsim::sim {
 
@@ -38,11 +38,15 @@ struct TextureBindings {
 
 class ExecTexUnit {
  public:
-  ExecTexUnit(TextureCache* cache, TextureCounters* counters)
-      : cache_(cache), counters_(counters) {}
+  ExecTexUnit(TextureLineLog* lines, TextureCounters* counters)
+      : lines_(lines), counters_(counters) {}
 
   void bind(const TextureBindings* bindings) { bindings_ = bindings; }
-  void set_counters(TextureCounters* counters) { counters_ = counters; }
+  // Where the next samples count their work and record their cache lines (one tile's).
+  void set_tile(TextureCounters* counters, TextureLineLog* lines) {
+    counters_ = counters;
+    lines_ = lines;
+  }
 
   // Independent read: coordinates straight from a varying; LOD from its derivatives.
   glm::vec4 sample(int binding, const Varying<2>& uv);
@@ -78,16 +82,16 @@ class ExecTexUnit {
     int x0, x1, y0, y1;
     float ax, ay;
   };
-  // Counts the footprint's texels and sends its distinct cache lines through the cache.
+  // Counts the footprint's texels and records its distinct cache lines.
   Footprint fetch_footprint(const Texture2D& tex, std::uint64_t base, int level, glm::vec2 uv);
   // `blend` false: count and cache the footprint only (its value is not needed).
   glm::vec4 bilinear(const Texture2D& tex, std::uint64_t base, int level, glm::vec2 uv, bool blend);
-  void access_line(std::uint64_t address);  // one distinct cache line of a sample
+  void access_line(std::uint64_t address);  // records one distinct cache line of a sample
   const Texture2D& texture(int binding) const;
   [[noreturn]] static void unbound(int binding, const char* kind);
   const TextureCube& cube(int binding) const;
 
-  TextureCache* cache_;
+  TextureLineLog* lines_;
   TextureCounters* counters_;
   const TextureBindings* bindings_ = nullptr;
 };
@@ -95,6 +99,8 @@ class ExecTexUnit {
 // Each binding slot has its own region of the emulated address space, so texture
 // addresses (and hence cache behaviour) do not depend on allocation order.
 constexpr std::uint64_t kBindingAddressStride = std::uint64_t{1} << 28;
+static_assert(kMaxTextureBindings * kBindingAddressStride <= std::uint64_t{1} << 32,
+              "TextureLineLog keeps line numbers (addresses / line bytes) in 32 bits");
 
 }  // namespace skinsim::sim
 

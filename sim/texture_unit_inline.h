@@ -17,10 +17,7 @@ inline const Texture2D& ExecTexUnit::texture(int binding) const {
 
 inline void ExecTexUnit::access_line(std::uint64_t address) {
   ++counters_->cache_line_accesses;
-  if (!cache_->access(address)) {
-    ++counters_->cache_misses;
-    counters_->dram_bytes += cache_->line_bytes();
-  }
+  lines_->add(address);
 }
 
 inline glm::vec4 ExecTexUnit::nearest(const Texture2D& tex, std::uint64_t base, int level,
@@ -50,7 +47,7 @@ inline ExecTexUnit::Footprint ExecTexUnit::fetch_footprint(const Texture2D& tex,
                      f.fraction_y};
 
   // The 2x2 footprint's texel addresses in the twiddled layout, and the distinct cache lines
-  // among them, looked up in footprint order (usually one: a 64-byte line holds a 4x4
+  // among them, recorded in footprint order (usually one: a 64-byte line holds a 4x4
   // RGBA8 block).
   const std::uint64_t level_base = base + tex.level_offset(level);
   const std::uint64_t bpp = tex.texel_bytes();
@@ -60,8 +57,8 @@ inline ExecTexUnit::Footprint ExecTexUnit::fetch_footprint(const Texture2D& tex,
   const std::uint64_t sy1 = filtering::spread_next(sy0 >> 1, fp.y0, fp.y1) << 1;
   const std::uint64_t a00 = level_base + (sx0 | sy0) * bpp, a10 = level_base + (sx1 | sy0) * bpp;
   const std::uint64_t a01 = level_base + (sx0 | sy1) * bpp, a11 = level_base + (sx1 | sy1) * bpp;
-  const std::uint64_t l00 = cache_->line_of(a00), l10 = cache_->line_of(a10);
-  const std::uint64_t l01 = cache_->line_of(a01), l11 = cache_->line_of(a11);
+  const std::uint64_t l00 = lines_->line_of(a00), l10 = lines_->line_of(a10);
+  const std::uint64_t l01 = lines_->line_of(a01), l11 = lines_->line_of(a11);
   counters_->texels_touched += 4;
   access_line(a00);
   if (l10 != l00) access_line(a10);

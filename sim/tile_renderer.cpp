@@ -53,12 +53,12 @@ void rasterize(const TriangleSetup& t, const PixelRect& rect, Fn&& fn) {
 }  // namespace
 
 TileRenderer::TileRenderer(const RenderPassDesc& pass, const SetupTriangles& setup,
-                           const TileGrid& grid, const GpuConfig& config, TextureCache& cache)
+                           const TileGrid& grid, const GpuConfig& config)
     : pass_(pass),
       setup_(setup),
       grid_(grid),
       config_(config),
-      tex_(&cache, nullptr),
+      tex_(nullptr, nullptr),
       inv_size_(1.0f / static_cast<float>(pass_target(pass).width),
                 1.0f / static_cast<float>(pass_target(pass).height)) {
   const size_t n = static_cast<size_t>(grid.tile_size) * grid.tile_size;
@@ -96,12 +96,13 @@ bool TileRenderer::flush_tags(TileCounters& counters, std::vector<std::uint64_t>
 }
 
 void TileRenderer::render(int tx, int ty, const std::vector<std::uint32_t>& triangles,
-                          TileCounters& counters) {
+                          TileCounters& counters, TextureLineLog& lines) {
   rect_ = grid_.tile_rect(tx, ty);
   const int ts = grid_.tile_size;
   const std::uint64_t pixels = static_cast<std::uint64_t>(rect_.x1 - rect_.x0) *
                                static_cast<std::uint64_t>(rect_.y1 - rect_.y0);
-  tex_.set_counters(&counters.texture);
+  lines.clear();
+  tex_.set_tile(&counters.texture, &lines);
 
   // Tile start: colour from a clear, or loaded from the target (costs DRAM reads).
   std::fill(depth_.begin(), depth_.end(), 1.0f);

@@ -1,7 +1,8 @@
 // The per-tile renderer (3D): for one tile, depth-tests every triangle of its list in
 // on-chip tile memory, shades only the visible fragment of each pixel for opaque draws
 // (deferred hidden-surface removal), shades blended draws in order, and resolves the tile
-// to the render target.
+// to the render target. Its texture samples record their cache lines in the tile's
+// TextureLineLog, which the tile's emulated core replays through its cache in tile order.
 #pragma once
 
 #include <vector>
@@ -17,10 +18,12 @@ namespace skinsim::sim {
 class TileRenderer {
  public:
   TileRenderer(const RenderPassDesc& pass, const SetupTriangles& setup, const TileGrid& grid,
-               const GpuConfig& config, TextureCache& cache);
+               const GpuConfig& config);
 
-  // Renders tile (tx, ty) with the given triangle list; fills `counters`.
-  void render(int tx, int ty, const std::vector<std::uint32_t>& triangles, TileCounters& counters);
+  // Renders tile (tx, ty) with the given triangle list; fills `counters` (all but the
+  // cache's misses) and `lines` (emptied first).
+  void render(int tx, int ty, const std::vector<std::uint32_t>& triangles, TileCounters& counters,
+              TextureLineLog& lines);
 
  private:
   // Shades every tagged pixel; returns whether there was any.

@@ -275,22 +275,48 @@ TEST(Raster, ImagesAndCountersIdenticalForAnyThreadCount) {
     pixels = rt.pixels;
     return c;
   };
-  std::vector<glm::vec4> p1, p2, p4;
-  const PassCounters c1 = render(1, p1), c2 = render(2, p2), c4 = render(4, p4);
+  // 8 host threads: more than the 4 emulated cores, so tiles of one core shade at once.
+  std::vector<glm::vec4> p1, p2, p4, p8;
+  const PassCounters c1 = render(1, p1), c2 = render(2, p2), c4 = render(4, p4), c8 = render(8, p8);
   EXPECT_EQ(p1, p2);
   EXPECT_EQ(p1, p4);
-  for (const PassCounters* c : {&c2, &c4}) {
+  EXPECT_EQ(p1, p8);
+  for (const PassCounters* c : {&c2, &c4, &c8}) {
     EXPECT_EQ(c->fragments_shaded, c1.fragments_shaded);
     EXPECT_EQ(c->texture.cache_misses, c1.texture.cache_misses);
     EXPECT_EQ(c->texture.texels_touched, c1.texture.texels_touched);
     ASSERT_EQ(c->tiles.size(), c1.tiles.size());
     for (size_t i = 0; i < c1.tiles.size(); ++i) {
       EXPECT_EQ(c->tiles[i].texture.cache_misses, c1.tiles[i].texture.cache_misses);
+      EXPECT_EQ(c->tiles[i].texture.cache_line_accesses, c1.tiles[i].texture.cache_line_accesses);
       EXPECT_EQ(c->tiles[i].fragments_depth_tested, c1.tiles[i].fragments_depth_tested);
     }
   }
   EXPECT_GT(c1.texture.cache_misses, 0u);
   EXPECT_EQ(c1.texture.samples(), c1.fragments_shaded);
+}
+
+// Each core's cache is warm from one of its tiles to the next, across the batches tiles shade
+// in, whichever host thread shaded them: a texture of 4 cache lines, all of which each core's
+// tiles sample, misses 4 times per core over 48 tiles (the compulsory misses).
+TEST(Raster, EachCoresCacheSeesItsTilesInOrderAcrossBatches) {
+  std::vector<glm::vec4> texels(8 * 8, glm::vec4(0.5f));  // RGBA8, twiddled: 256 B, 4 lines
+  const Texture2D tex("small", 8, 8, texels, TexelFormat::kRGBA8, {Filter::kNearest, Wrap::kRepeat},
+                      false);
+  const Mesh quad = grid_mesh(1, 0.5f, 0.0f, 1);
+  for (int cores : {1, 2}) {
+    for (int threads : {1, 8}) {
+      GpuConfig c = config(threads);
+      c.cores = cores;
+      c.tile_size = 8;
+      RenderTarget rt("rt", 64, 48, TexelFormat::kRGBA8);  // 48 tiles: 3 batches of one core's
+      const PassCounters counted = Gpu(c).execute(textured_pass("warm", rt, quad, tex));
+      std::vector<std::uint64_t> misses(cores, 0);
+      for (const TileCounters& t : counted.tiles) misses[t.core] += t.texture.cache_misses;
+      EXPECT_EQ(misses, std::vector<std::uint64_t>(cores, 4u)) << cores << " cores, " << threads;
+      EXPECT_EQ(counted.texture.cache_line_accesses, 64u * 48u);
+    }
+  }
 }
 
 }  // namespace

@@ -61,9 +61,9 @@ TEST(ShadowSampler, NearestComparesOneTexelAndPcfFiltersFour) {
   RenderTarget depth("shadow_map", 4, 1, TexelFormat::kDepth24);
   for (int x = 0; x < 4; ++x)
     depth.at(x, 0) = quantize(glm::vec4(x < 2 ? 0.25f : 1.0f), depth.format);
-  TextureCache cache(TextureCacheConfig{});
+  TextureLineLog lines;
   TextureCounters counters;
-  ExecTexUnit tex(&cache, &counters);
+  ExecTexUnit tex(&lines, &counters);
   const Texture2D nearest = step_map(depth, Filter::kNearest);
   const Texture2D linear = step_map(depth, Filter::kBilinear);
   TextureBindings bindings;

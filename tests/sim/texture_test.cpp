@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 #include <utility>
 
 #include "sim/render_target.h"
@@ -123,6 +125,48 @@ TEST(TextureCache, HitsAfterFillAndEvictsLeastRecentlyUsed) {
   EXPECT_FALSE(cache.access(128));
 }
 
+// A replayed log gives the hits and misses of accessing its requests live, in order; a
+// repeat of the line just requested is not recorded (it is a hit that changes nothing).
+TEST(TextureCache, ReplayCountsTheMissesOfAccessingTheLinesInOrder) {
+  const std::vector<std::uint64_t> addresses = {0, 63, 128, 0, 256, 300, 0, 128, 128, 256, 0};
+  TextureLineLog log(64);
+  TextureCache live({256, 64, 2});  // 2 sets x 2 ways
+  std::uint64_t live_misses = 0;
+  for (const std::uint64_t address : addresses) {
+    log.add(address);
+    live_misses += !live.access(address);
+  }
+  EXPECT_EQ(log.lines(), (std::vector<std::uint32_t>{0, 2, 0, 4, 0, 2, 4, 0}));
+  TextureCounters counters;
+  TextureCache({256, 64, 2}).replay(log, counters);
+  EXPECT_EQ(live_misses, 6u);
+  EXPECT_EQ(counters.cache_misses, live_misses);
+  EXPECT_EQ(counters.dram_bytes, live_misses * 64u);
+}
+
+// Least recently used, as the textbook states it: each set a list, most recent first. The
+// cache's 4-way sets (a branch-free SIMD update) and its other associativities must agree
+// with it on every access of a long random stream that hits and misses in every way.
+TEST(TextureCache, EveryAssociativityIsLeastRecentlyUsed) {
+  for (const std::uint32_t ways : {1u, 2u, 3u, 4u, 8u}) {
+    const std::uint32_t sets = 4;
+    TextureCache cache({sets * ways * 64, 64, ways});
+    std::vector<std::vector<std::uint32_t>> model(sets);
+    std::mt19937 rng(ways);
+    std::uniform_int_distribution<std::uint32_t> pick(0, sets * (ways + 2) - 1);
+    for (int i = 0; i < 20000; ++i) {
+      const std::uint32_t line = pick(rng);
+      std::vector<std::uint32_t>& set = model[line % sets];
+      const auto found = std::find(set.begin(), set.end(), line);
+      const bool hit = found != set.end();
+      if (hit) set.erase(found);
+      if (set.size() == ways) set.pop_back();
+      set.insert(set.begin(), line);
+      ASSERT_EQ(cache.access(std::uint64_t{line} * 64), hit) << ways << " ways, access " << i;
+    }
+  }
+}
+
 TEST(TextureCache, RejectsImpossibleGeometry) {
   EXPECT_THROW(TextureCache({1000, 64, 4}), std::invalid_argument);
   EXPECT_THROW(TextureCache({1024, 48, 4}), std::invalid_argument);
@@ -187,13 +231,14 @@ TEST(TextureCache, XorFoldRemovesConflictMissesOfSameOffsetStreams) {
 TEST(TextureUnit, BilinearOfConstantIsConstantAndCountsFootprint) {
   const Texture2D t("t", 8, 8, std::vector<glm::vec4>(64, glm::vec4(0.5f)), TexelFormat::kRGBA8,
                     {Filter::kBilinear, Wrap::kRepeat}, false);
-  TextureCache cache({8192, 64, 4});
+  TextureLineLog lines(64);
   TextureCounters counters;
-  ExecTexUnit unit(&cache, &counters);
+  ExecTexUnit unit(&lines, &counters);
   TextureBindings b;
   b.textures[0] = &t;
   unit.bind(&b);
   const glm::vec4 v = unit.sample(0, glm::vec2(0.3f, 0.6f));
+  TextureCache({8192, 64, 4}).replay(lines, counters);
   EXPECT_EQ(v, quantize(glm::vec4(0.5f), TexelFormat::kRGBA8));
   EXPECT_EQ(counters.samples_by_filter[1], 1u);
   EXPECT_EQ(counters.samples_dependent, 1u);
@@ -205,9 +250,9 @@ TEST(TextureUnit, BilinearOfConstantIsConstantAndCountsFootprint) {
 TEST(TextureUnit, TrilinearReadsTwoLevels) {
   const Texture2D t("t", 64, 64, std::vector<glm::vec4>(64 * 64, glm::vec4(1.0f)),
                     TexelFormat::kRGBA8, {Filter::kTrilinear, Wrap::kClamp}, true);
-  TextureCache cache({8192, 64, 4});
+  TextureLineLog lines(64);
   TextureCounters counters;
-  ExecTexUnit unit(&cache, &counters);
+  ExecTexUnit unit(&lines, &counters);
   TextureBindings b;
   b.textures[0] = &t;
   unit.bind(&b);
@@ -230,9 +275,9 @@ TEST(TextureUnit, MagnifiedTrilinearReadsBothLevelsAndReturnsLevelZero) {
   for (TexelFormat format : {TexelFormat::kRGBA8, TexelFormat::kRGBA16F}) {
     const Texture2D tri("tri", 64, 64, ramp, format, {Filter::kTrilinear, Wrap::kClamp}, true);
     const Texture2D bi("bi", 64, 64, ramp, format, {Filter::kBilinear, Wrap::kClamp}, true);
-    TextureCache cache({8192, 64, 4});
+    TextureLineLog lines(64);
     TextureCounters counters;
-    ExecTexUnit unit(&cache, &counters);
+    ExecTexUnit unit(&lines, &counters);
     TextureBindings b;
     b.textures[0] = &tri;
     b.textures[1] = &bi;
@@ -242,7 +287,9 @@ TEST(TextureUnit, MagnifiedTrilinearReadsBothLevelsAndReturnsLevelZero) {
     uv.ddx = {0.25f / 64, 0};    // 4 pixels per texel
     uv.ddy = {0, 0.25f / 64};
     const glm::vec4 trilinear = unit.sample(0, uv);
+    TextureCache({8192, 64, 4}).replay(lines, counters);
     EXPECT_EQ(counters.texels_touched, 8u);
+    EXPECT_EQ(lines.lines().size(), 2u);
     EXPECT_EQ(counters.cache_misses, 2u);  // one line in each level
     EXPECT_EQ(trilinear, unit.sample(1, uv));
   }

@@ -1,0 +1,44 @@
+// The cache lines one tile's texture samples requested, in request order. A tile shades on
+// any host thread and records here; its emulated core's texture cache replays the log
+// afterwards, in the core's tile order (TextureCache::replay), which is the hit/miss
+// sequence of shading that core's tiles in order with the cache live (docs/emulator.md,
+// "Cores, threads and determinism").
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace skinsim::sim {
+
+class TextureLineLog {
+ public:
+  explicit TextureLineLog(std::uint32_t line_bytes = 64) : line_shift_(shift_of(line_bytes)) {}
+
+  std::uint64_t line_of(std::uint64_t address) const { return address >> line_shift_; }
+  // Records a request. A request for the line requested just before is not recorded: the
+  // cache holds that line as its set's most recent, so the request hits and changes nothing
+  // (consecutive taps of a blur, or the levels of a magnified trilinear sample, often share a
+  // line). Line numbers fit 32 bits: texture addresses lie below kMaxTextureBindings x
+  // kBindingAddressStride = 2^31 (static_assert in texture_unit.h).
+  void add(std::uint64_t address) {
+    const auto line = static_cast<std::uint32_t>(line_of(address));
+    if (line == last_ && !lines_.empty()) return;
+    lines_.push_back(line);
+    last_ = line;
+  }
+  // The requests to replay, in order: all but the repeats of the line just before.
+  const std::vector<std::uint32_t>& lines() const { return lines_; }
+  void clear() { lines_.clear(); }  // keeps the capacity for the next tile
+
+ private:
+  static std::uint32_t shift_of(std::uint32_t line_bytes) {
+    std::uint32_t shift = 0;
+    while ((std::uint32_t{1} << shift) < line_bytes) ++shift;
+    return shift;
+  }
+  std::uint32_t line_shift_;
+  std::uint32_t last_ = 0;  // the line of lines_.back(), when lines_ is not empty
+  std::vector<std::uint32_t> lines_;
+};
+
+}  // namespace skinsim::sim

@@ -1,0 +1,139 @@
+#include "sim/tile_stage.h"
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "sim/texture_cache.h"
+#include "sim/texture_line_log.h"
+#include "sim/tile_renderer.h"
+
+namespace skinsim::sim {
+
+namespace {
+
+// A tile's image and counters depend on its inputs alone, so tiles shade on any host thread
+// in any order, with one exception: each emulated core's texture cache sees its tiles'
+// requests in tile order. So a tile records the cache lines its samples request
+// (TextureLineLog), and its core's cache replays the logs in the core's tile order, which
+// gives the very hit/miss sequence of shading that core's tiles in order with the cache
+// live (the cache only counts; it never changes a texel).
+//
+// Host threads take tiles in row-major order as they come free. A thread that has shaded a
+// tile then replays, through that tile's core, every tile of the core that is shaded and
+// next in the core's order, unless another thread is replaying the core already. No
+// thread waits for another: a frame uses every host thread, however many cores the device
+// has, and only the logs of tiles shaded but not yet replayed are held (a few per thread).
+class TileStage {
+ public:
+  TileStage(const RenderPassDesc& pass, const GpuConfig& config, const SetupTriangles& setup,
+            const TileGrid& grid, const TileBins& bins, PassCounters& c)
+      : pass_(pass),
+        config_(config),
+        setup_(setup),
+        grid_(grid),
+        bins_(bins),
+        c_(c),
+        tile_count_(static_cast<int>(c.tiles.size())),
+        logs_(c.tiles.size()),
+        shaded_(c.tiles.size()) {
+    for (int core = 0; core < c.cores; ++core) {
+      cores_.push_back(std::make_unique<Core>(config.texture_cache, core));
+    }
+  }
+
+  void run() {
+    tbb::parallel_for(0, tbb::this_task_arena::max_concurrency(), [&](int) {
+      for (int tile = next_tile_++; tile < tile_count_; tile = next_tile_++) {
+        shade(tile);
+        replay_ready(tile % c_.cores);
+      }
+    });
+    // A tile marked shaded just as another thread finished replaying its core may be left;
+    // every thread is done now, so this replays whatever is.
+    for (int core = 0; core < c_.cores; ++core) replay_ready(core);
+  }
+
+ private:
+  struct Core {
+    Core(const TextureCacheConfig& config, int first_tile) : cache(config), next(first_tile) {}
+    TextureCache cache;  // cold at the start of the render
+    std::mutex replaying;
+    std::atomic<int> next;  // the core's next tile to replay
+  };
+
+  void shade(int tile) {
+    TileCounters& tc = c_.tiles[tile];
+    if (grid_.in_area(tc.tile_x, tc.tile_y)) {
+      logs_[tile] = take_log();
+      TileRenderer renderer(pass_, setup_, grid_, config_);
+      renderer.render(tc.tile_x, tc.tile_y, bins_.lists[tile], tc, *logs_[tile]);
+    }
+    shaded_[tile].store(true);
+  }
+
+  void replay_ready(int core) {
+    Core& k = *cores_[core];
+    for (;;) {
+      {
+        const std::unique_lock lock(k.replaying, std::try_to_lock);
+        if (!lock.owns_lock()) return;  // the thread holding it replays what is ready
+        int tile = k.next.load();
+        for (; tile < tile_count_ && shaded_[tile].load(); tile += c_.cores) {
+          if (!logs_[tile]) continue;  // outside the render area
+          k.cache.replay(*logs_[tile], c_.tiles[tile].texture);
+          give_log(std::move(logs_[tile]));
+        }
+        k.next.store(tile);
+      }
+      // The next tile may have been marked shaded while this thread held the lock, by a
+      // thread that then found the lock taken: replay it here rather than leave it.
+      const int tile = k.next.load();
+      if (tile >= tile_count_ || !shaded_[tile].load()) return;
+    }
+  }
+
+  // Logs are reused, so a tile's recording rarely allocates.
+  std::unique_ptr<TextureLineLog> take_log() {
+    {
+      const std::lock_guard lock(free_logs_mutex_);
+      if (!free_logs_.empty()) {
+        std::unique_ptr<TextureLineLog> log = std::move(free_logs_.back());
+        free_logs_.pop_back();
+        return log;
+      }
+    }
+    return std::make_unique<TextureLineLog>(config_.texture_cache.line_bytes);
+  }
+  void give_log(std::unique_ptr<TextureLineLog> log) {
+    const std::lock_guard lock(free_logs_mutex_);
+    free_logs_.push_back(std::move(log));
+  }
+
+  const RenderPassDesc& pass_;
+  const GpuConfig& config_;
+  const SetupTriangles& setup_;
+  const TileGrid& grid_;
+  const TileBins& bins_;
+  PassCounters& c_;
+  const int tile_count_;
+  std::vector<std::unique_ptr<Core>> cores_;
+  std::vector<std::unique_ptr<TextureLineLog>> logs_;  // a tile's, from shading to replay
+  std::vector<std::atomic<bool>> shaded_;
+  std::atomic<int> next_tile_{0};
+  std::mutex free_logs_mutex_;
+  std::vector<std::unique_ptr<TextureLineLog>> free_logs_;
+};
+
+}  // namespace
+
+void render_tiles(const RenderPassDesc& pass, const GpuConfig& config, const SetupTriangles& setup,
+                  const TileGrid& grid, const TileBins& bins, PassCounters& c) {
+  TileStage(pass, config, setup, grid, bins, c).run();
+}
+
+}  // namespace skinsim::sim
