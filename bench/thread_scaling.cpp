@@ -2,8 +2,9 @@
 // skin frame at the device's display resolution (2048x1536 on ipad4) with 1, 2, 4, ... host
 // threads up to the machine's, prints the best and median wall time of each count beside
 // its speed-up over 1 thread, and exits 1 unless every count gives the 1-thread frame's
-// image and counters bit for bit. It reads no images and draws no charts, so it runs on a bare
-// many-core machine with only the data directory beside it:
+// image and counters bit for bit. It prints their digest too: two machines that print the
+// same one rendered and counted the same frame. It reads no images and draws no charts, so it runs
+// on a bare many-core machine with only the data directory beside it:
 //   build/bench/thread_scaling [--frames N] [--max-threads T] [--data DIR]
 #include <algorithm>
 #include <chrono>
@@ -152,6 +153,8 @@ int main(int argc, char** argv) try {
                 one_thread_ms / ms.front(),
                 digest == expected ? "identical to 1 thread" : "DIFFERENT from 1 thread");
   }
+  std::printf("frame digest (image, every tile's counters, modelled ms): %016llx\n",
+              static_cast<unsigned long long>(expected));
   return identical ? 0 : 1;
 } catch (const std::exception& e) {
   std::fprintf(stderr, "thread_scaling: %s\n", e.what());
