@@ -55,8 +55,4 @@ void TextureCache::replay(const TextureLineLog& log, TextureCounters& counters) 
   counters.dram_bytes += misses * line_bytes_;
 }
 
-void TextureCache::clear() {
-  std::fill(tags_.begin(), tags_.end(), kEmpty);
-}
-
 }  // namespace skinsim::sim

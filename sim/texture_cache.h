@@ -42,11 +42,8 @@ class TextureCache {
   bool access(std::uint64_t address) {
     return access_line(static_cast<std::uint32_t>(address >> line_shift_));
   }
-  bool access_line(std::uint32_t line);
   // Looks up a tile's recorded lines in order, counting its misses and their DRAM bytes.
   void replay(const TextureLineLog& log, TextureCounters& counters);
-  std::uint32_t line_bytes() const { return line_bytes_; }
-  void clear();
 
  private:
   std::uint32_t line_bytes_;
@@ -61,6 +58,7 @@ class TextureCache {
   // Per set, `ways_` line tags ordered most recently used first; kEmpty marks a free way.
   std::vector<std::uint32_t> tags_;
 
+  bool access_line(std::uint32_t line);
   std::uint64_t set_of(std::uint32_t line) const;
   bool access_4_ways(std::uint32_t* ways, std::uint32_t line);
 };
