@@ -296,10 +296,10 @@ TEST(Raster, ImagesAndCountersIdenticalForAnyThreadCount) {
   EXPECT_EQ(c1.texture.samples(), c1.fragments_shaded);
 }
 
-// Each core's cache is warm from one of its tiles to the next, across the batches tiles shade
-// in, whichever host thread shaded them: a texture of 4 cache lines, all of which each core's
-// tiles sample, misses 4 times per core over 48 tiles (the compulsory misses).
-TEST(Raster, EachCoresCacheSeesItsTilesInOrderAcrossBatches) {
+// Each core's cache is warm from one of its tiles to the next, whichever host threads shaded
+// them and replayed their logs: a texture of 4 cache lines, all of which each core's tiles
+// sample, misses 4 times per core over 48 tiles (the compulsory misses).
+TEST(Raster, EachCoresCacheStaysWarmFromTileToTileOnAnyThreadCount) {
   std::vector<glm::vec4> texels(8 * 8, glm::vec4(0.5f));  // RGBA8, twiddled: 256 B, 4 lines
   const Texture2D tex("small", 8, 8, texels, TexelFormat::kRGBA8, {Filter::kNearest, Wrap::kRepeat},
                       false);
@@ -309,7 +309,7 @@ TEST(Raster, EachCoresCacheSeesItsTilesInOrderAcrossBatches) {
       GpuConfig c = config(threads);
       c.cores = cores;
       c.tile_size = 8;
-      RenderTarget rt("rt", 64, 48, TexelFormat::kRGBA8);  // 48 tiles: 3 batches of one core's
+      RenderTarget rt("rt", 64, 48, TexelFormat::kRGBA8);  // 8x6 tiles of 8x8 pixels
       const PassCounters counted = Gpu(c).execute(textured_pass("warm", rt, quad, tex));
       std::vector<std::uint64_t> misses(cores, 0);
       for (const TileCounters& t : counted.tiles) misses[t.core] += t.texture.cache_misses;
