@@ -14,15 +14,12 @@
 #include <cstring>
 #include <string>
 #include <thread>
-#include <tuple>
 #include <vector>
 
+#include "driver/frame_job.h"
 #include "driver/host_memory.h"
-#include "gpu_model/frame_cost.h"
-#include "gpu_model/gpu_config.h"
+#include "driver/scene_source.h"
 #include "gpu_model/profile_loader.h"
-#include "pipeline/frame.h"
-#include "scene/procedural_head.h"
 
 namespace {
 
@@ -51,20 +48,7 @@ void add_texture(Digest& d, const sim::TextureCounters& t) {
   }
 }
 
-// One frame as `skinsim run` emulates it (driver::run_frame, without its image I/O).
-struct Frame {
-  pipeline::FrameOutput output;
-  double frame_ms = 0.0;  // modelled
-};
-Frame render(const pipeline::GpuScene& scene, const pipeline::PipelineConfig& config,
-             const gpu_model::DeviceProfile& device, int threads) {
-  sim::Gpu gpu(gpu_model::gpu_config(device, threads));
-  Frame f{pipeline::render_frame(scene, config, gpu)};
-  f.frame_ms = gpu_model::estimate_frame(f.output.passes, device).frame_ms;
-  return f;
-}
-
-std::uint64_t frame_digest(const Frame& r) {
+std::uint64_t frame_digest(const driver::FrameResult& r) {
   Digest d;
   for (const glm::vec4& p : r.output.frame.pixels) d.add(p);
   for (const sim::PassCounters& pass : r.output.passes) {
@@ -77,7 +61,7 @@ std::uint64_t frame_digest(const Frame& r) {
       add_texture(d, t.texture);
     }
   }
-  d.add(r.frame_ms);
+  d.add(r.timing.frame_ms);
   return d.value();
 }
 
@@ -114,14 +98,9 @@ int main(int argc, char** argv) try {
                  static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
   const gpu_model::DeviceProfile device = gpu_model::load_device_profile(
       "ipad4", string_option(argc, argv, "--data", SKINSIM_BENCH_DATA_DIR));
-  pipeline::PipelineConfig config;  // the default technique and knobs, at the display's size
-  std::tie(config.width, config.height) =
-      pipeline::render_size(config, static_cast<int>(device.display_width.value),
-                            static_cast<int>(device.display_height.value));
-  config.validate();
-  scene::DefaultSceneOptions scene_options;
-  scene_options.aspect = static_cast<float>(config.width) / static_cast<float>(config.height);
-  const scene::Scene scene = scene::make_default_scene(scene_options);
+  const pipeline::PipelineConfig config = driver::resolve_config({}, device);  // the display's size
+  const scene::Scene scene = driver::load_scene(
+      driver::SceneSource{}, static_cast<float>(config.width) / static_cast<float>(config.height));
   const pipeline::GpuScene gpu_scene(scene);
 
   std::vector<int> counts;
@@ -140,7 +119,7 @@ int main(int argc, char** argv) try {
     std::uint64_t digest = 0;
     for (int f = 0; f < frames; ++f) {
       const auto t0 = std::chrono::steady_clock::now();
-      const Frame r = render(gpu_scene, config, device, threads);
+      const driver::FrameResult r = driver::run_frame(gpu_scene, config, device, threads);
       ms.push_back(
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
       digest = frame_digest(r);

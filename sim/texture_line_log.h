@@ -15,16 +15,14 @@ class TextureLineLog {
   explicit TextureLineLog(std::uint32_t line_bytes = 64) : line_shift_(shift_of(line_bytes)) {}
 
   std::uint64_t line_of(std::uint64_t address) const { return address >> line_shift_; }
-  // Records a request. A request for the line requested just before is not recorded: the
-  // cache holds that line as its set's most recent, so the request hits and changes nothing
-  // (consecutive taps of a blur, or the levels of a magnified trilinear sample, often share a
-  // line). Line numbers fit 32 bits: texture addresses lie below kMaxTextureBindings x
-  // kBindingAddressStride = 2^31 (static_assert in texture_unit.h).
-  void add(std::uint64_t address) {
-    const auto line = static_cast<std::uint32_t>(line_of(address));
-    if (line == last_ && !lines_.empty()) return;
-    lines_.push_back(line);
-    last_ = line;
+  // Records a request for `line` (line_of an address). A request for the line requested just
+  // before is not recorded: the cache holds that line as its set's most recent, so the
+  // request hits and changes nothing (consecutive taps of a blur, or the levels of a magnified
+  // trilinear sample, often share a line). Line numbers fit 32 bits: texture addresses lie
+  // below kMaxTextureBindings x kBindingAddressStride = 2^31 (static_assert in texture_unit.h).
+  void add(std::uint64_t line) {
+    const auto l = static_cast<std::uint32_t>(line);
+    if (lines_.empty() || lines_.back() != l) lines_.push_back(l);
   }
   // The requests to replay, in order: all but the repeats of the line just before.
   const std::vector<std::uint32_t>& lines() const { return lines_; }
@@ -37,7 +35,6 @@ class TextureLineLog {
     return shift;
   }
   std::uint32_t line_shift_;
-  std::uint32_t last_ = 0;  // the line of lines_.back(), when lines_ is not empty
   std::vector<std::uint32_t> lines_;
 };
 

@@ -86,7 +86,7 @@ class ExecTexUnit {
   Footprint fetch_footprint(const Texture2D& tex, std::uint64_t base, int level, glm::vec2 uv);
   // `blend` false: count and cache the footprint only (its value is not needed).
   glm::vec4 bilinear(const Texture2D& tex, std::uint64_t base, int level, glm::vec2 uv, bool blend);
-  void access_line(std::uint64_t address);  // records one distinct cache line of a sample
+  void access_line(std::uint64_t line);  // records one distinct cache line of a sample
   const Texture2D& texture(int binding) const;
   [[noreturn]] static void unbound(int binding, const char* kind);
   const TextureCube& cube(int binding) const;

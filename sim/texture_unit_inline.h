@@ -15,9 +15,9 @@ inline const Texture2D& ExecTexUnit::texture(int binding) const {
   return *t;
 }
 
-inline void ExecTexUnit::access_line(std::uint64_t address) {
+inline void ExecTexUnit::access_line(std::uint64_t line) {
   ++counters_->cache_line_accesses;
-  lines_->add(address);
+  lines_->add(line);
 }
 
 inline glm::vec4 ExecTexUnit::nearest(const Texture2D& tex, std::uint64_t base, int level,
@@ -28,7 +28,7 @@ inline glm::vec4 ExecTexUnit::nearest(const Texture2D& tex, std::uint64_t base, 
   const int x = filtering::wrap_coord(f.x, l.width, tex.sampler().wrap);
   const int y = filtering::wrap_coord(f.y, l.height, tex.sampler().wrap);
   ++counters_->texels_touched;
-  access_line(base + tex.texel_offset(level, x, y));
+  access_line(lines_->line_of(base + tex.texel_offset(level, x, y)));
   return l.at(x, y);
 }
 
@@ -60,10 +60,10 @@ inline ExecTexUnit::Footprint ExecTexUnit::fetch_footprint(const Texture2D& tex,
   const std::uint64_t l00 = lines_->line_of(a00), l10 = lines_->line_of(a10);
   const std::uint64_t l01 = lines_->line_of(a01), l11 = lines_->line_of(a11);
   counters_->texels_touched += 4;
-  access_line(a00);
-  if (l10 != l00) access_line(a10);
-  if (l01 != l00 && l01 != l10) access_line(a01);
-  if (l11 != l00 && l11 != l10 && l11 != l01) access_line(a11);
+  access_line(l00);
+  if (l10 != l00) access_line(l10);
+  if (l01 != l00 && l01 != l10) access_line(l01);
+  if (l11 != l00 && l11 != l10 && l11 != l01) access_line(l11);
   return fp;
 }
 

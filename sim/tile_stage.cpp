@@ -48,8 +48,9 @@ class TileStage {
 
   void run() {
     tbb::parallel_for(0, tbb::this_task_arena::max_concurrency(), [&](int) {
+      TileRenderer renderer(pass_, setup_, grid_, config_);  // its tile buffers, reused
       for (int tile = next_tile_++; tile < tile_count_; tile = next_tile_++) {
-        shade(tile);
+        shade(renderer, tile);
         replay_ready(tile % c_.cores);
       }
     });
@@ -66,11 +67,10 @@ class TileStage {
     std::atomic<int> next;  // the core's next tile to replay
   };
 
-  void shade(int tile) {
+  void shade(TileRenderer& renderer, int tile) {
     TileCounters& tc = c_.tiles[tile];
     if (grid_.in_area(tc.tile_x, tc.tile_y)) {
       logs_[tile] = take_log();
-      TileRenderer renderer(pass_, setup_, grid_, config_);
       renderer.render(tc.tile_x, tc.tile_y, bins_.lists[tile], tc, *logs_[tile]);
     }
     shaded_[tile].store(true);

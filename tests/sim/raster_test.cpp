@@ -1,5 +1,6 @@
 // Exact counter checks of the emulated GPU on hand-checkable scenes.
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <random>
 
@@ -275,7 +276,10 @@ TEST(Raster, ImagesAndCountersIdenticalForAnyThreadCount) {
     pixels = rt.pixels;
     return c;
   };
-  // 8 host threads: more than the 4 emulated cores, so tiles of one core shade at once.
+  // 8 host threads: more than the 4 emulated cores, so tiles of one core shade at once. TBB
+  // caps a process at the machine's hardware threads unless told otherwise, and would run
+  // "8" as 2 on a 2-core machine.
+  const tbb::global_control allow(tbb::global_control::max_allowed_parallelism, 8);
   std::vector<glm::vec4> p1, p2, p4, p8;
   const PassCounters c1 = render(1, p1), c2 = render(2, p2), c4 = render(4, p4), c8 = render(8, p8);
   EXPECT_EQ(p1, p2);
@@ -300,6 +304,7 @@ TEST(Raster, ImagesAndCountersIdenticalForAnyThreadCount) {
 // them and replayed their logs: a texture of 4 cache lines, all of which each core's tiles
 // sample, misses 4 times per core over 48 tiles (the compulsory misses).
 TEST(Raster, EachCoresCacheStaysWarmFromTileToTileOnAnyThreadCount) {
+  const tbb::global_control allow(tbb::global_control::max_allowed_parallelism, 8);
   std::vector<glm::vec4> texels(8 * 8, glm::vec4(0.5f));  // RGBA8, twiddled: 256 B, 4 lines
   const Texture2D tex("small", 8, 8, texels, TexelFormat::kRGBA8, {Filter::kNearest, Wrap::kRepeat},
                       false);

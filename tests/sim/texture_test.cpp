@@ -133,7 +133,7 @@ TEST(TextureCache, ReplayCountsTheMissesOfAccessingTheLinesInOrder) {
   TextureCache live({256, 64, 2});  // 2 sets x 2 ways
   std::uint64_t live_misses = 0;
   for (const std::uint64_t address : addresses) {
-    log.add(address);
+    log.add(log.line_of(address));
     live_misses += !live.access(address);
   }
   EXPECT_EQ(log.lines(), (std::vector<std::uint32_t>{0, 2, 0, 4, 0, 2, 4, 0}));
