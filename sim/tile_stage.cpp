@@ -41,6 +41,7 @@ class TileStage {
         tile_count_(static_cast<int>(c.tiles.size())),
         logs_(c.tiles.size()),
         shaded_(c.tiles.size()) {
+    // A core's tiles are every cores-th from its first: core_of_tile deals them round-robin.
     for (int core = 0; core < c.cores; ++core) {
       cores_.push_back(std::make_unique<Core>(config.texture_cache, core));
     }
@@ -51,7 +52,7 @@ class TileStage {
       TileRenderer renderer(pass_, setup_, grid_, config_);  // its tile buffers, reused
       for (int tile = next_tile_++; tile < tile_count_; tile = next_tile_++) {
         shade(renderer, tile);
-        replay_ready(tile % c_.cores);
+        replay_ready(c_.tiles[tile].core);
       }
     });
     // A tile marked shaded just as another thread finished replaying its core may be left;
