@@ -3,10 +3,18 @@
 // threads up to the machine's, prints the best and median wall time of each count beside
 // its speed-up over 1 thread, and exits 1 unless every count gives the 1-thread frame's
 // image and counters bit for bit. It prints their digest too: two machines that print the
-// same one rendered and counted the same frame. It reads no images and draws no charts, so it runs
-// on a bare many-core machine with only the data directory beside it:
+// same one rendered and counted the same frame. Where the machine has at least twice the
+// device's cores, it then renders 2, 4, ... frames at once with the threads shared among them
+// (what a sweep could do instead of one frame with every thread) and prints the frames per
+// second and the process's peak memory of each, and then the default sweep's 16 frames as the
+// sweep renders them (sweep_run.cpp: lanes each taking the next configuration, each lane
+// replaying passes from its own memo) with 1, 2, 4, ... lanes. It reads no images and draws no
+// charts, so it runs on a bare many-core machine with only the data directory beside it:
 //   build/bench/thread_scaling [--frames N] [--max-threads T] [--data DIR]
+#include <sys/resource.h>
+
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -19,7 +27,9 @@
 #include "driver/frame_job.h"
 #include "driver/host_memory.h"
 #include "driver/scene_source.h"
+#include "driver/sweep_spec.h"
 #include "gpu_model/profile_loader.h"
+#include "sim/pass_memo.h"
 
 namespace {
 
@@ -88,6 +98,67 @@ std::string string_option(int argc, char** argv, const char* name, const char* f
   return fallback;
 }
 
+double peak_rss_mb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
+}
+
+// `rounds` rounds of `in_flight` frames at once, each frame on threads / in_flight host
+// threads; returns frames per second, and clears `identical` if any frame differs from
+// `expected`. Rows run with the frames in flight ascending, so a row's peak memory is its
+// own (peak memory only grows).
+double frames_per_second(const pipeline::GpuScene& scene, const pipeline::PipelineConfig& config,
+                         const gpu_model::DeviceProfile& device, int threads, int in_flight,
+                         int rounds, std::uint64_t expected, bool& identical) {
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int round = 0; round < rounds; ++round) {
+    std::vector<std::uint64_t> digests(in_flight);
+    std::vector<std::thread> lanes;
+    for (int lane = 0; lane < in_flight; ++lane) {
+      lanes.emplace_back([&, lane] {
+        digests[lane] = frame_digest(driver::run_frame(scene, config, device, threads / in_flight));
+      });
+    }
+    for (std::thread& lane : lanes) lane.join();
+    for (const std::uint64_t d : digests) identical = identical && d == expected;
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return static_cast<double>(rounds * in_flight) / seconds;
+}
+
+// The default sweep's frames (no quality metrics, no files), `lanes` at a time as
+// driver::run_sweep renders them: each lane takes the next configuration and replays passes
+// from a memo of its own. Returns the seconds taken and the passes replayed.
+struct SweepFrames {
+  double seconds;
+  std::uint64_t replayed, rendered;
+};
+SweepFrames sweep_frames(const pipeline::GpuScene& scene, const gpu_model::DeviceProfile& device,
+                         int threads, int lanes) {
+  const std::vector<driver::SweepConfig> configs =
+      driver::expand_sweep(driver::default_sweep_spec());
+  std::atomic<std::size_t> next{0};
+  std::atomic<std::uint64_t> replayed{0}, rendered{0};
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<std::thread> workers;
+  for (int lane = 0; lane < lanes; ++lane) {
+    workers.emplace_back([&] {
+      sim::PassMemo memo(std::size_t{192} << 20);  // sweep_run.cpp's kPassMemoBytes
+      for (std::size_t i = next++; i < configs.size(); i = next++) {
+        driver::run_frame(scene, driver::resolve_config(configs[i].config, device), device,
+                          threads / lanes, {}, &memo);
+      }
+      replayed += memo.stats().replayed;
+      rendered += memo.stats().rendered;
+    });
+  }
+  for (std::thread& w : workers) w.join();
+  return {std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(),
+          replayed.load(), rendered.load()};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) try {
@@ -131,6 +202,33 @@ int main(int argc, char** argv) try {
     std::printf("%8d %10.1f %10.1f %8.2fx  %s\n", threads, ms.front(), ms[ms.size() / 2],
                 one_thread_ms / ms.front(),
                 digest == expected ? "identical to 1 thread" : "DIFFERENT from 1 thread");
+  }
+
+  const int cores = gpu_model::sim_parameters(device).cores;
+  if (max_threads >= 2 * cores) {
+    std::printf("\n%d host threads shared by frames in flight, %d rounds each\n", max_threads,
+                frames);
+    std::printf("%9s %16s %13s %13s  %s\n", "in flight", "threads a frame", "frames / s",
+                "peak RSS MB", "image and counters");
+    for (int in_flight = 1; max_threads / in_flight >= cores; in_flight *= 2) {
+      bool same = true;
+      const double rate = frames_per_second(gpu_scene, config, device, max_threads, in_flight,
+                                            frames, expected, same);
+      identical = identical && same;
+      std::printf("%9d %16d %13.2f %13.0f  %s\n", in_flight, max_threads / in_flight, rate,
+                  peak_rss_mb(), same ? "identical to 1 thread" : "DIFFERENT from 1 thread");
+    }
+  }
+  if (max_threads >= 2 * cores) {
+    std::printf("\nthe default sweep's frames, %d host threads shared by lanes\n", max_threads);
+    std::printf("%6s %16s %10s %16s %13s\n", "lanes", "threads a frame", "seconds",
+                "passes replayed", "peak RSS MB");
+    for (int lanes = 1; max_threads / lanes >= cores; lanes *= 2) {
+      const SweepFrames f = sweep_frames(gpu_scene, device, max_threads, lanes);
+      std::printf("%6d %16d %10.2f %9llu of %3llu %13.0f\n", lanes, max_threads / lanes, f.seconds,
+                  static_cast<unsigned long long>(f.replayed),
+                  static_cast<unsigned long long>(f.replayed + f.rendered), peak_rss_mb());
+    }
   }
   std::printf("frame digest (image, every tile's counters, modelled ms): %016llx\n",
               static_cast<unsigned long long>(expected));
