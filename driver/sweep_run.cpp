@@ -1,18 +1,15 @@
 #include "driver/sweep_run.h"
 
 #include <fmt/format.h>
-#include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <map>
 #include <memory>
-#include <mutex>
 #include <set>
 
 #include "driver/frame_job.h"
@@ -111,27 +108,11 @@ void compute(const fs::path& dir, const Job& job, int frame_threads, sim::PassMe
   io::write_file_atomically((dir / config_json_path(id)).string(), to_json(stored).dump(1) + "\n");
 }
 
-// What a frame in flight keeps of earlier frames' passes for replay. The passes worth keeping
+// What the sweep keeps of earlier frames' passes for replay. The passes worth keeping
 // are the ones later passes sample (PassMemo::end_frame): at 2048x1536 and buffer scale 1 a
 // mobile frame's are about 42 MB (shadow map, irradiance, two blurs), so this holds those of
 // several scales and techniques without raising the sweep's peak much.
 constexpr std::size_t kPassMemoBytes = std::size_t{192} << 20;
-
-// How many frames are emulated at once, and with how many host threads each. A frame's
-// tiles use any number of host threads (sim/gpu.cpp), but its set-up, binning, metrics and
-// PNG encoding use fewer, so a host with more threads than the device has cores runs several
-// frames at once, each with as many threads as the device has cores. One frame at a time
-// otherwise, with every thread: the memory of one frame's render targets, not several
-// (about 330 MB at 2048x1536, scale 1).
-struct InFlight {
-  int frames = 1;
-  int frame_threads = 1;
-};
-InFlight in_flight(const std::vector<Job>& jobs, int threads) {
-  int cores = 1;
-  for (const Job& job : jobs) cores = std::max(cores, gpu_model::sim_parameters(*job.device).cores);
-  return {std::max(1, threads / cores), std::clamp(threads, 1, cores)};
-}
 
 // What a configuration is expected to cost the host, for balancing shards: its output pixels
 // times its technique's measured host time per pixel (TechniqueSpec::host_ns_per_pixel).
@@ -254,50 +235,40 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
     job.reference = &it->second;
   }
 
-  std::mutex mutex;
-  std::map<std::size_t, std::string> failures;  // by job index: expansion order
-  std::atomic<int> not_run{0};
-  const auto run_job = [&](std::size_t i, int frame_threads, sim::PassMemo& memo) {
-    if (cancelled(options) || !jobs[i].reference) {
-      ++not_run;
-      return;
-    }
-    const Clock::time_point t0 = Clock::now();
-    try {
-      compute(dir, jobs[i], frame_threads, memo);
-    } catch (const UserError& e) {
-      // One configuration that cannot be measured (a figure that is not a finite number) is
-      // reported with its reason; the others still run.
-      const std::lock_guard lock(mutex);
-      failures[i] = e.what();
-      return;
-    }
-    progress.finished(jobs[i].config->id, seconds_since(t0));
-    const std::lock_guard lock(mutex);
-    summary.computed.push_back(jobs[i].config->id);
-    if (options.on_finished) options.on_finished(jobs[i].config->id);
-  };
-  const InFlight plan = in_flight(jobs, arena.max_concurrency());
   progress.start_configs();
+  // One frame at a time, with every thread of the arena: a frame's tiles use any number of
+  // host threads (sim/tile_stage.cpp), and its quality metrics whatever threads are free. On
+  // a 16-core host the default sweep's frames took 4.08 s so, against 3.44 s four at a time
+  // with 4 threads each (bench/thread_scaling, docs/performance.md); but four in flight
+  // peaked at 1415 MB against 667 MB, as each holds its render targets and a memo, and
+  // replayed 12 passes of 80 instead of 51, as consecutive configurations, which share
+  // passes, went to different lanes. The memo replays passes of earlier frames:
+  // configurations come in expansion order, the last axis fastest, so consecutive ones share
+  // the passes that axis leaves be.
   arena.execute([&] {
-    // `plan.frames` lanes, each taking the next configuration until none is left; a frame's
-    // quality metrics use whatever threads of the arena are free.
-    std::atomic<std::size_t> next{0};
-    // Each lane replays passes from its own memo: the configurations come in expansion
-    // order, the last axis fastest, so consecutive ones share the passes that axis leaves be.
-    tbb::parallel_for(0, plan.frames, [&](int) {
-      sim::PassMemo memo(kPassMemoBytes);
-      for (std::size_t i = next++; i < jobs.size(); i = next++) {
-        run_job(i, plan.frame_threads, memo);
+    sim::PassMemo memo(kPassMemoBytes);
+    for (const Job& job : jobs) {
+      if (cancelled(options) || !job.reference) {
+        ++summary.not_run;
+        continue;
       }
-      const std::lock_guard lock(mutex);
-      summary.passes_replayed += memo.stats().replayed;
-      summary.passes_rendered += memo.stats().rendered;
-    });
+      const Clock::time_point t0 = Clock::now();
+      try {
+        compute(dir, job, arena.max_concurrency(), memo);
+      } catch (const UserError& e) {
+        // One configuration that cannot be measured (a figure that is not a finite number) is
+        // reported with its reason; the others still run.
+        summary.failed.push_back({job.config->id, e.what()});
+        continue;
+      }
+      progress.finished(job.config->id, seconds_since(t0));
+      summary.computed.push_back(job.config->id);
+      if (options.on_finished) options.on_finished(job.config->id);
+    }
+    summary.passes_replayed = memo.stats().replayed;
+    summary.passes_rendered = memo.stats().rendered;
   });
   progress.close();
-  summary.not_run = not_run.load();
-  for (const auto& [i, reason] : failures) summary.failed.push_back({jobs[i].config->id, reason});
   for (const std::string& id : summary.computed) foreign.erase(id);
   summary.foreign_ignored = static_cast<int>(foreign.size());
   summary.cancelled = cancelled(options);
