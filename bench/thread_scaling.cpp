@@ -6,10 +6,11 @@
 // same one rendered and counted the same frame. Where the machine has at least twice the
 // device's cores, it then renders 2, 4, ... frames at once with the threads shared among them
 // (what a sweep could do instead of one frame with every thread) and prints the frames per
-// second and the process's peak memory of each, and then the default sweep's 16 frames as the
-// sweep renders them (sweep_run.cpp: lanes each taking the next configuration, each lane
-// replaying passes from its own memo) with 1, 2, 4, ... lanes. It reads no images and draws no
-// charts, so it runs on a bare many-core machine with only the data directory beside it:
+// second and the process's peak memory of each, and then the default sweep's 16 frames in 1,
+// 2, 4, ... lanes, each lane taking the next configuration and replaying passes from its own
+// memo (run_sweep renders one lane with every thread, the first row; it ran several on such a
+// machine before 2026-11-26, docs/performance.md). It reads no images and draws no charts, so
+// it runs on a bare many-core machine with only the data directory beside it:
 //   build/bench/thread_scaling [--frames N] [--max-threads T] [--data DIR]
 #include <sys/resource.h>
 
@@ -27,6 +28,7 @@
 #include "driver/frame_job.h"
 #include "driver/host_memory.h"
 #include "driver/scene_source.h"
+#include "driver/sweep_run.h"
 #include "driver/sweep_spec.h"
 #include "gpu_model/profile_loader.h"
 #include "sim/pass_memo.h"
@@ -104,6 +106,14 @@ double peak_rss_mb() {
   return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
 }
 
+// Runs lane(0) .. lane(lanes - 1) at once, one std::thread each, and waits for them.
+template <typename Lane>
+void run_lanes(int lanes, const Lane& lane) {
+  std::vector<std::thread> threads;
+  for (int i = 0; i < lanes; ++i) threads.emplace_back([&lane, i] { lane(i); });
+  for (std::thread& t : threads) t.join();
+}
+
 // `rounds` rounds of `in_flight` frames at once, each frame on threads / in_flight host
 // threads; returns frames per second, and clears `identical` if any frame differs from
 // `expected`. Rows run with the frames in flight ascending, so a row's peak memory is its
@@ -114,13 +124,9 @@ double frames_per_second(const pipeline::GpuScene& scene, const pipeline::Pipeli
   const auto t0 = std::chrono::steady_clock::now();
   for (int round = 0; round < rounds; ++round) {
     std::vector<std::uint64_t> digests(in_flight);
-    std::vector<std::thread> lanes;
-    for (int lane = 0; lane < in_flight; ++lane) {
-      lanes.emplace_back([&, lane] {
-        digests[lane] = frame_digest(driver::run_frame(scene, config, device, threads / in_flight));
-      });
-    }
-    for (std::thread& lane : lanes) lane.join();
+    run_lanes(in_flight, [&](int lane) {
+      digests[lane] = frame_digest(driver::run_frame(scene, config, device, threads / in_flight));
+    });
     for (const std::uint64_t d : digests) identical = identical && d == expected;
   }
   const double seconds =
@@ -128,9 +134,9 @@ double frames_per_second(const pipeline::GpuScene& scene, const pipeline::Pipeli
   return static_cast<double>(rounds * in_flight) / seconds;
 }
 
-// The default sweep's frames (no quality metrics, no files), `lanes` at a time as
-// driver::run_sweep renders them: each lane takes the next configuration and replays passes
-// from a memo of its own. Returns the seconds taken and the passes replayed.
+// The default sweep's frames (no quality metrics, no files), `lanes` at a time: each lane
+// takes the next configuration and replays passes from a memo of its own, as large as
+// run_sweep's. Returns the seconds taken and the passes replayed and rendered.
 struct SweepFrames {
   double seconds;
   std::uint64_t replayed, rendered;
@@ -142,19 +148,15 @@ SweepFrames sweep_frames(const pipeline::GpuScene& scene, const gpu_model::Devic
   std::atomic<std::size_t> next{0};
   std::atomic<std::uint64_t> replayed{0}, rendered{0};
   const auto t0 = std::chrono::steady_clock::now();
-  std::vector<std::thread> workers;
-  for (int lane = 0; lane < lanes; ++lane) {
-    workers.emplace_back([&] {
-      sim::PassMemo memo(std::size_t{192} << 20);  // sweep_run.cpp's kPassMemoBytes
-      for (std::size_t i = next++; i < configs.size(); i = next++) {
-        driver::run_frame(scene, driver::resolve_config(configs[i].config, device), device,
-                          threads / lanes, {}, &memo);
-      }
-      replayed += memo.stats().replayed;
-      rendered += memo.stats().rendered;
-    });
-  }
-  for (std::thread& w : workers) w.join();
+  run_lanes(lanes, [&](int) {
+    sim::PassMemo memo(driver::kPassMemoBytes);
+    for (std::size_t i = next++; i < configs.size(); i = next++) {
+      driver::run_frame(scene, driver::resolve_config(configs[i].config, device), device,
+                        threads / lanes, {}, &memo);
+    }
+    replayed += memo.stats().replayed;
+    rendered += memo.stats().rendered;
+  });
   return {std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(),
           replayed.load(), rendered.load()};
 }

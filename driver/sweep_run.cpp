@@ -108,12 +108,6 @@ void compute(const fs::path& dir, const Job& job, int frame_threads, sim::PassMe
   io::write_file_atomically((dir / config_json_path(id)).string(), to_json(stored).dump(1) + "\n");
 }
 
-// What the sweep keeps of earlier frames' passes for replay. The passes worth keeping
-// are the ones later passes sample (PassMemo::end_frame): at 2048x1536 and buffer scale 1 a
-// mobile frame's are about 42 MB (shadow map, irradiance, two blurs), so this holds those of
-// several scales and techniques without raising the sweep's peak much.
-constexpr std::size_t kPassMemoBytes = std::size_t{192} << 20;
-
 // What a configuration is expected to cost the host, for balancing shards: its output pixels
 // times its technique's measured host time per pixel (TechniqueSpec::host_ns_per_pixel).
 std::uint64_t expected_host_cost(const pipeline::PipelineConfig& resolved) {

@@ -1,13 +1,15 @@
-// Runs a sweep into a directory: one reference per (scene, resolution), configurations in
-// parallel, each written atomically to configs/<id>.json (+ frame and FLIP error-map PNGs) as it
-// finishes. Re-running the same sweep into the same directory skips the configurations whose
-// stored fingerprint still matches. A cancellation flag (set from a SIGINT handler by the CLI)
-// stops new configurations from starting; the ones in flight finish and are written.
+// Runs a sweep into a directory: one reference per (scene, resolution), then the configurations
+// one at a time, each frame on every host thread, each written atomically to configs/<id>.json
+// (+ frame and FLIP error-map PNGs) as it finishes. Re-running the same sweep into the same
+// directory skips the configurations whose stored fingerprint still matches. A cancellation
+// flag (set from a SIGINT handler by the CLI) stops new configurations from starting; the one
+// running finishes and is written.
 // With a shard (driver/sweep_shard.h) it computes only that part of the sweep, and several
 // processes may run different shards into one directory at once.
 #pragma once
 
 #include <atomic>
+#include <cstddef>
 #include <cstdio>
 #include <functional>
 #include <map>
@@ -20,6 +22,12 @@
 #include "driver/sweep_spec.h"
 
 namespace skinsim::driver {
+
+// What a sweep keeps of earlier frames' passes for replay (sim::PassMemo). The passes worth
+// keeping are the ones later passes sample (PassMemo::end_frame): at 2048x1536 and buffer
+// scale 1 a mobile frame's are about 42 MB (shadow map, irradiance, two blurs), so this holds
+// those of several scales and techniques without raising the sweep's peak much.
+inline constexpr std::size_t kPassMemoBytes = std::size_t{192} << 20;
 
 struct SweepRunOptions {
   std::string out_dir;

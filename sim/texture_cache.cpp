@@ -29,7 +29,7 @@ TextureCache::TextureCache(const TextureCacheConfig& config)
         std::to_string(config.line_bytes) + " B, " + std::to_string(config.associativity) +
         " ways do not form a cache (line must be a power of two, size a multiple of line x ways)");
   }
-  while ((1u << line_shift_) < line_bytes_) ++line_shift_;
+  line_shift_ = line_shift_of(line_bytes_);
   sets_ = config.size_bytes / (config.line_bytes * config.associativity);
   set_mask_ = is_pow2(sets_) ? sets_ - 1 : 0;
   if (config.set_index == SetIndex::kXorFold && sets_ > 1) {

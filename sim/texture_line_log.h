@@ -5,14 +5,20 @@
 // "Cores, threads and determinism").
 #pragma once
 
+#include <bit>
 #include <cstdint>
 #include <vector>
 
 namespace skinsim::sim {
 
+// log2 of a cache line's bytes, a power of two (TextureCache rejects any other size).
+inline std::uint32_t line_shift_of(std::uint32_t line_bytes) {
+  return static_cast<std::uint32_t>(std::countr_zero(line_bytes));
+}
+
 class TextureLineLog {
  public:
-  explicit TextureLineLog(std::uint32_t line_bytes = 64) : line_shift_(shift_of(line_bytes)) {}
+  explicit TextureLineLog(std::uint32_t line_bytes = 64) : line_shift_(line_shift_of(line_bytes)) {}
 
   std::uint64_t line_of(std::uint64_t address) const { return address >> line_shift_; }
   // Records a request for `line` (line_of an address). A request for the line requested just
@@ -29,11 +35,6 @@ class TextureLineLog {
   void clear() { lines_.clear(); }  // keeps the capacity for the next tile
 
  private:
-  static std::uint32_t shift_of(std::uint32_t line_bytes) {
-    std::uint32_t shift = 0;
-    while ((std::uint32_t{1} << shift) < line_bytes) ++shift;
-    return shift;
-  }
   std::uint32_t line_shift_;
   std::vector<std::uint32_t> lines_;
 };

@@ -41,10 +41,12 @@ class TileStage {
         tile_count_(static_cast<int>(c.tiles.size())),
         logs_(c.tiles.size()),
         shaded_(c.tiles.size()) {
-    // A core's tiles are every cores-th from its first: core_of_tile deals them round-robin.
     for (int core = 0; core < c.cores; ++core) {
-      cores_.push_back(std::make_unique<Core>(config.texture_cache, core));
+      cores_.push_back(std::make_unique<Core>(config.texture_cache));
     }
+    // Each core's tiles in tile order, as core_of_tile assigned them (TileCounters::core).
+    for (int tile = 0; tile < tile_count_; ++tile)
+      cores_[c.tiles[tile].core]->tiles.push_back(tile);
   }
 
   void run() {
@@ -62,10 +64,16 @@ class TileStage {
 
  private:
   struct Core {
-    Core(const TextureCacheConfig& config, int first_tile) : cache(config), next(first_tile) {}
-    TextureCache cache;  // cold at the start of the render
+    explicit Core(const TextureCacheConfig& config) : cache(config) {}
+    TextureCache cache;      // cold at the start of the render
+    std::vector<int> tiles;  // the core's tiles, in the order its cache sees them
     std::mutex replaying;
-    std::atomic<int> next;  // the core's next tile to replay
+    std::atomic<std::size_t> next{0};  // index in `tiles` of the next tile to replay
+    // The next tile to replay, if it is shaded; -1 otherwise.
+    int ready(const std::vector<std::atomic<bool>>& shaded) const {
+      const std::size_t i = next.load();
+      return i < tiles.size() && shaded[tiles[i]].load() ? tiles[i] : -1;
+    }
   };
 
   void shade(TileRenderer& renderer, int tile) {
@@ -83,18 +91,17 @@ class TileStage {
       {
         const std::unique_lock lock(k.replaying, std::try_to_lock);
         if (!lock.owns_lock()) return;  // the thread holding it replays what is ready
-        int tile = k.next.load();
-        for (; tile < tile_count_ && shaded_[tile].load(); tile += c_.cores) {
-          if (!logs_[tile]) continue;  // outside the render area
-          k.cache.replay(*logs_[tile], c_.tiles[tile].texture);
-          give_log(std::move(logs_[tile]));
+        for (int tile = k.ready(shaded_); tile >= 0; tile = k.ready(shaded_)) {
+          if (logs_[tile]) {  // none outside the render area
+            k.cache.replay(*logs_[tile], c_.tiles[tile].texture);
+            give_log(std::move(logs_[tile]));
+          }
+          ++k.next;
         }
-        k.next.store(tile);
       }
       // The next tile may have been marked shaded while this thread held the lock, by a
       // thread that then found the lock taken: replay it here rather than leave it.
-      const int tile = k.next.load();
-      if (tile >= tile_count_ || !shaded_[tile].load()) return;
+      if (k.ready(shaded_) < 0) return;
     }
   }
 
