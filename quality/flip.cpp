@@ -1,9 +1,12 @@
 // FLIP LDR, following Andersson, Nilsson, Akenine-Moller, Oskarsson, Astrom and Fairchild,
 // "FLIP: A Difference Evaluator for Alternating Images", HPG 2020, with the constants of the
 // paper and its reference implementation (github.com/NVlabs/flip). Convolutions clamp at the
-// image border (the reference's C++ code does the same).
+// image border (the reference's C++ code does the same). Like that code, FLIP here computes in
+// single precision; the per-pixel colour and error work runs on four pixels at once
+// (quality/float4.h).
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -16,6 +19,7 @@
 
 #include "quality/error.h"
 #include "quality/flip_color.h"
+#include "quality/float4.h"
 #include "quality/metric_inputs.h"
 #include "quality/metrics.h"
 #include "quality/separable_stream.h"
@@ -24,13 +28,13 @@
 namespace skinsim::quality {
 namespace {
 
-using flip_color::dvec3;
+using flip_color::Colour4;
 constexpr double kPi = std::numbers::pi;
 
 // Colour pipeline exponent and error redistribution (section 4.3): qc, pc, pt.
-constexpr double kQc = 0.7;
-constexpr double kPc = 0.4;
-constexpr double kPt = 0.95;
+constexpr float kQc = 0.7f;
+constexpr float kPc = 0.4f;
+constexpr float kPt = 0.95f;
 // Feature pipeline exponent (section 4.4) and the width of a digit, 0.082 degrees, which sets
 // the feature filters' standard deviation 0.5 * w * ppd.
 constexpr double kQf = 0.5;
@@ -159,56 +163,81 @@ class SrgbDecoder {
   SrgbDecoder() {
     for (int i = 0; i < 256; ++i) table_[i] = decode(kUnorm8Value[i]);
   }
-  double operator()(float encoded) const {
+  float operator()(float encoded) const {
     const std::optional<std::uint8_t> code = unorm8_code(encoded);
     return code ? table_[*code] : decode(encoded);
   }
 
  private:
-  static double decode(float encoded) {
-    return flip_color::srgb_to_linear(std::clamp(static_cast<double>(encoded), 0.0, 1.0));
+  // The exact value rounded to float once.
+  static float decode(float encoded) {
+    return static_cast<float>(
+        flip_color::srgb_to_linear(std::clamp(static_cast<double>(encoded), 0.0, 1.0)));
   }
-  std::array<double, 256> table_;
+  std::array<float, 256> table_;
 };
 
+// Source columns of row y: YCxCz and luminance, four pixels at a time.
 void write_source_row(const Image& image, int y, Columns columns, const SrgbDecoder& decode,
                       float* const* rows) {
   const std::size_t begin = static_cast<std::size_t>(y) * image.width;
-  for (int x = columns.begin; x < columns.end; ++x) {
-    const glm::vec3& p = image.rgb[begin + x];
-    const dvec3 linear(decode(p.r), decode(p.g), decode(p.b));
-    const dvec3 opponent = flip_color::xyz_to_ycxcz(flip_color::linear_rgb_to_xyz(linear));
-    for (int c = 0; c < 3; ++c) rows[c][x] = static_cast<float>(opponent[c]);
-    rows[kLuminance][x] = static_cast<float>((opponent.x + 16.0) / 116.0);
+  for (int x = columns.begin; x < columns.end; x += 4) {
+    const int n = std::min(4, columns.end - x);
+    Colour4 linear{};
+    for (int lane = 0; lane < n; ++lane) {
+      const glm::vec3& p = image.rgb[begin + x + lane];
+      linear.x[lane] = decode(p.r);
+      linear.y[lane] = decode(p.g);
+      linear.z[lane] = decode(p.b);
+    }
+    const Colour4 opponent = flip_color::xyz_to_ycxcz(flip_color::linear_rgb_to_xyz(linear));
+    store4(rows[0] + x, opponent.x, n);
+    store4(rows[1] + x, opponent.y, n);
+    store4(rows[2] + x, opponent.z, n);
+    store4(rows[kLuminance] + x, (opponent.x + 16.0f) / 116.0f, n);
   }
 }
 
-FlipPixel pixel_features(const ImageOutputs& o, std::span<const float* const> f, int x) {
-  dvec3 opponent(0.0);
+// Four pixels' FLIP features: Hunt-adjusted L*a*b*, edge and point strengths.
+struct FlipLanes {
+  Colour4 hunt_lab;
+  Float4 edge, point;
+};
+
+// The features of pixels [x, x + n) from the filtered rows.
+FlipLanes pixel_features(const ImageOutputs& o, std::span<const float* const> f, int x, int n) {
+  Colour4 opponent{};
+  const std::array<Float4*, 3> channel{&opponent.x, &opponent.y, &opponent.z};
   for (int c = 0; c < 3; ++c) {
-    for (const auto& [filter, share] : o.opponent[c]) opponent[c] += share * f[filter][x];
+    for (const auto& [filter, share] : o.opponent[c]) {
+      *channel[c] += static_cast<float>(share) * load4(f[filter] + x, n);
+    }
   }
-  const auto length = [](double a, double b) { return std::sqrt(a * a + b * b); };
-  return {flip_color::ycxcz_to_hunt_lab(opponent), length(f[o.edge_x][x], f[o.edge_y][x]),
-          length(f[o.point_x][x], f[o.point_y][x])};
+  const auto length = [&](int a, int b) {
+    const Float4 u = load4(f[a] + x, n), v = load4(f[b] + x, n);
+    return sqrt4(u * u + v * v);
+  };
+  return {flip_color::ycxcz_to_hunt_lab(opponent), length(o.edge_x, o.edge_y),
+          length(o.point_x, o.point_y)};
 }
 
 // Largest colour difference FLIP expects: HyAB between Hunt-adjusted green and blue, to qc.
-double max_colour_difference() {
-  const auto hunt_lab = [](const dvec3& rgb) {
-    return flip_color::hunt_adjust(flip_color::xyz_to_lab(flip_color::linear_rgb_to_xyz(rgb)));
+float max_colour_difference() {
+  const auto hunt_lab = [](float r, float g, float b) {
+    return flip_color::hunt_adjust(
+        flip_color::xyz_to_lab(flip_color::linear_rgb_to_xyz({splat(r), splat(g), splat(b)})));
   };
-  return std::pow(flip_color::hyab(hunt_lab({0, 1, 0}), hunt_lab({0, 0, 1})), kQc);
+  return pow4(flip_color::hyab(hunt_lab(0, 1, 0), hunt_lab(0, 0, 1)), splat(kQc))[0];
 }
 
-// Section 4.3's colour error of a colour difference `hyab` (HyAB in Hunt-adjusted L*a*b*)
-// where there are no edges or points: small differences compressed into [0, pt), large ones
-// into [pt, 1].
-double colour_error(double hyab, double cmax) {
-  const double colour = std::pow(hyab, kQc);
-  const double pccmax = kPc * cmax;
+// Section 4.3's colour error of a colour difference `hyab` > 0 (HyAB in Hunt-adjusted
+// L*a*b*) where there are no edges or points: small differences compressed into [0, pt), large
+// ones into [pt, 1].
+Float4 colour_error(Float4 hyab, float cmax) {
+  const Float4 colour = pow4(hyab, splat(kQc));
+  const float pccmax = kPc * cmax;
   return colour < pccmax ? kPt / pccmax * colour
-                         : kPt + (colour - pccmax) / (cmax - pccmax) * (1.0 - kPt);
+                         : kPt + (colour - pccmax) / (cmax - pccmax) * (1.0f - kPt);
 }
 
 }  // namespace
@@ -216,8 +245,8 @@ double colour_error(double hyab, double cmax) {
 double flip_visibility_threshold() {
   // One just-noticeable difference of lightness, Delta E*ab = 2.3 (Mahy, Van Eycken and
   // Oosterlinck 1994, as Sharma 2003 quotes it); a pure lightness step has HyAB = |Delta L*|.
-  constexpr double kJndDeltaE = 2.3;
-  return colour_error(kJndDeltaE, max_colour_difference());
+  constexpr float kJndDeltaE = 2.3f;
+  return colour_error(splat(kJndDeltaE), max_colour_difference())[0];
 }
 
 double flip_visible_area_pixels(const FlipParams& params) {
@@ -239,15 +268,15 @@ double checked_pixels_per_degree(const FlipParams& params) {
   return params.pixels_per_degree;
 }
 
-// Section 4.5: the colour error of two pixels, amplified by their feature difference.
-float pixel_error(const FlipPixel& t, const FlipPixel& r, double cmax) {
-  const double distance = flip_color::hyab(t.hunt_lab, r.hunt_lab);
-  if (distance == 0.0) return 0.0f;  // no colour difference: the error is 0 whatever the features
-  const double colour = colour_error(distance, cmax);
-  const double feature_difference =
-      std::max(std::abs(t.edge - r.edge), std::abs(t.point - r.point));
-  const double feature_error = std::sqrt(feature_difference / std::numbers::sqrt2);  // ^qf
-  return static_cast<float>(std::pow(colour, 1.0 - feature_error));
+// Section 4.5: the colour error of two pixels, amplified by their feature difference; four
+// pairs at once.
+Float4 pixel_error(const FlipLanes& t, const FlipLanes& r, float cmax) {
+  const Float4 distance = flip_color::hyab(t.hunt_lab, r.hunt_lab);
+  const Float4 feature_difference = max4(abs4(t.edge - r.edge), abs4(t.point - r.point));
+  const Float4 feature_error = sqrt4(feature_difference / std::numbers::sqrt2_v<float>);  // ^qf
+  const Float4 error = pow4(colour_error(distance, cmax), 1.0f - feature_error);
+  // No colour difference: the error is 0 whatever the features.
+  return distance == 0.0f ? splat(0.0f) : error;
 }
 
 // Which pixels of `a` may differ from `b` after filters `radius` wide: those with a pixel
@@ -272,13 +301,20 @@ NearDifferences near_differences(const Image& a, const Image& b, int radius) {
   });
   NearDifferences near{std::vector<std::uint8_t>(a.pixel_count(), 0),
                        std::vector<Columns>(static_cast<std::size_t>(h))};
-  tbb::parallel_for(0, w, [&](int x) {
-    int last = -radius - 1;
+  // Down the rows in strips of columns, so that each step reads and writes a row's run of
+  // bytes rather than one byte a row apart.
+  constexpr int kStrip = 256;
+  tbb::parallel_for(0, (w + kStrip - 1) / kStrip, [&](int strip) {
+    const int x0 = strip * kStrip, x1 = std::min(w, x0 + kStrip);
+    std::vector<int> last(static_cast<std::size_t>(x1 - x0), -radius - 1);
     for (int y = 0; y < h + radius; ++y) {
-      if (y < h && across[static_cast<std::size_t>(y) * w + x]) last = y;
-      if (y - radius >= 0 && last >= y - 2 * radius) {
-        near.mask[static_cast<std::size_t>(y - radius) * w + x] = 1;
+      if (y < h) {
+        const std::uint8_t* row = &across[static_cast<std::size_t>(y) * w];
+        for (int x = x0; x < x1; ++x) last[x - x0] = row[x] ? y : last[x - x0];
       }
+      if (y - radius < 0) continue;
+      std::uint8_t* out = &near.mask[static_cast<std::size_t>(y - radius) * w];
+      for (int x = x0; x < x1; ++x) out[x] = last[x - x0] >= y - 2 * radius ? 1 : 0;
     }
   });
   tbb::parallel_for(0, h, [&](int y) {
@@ -291,9 +327,11 @@ NearDifferences near_differences(const Image& a, const Image& b, int radius) {
   return near;
 }
 
-// Streams `images` (one or two) through their filters and hands `sink` the FLIP pixels:
-// sink(y, x, pixel of images[0], pixel of images[1] or nullptr). With `unchanged_from`, only
-// pixels near a difference between images[0] and it (near_differences) reach the sink.
+// Streams `images` (one or two) through their filters and hands `sink` the FLIP pixels four at
+// a time: sink(i, n, keep, lanes of images[0], lanes of images[1] or nullptr) for pixels
+// [i, i + n) (row-major indices, n <= 4, in one row). With `unchanged_from`, `keep` is -1 in
+// the lanes of pixels near a difference between images[0] and it (near_differences), 0
+// elsewhere, and groups without such a pixel are skipped; without, every lane is -1.
 template <class Sink>
 void stream_flip_pixels(std::span<const Image* const> images, double ppd,
                         const Image* unchanged_from, const Sink& sink) {
@@ -323,14 +361,24 @@ void stream_flip_pixels(std::span<const Image* const> images, double ppd,
   };
   const auto row_sink = [&](int y, Columns columns, std::span<const float* const> filtered) {
     const std::size_t row = static_cast<std::size_t>(y) * stream.width;
-    for (int x = columns.begin; x < columns.end; ++x) {
-      if (!near.empty() && !near[row + x]) continue;
-      const FlipPixel first = pixel_features(outputs[0], filtered, x);
+    for (int x = columns.begin; x < columns.end; x += 4) {
+      const int n = std::min(4, columns.end - x);
+      Int4 keep = {-1, -1, -1, -1};
+      if (!near.empty()) {
+        bool any = false;
+        for (int lane = 0; lane < 4; ++lane) {
+          const bool wanted = lane < n && near[row + x + lane];
+          keep[lane] = wanted ? -1 : 0;
+          any = any || wanted;
+        }
+        if (!any) continue;
+      }
+      const FlipLanes first = pixel_features(outputs[0], filtered, x, n);
       if (count == 1) {
-        sink(y, x, first, nullptr);
+        sink(row + x, n, keep, first, nullptr);
       } else {
-        const FlipPixel second = pixel_features(outputs[1], filtered, x);
-        sink(y, x, first, &second);
+        const FlipLanes second = pixel_features(outputs[1], filtered, x, n);
+        sink(row + x, n, keep, first, &second);
       }
     }
   };
@@ -342,15 +390,14 @@ void stream_flip_pixels(std::span<const Image* const> images, double ppd,
 FlipResult flip(const Image& test, const Image& reference, const Mask* mask,
                 const FlipParams& params) {
   check_metric_inputs("FLIP", test, reference, mask);
-  const double cmax = max_colour_difference();
+  const float cmax = max_colour_difference();
   FlipResult result;
   result.map = ScalarMap{test.width, test.height, std::vector<float>(test.pixel_count())};
   const std::array<const Image*, 2> images{&test, &reference};
   // The map starts at 0, the error wherever the images do not differ nearby.
   stream_flip_pixels(images, checked_pixels_per_degree(params), &reference,
-                     [&](int y, int x, const FlipPixel& t, const FlipPixel* r) {
-                       result.map.values[static_cast<std::size_t>(y) * test.width + x] =
-                           pixel_error(t, *r, cmax);
+                     [&](std::size_t i, int n, Int4 keep, const FlipLanes& t, const FlipLanes* r) {
+                       store4(&result.map.values[i], keep ? pixel_error(t, *r, cmax) : 0.0f, n);
                      });
   result.mean = masked_mean(result.map.values, test.width, test.height, mask);
   return result;
@@ -359,11 +406,15 @@ FlipResult flip(const Image& test, const Image& reference, const Mask* mask,
 FlipFeatures::FlipFeatures(const Image& image, const FlipParams& params)
     : image_(image), params_(params) {
   check_metric_inputs("FLIP", image, image, nullptr);
-  pixels_.resize(image.pixel_count());
+  for (std::vector<float>& plane : planes_) plane.resize(image.pixel_count());
   const std::array<const Image*, 1> images{&image};
   stream_flip_pixels(images, checked_pixels_per_degree(params), nullptr,
-                     [&](int y, int x, const FlipPixel& p, const FlipPixel*) {
-                       pixels_[static_cast<std::size_t>(y) * image_.width + x] = p;
+                     [&](std::size_t i, int n, Int4, const FlipLanes& p, const FlipLanes*) {
+                       store4(&planes_[kLightness][i], p.hunt_lab.x, n);
+                       store4(&planes_[kA][i], p.hunt_lab.y, n);
+                       store4(&planes_[kB][i], p.hunt_lab.z, n);
+                       store4(&planes_[kEdge][i], p.edge, n);
+                       store4(&planes_[kPoint][i], p.point, n);
                      });
 }
 
@@ -375,15 +426,20 @@ FlipResult flip(const Image& test, const FlipFeatures& reference, const Mask* ma
                        std::to_string(reference.width()) + "x" +
                        std::to_string(reference.height()));
   }
-  const double cmax = max_colour_difference();
+  const float cmax = max_colour_difference();
   FlipResult result;
   result.map = ScalarMap{test.width, test.height, std::vector<float>(test.pixel_count())};
   const std::array<const Image*, 1> images{&test};
-  stream_flip_pixels(images, checked_pixels_per_degree(reference.params()), &reference.image(),
-                     [&](int y, int x, const FlipPixel& t, const FlipPixel*) {
-                       const std::size_t i = static_cast<std::size_t>(y) * test.width + x;
-                       result.map.values[i] = pixel_error(t, reference.at(i), cmax);
-                     });
+  stream_flip_pixels(
+      images, checked_pixels_per_degree(reference.params()), &reference.image(),
+      [&](std::size_t i, int n, Int4 keep, const FlipLanes& t, const FlipLanes*) {
+        const auto lanes = [&](FlipFeatures::Plane p) { return load4(reference.plane(p) + i, n); };
+        const FlipLanes r{
+            {lanes(FlipFeatures::kLightness), lanes(FlipFeatures::kA), lanes(FlipFeatures::kB)},
+            lanes(FlipFeatures::kEdge),
+            lanes(FlipFeatures::kPoint)};
+        store4(&result.map.values[i], keep ? pixel_error(t, r, cmax) : 0.0f, n);
+      });
   result.mean = masked_mean(result.map.values, test.width, test.height, mask);
   return result;
 }

@@ -4,6 +4,7 @@
 // a fixed order. Bad input (size mismatch, empty mask, NaN) throws QualityError.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <glm/vec3.hpp>
 #include <vector>
@@ -47,30 +48,25 @@ struct FlipResult {
 FlipResult flip(const Image& test, const Image& reference, const Mask* mask = nullptr,
                 const FlipParams& params = {});
 
-// What FLIP derives from one of its two images per pixel: the filtered colour in
-// Hunt-adjusted L*a*b*, and the edge and point strengths.
-struct FlipPixel {
-  glm::dvec3 hunt_lab{0.0};
-  double edge = 0.0;
-  double point = 0.0;
-};
-
-// An image's FLIP pixels, computed once to compare many images with it (a sweep's reference,
-// the best frame of a group): flip(test, FlipFeatures(reference)) equals flip(test,
-// reference) to the last bit and filters only the test image. 52 bytes a pixel.
+// An image's FLIP pixels (what FLIP derives from one of its two images per pixel: the
+// filtered colour in Hunt-adjusted L*a*b* and the edge and point strengths), computed once to
+// compare many images with it (a sweep's reference, the best frame of a group):
+// flip(test, FlipFeatures(reference)) equals flip(test, reference) to the last bit and filters
+// only the test image. 32 bytes a pixel: the image and five float planes.
 class FlipFeatures {
  public:
+  enum Plane { kLightness, kA, kB, kEdge, kPoint, kPlanes };
   explicit FlipFeatures(const Image& image, const FlipParams& params = {});
   int width() const { return image_.width; }
   int height() const { return image_.height; }
   const Image& image() const { return image_; }  // kept: where a test equals it, error is 0
   const FlipParams& params() const { return params_; }
-  const FlipPixel& at(std::size_t pixel) const { return pixels_[pixel]; }
+  const float* plane(Plane p) const { return planes_[p].data(); }
 
  private:
   Image image_;
   FlipParams params_;
-  std::vector<FlipPixel> pixels_;
+  std::array<std::vector<float>, kPlanes> planes_;
 };
 
 FlipResult flip(const Image& test, const FlipFeatures& reference, const Mask* mask = nullptr);
