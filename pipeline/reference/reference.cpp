@@ -265,7 +265,16 @@ class Diffusion {
     for (std::size_t k = 0; k < (four_full ? kWide : kCount); ++k) {
       diffused[k] = convolve(x, y, p, grids[k]);
     }
-    if (four_full) convolve_four(x, y, p, &grids[kWide], &diffused[kWide]);
+    if (four_full) {
+      const bool inside = std::all_of(grids.begin() + kWide, grids.end(), [](const Grid& g) {
+        return g.i_begin == 0 && g.i_end == kMaxTaps && g.j_begin == 0 && g.j_end == kMaxTaps;
+      });
+      if (inside) {
+        convolve_four<true>(x, y, p, &grids[kWide], &diffused[kWide]);
+      } else {
+        convolve_four<false>(x, y, p, &grids[kWide], &diffused[kWide]);
+      }
+    }
     glm::vec3 result(0.0f);
     for (std::size_t k = 0; k < kCount; ++k) result += gaussians[k].weight * diffused[k];
     return result;
@@ -331,6 +340,9 @@ class Diffusion {
   // lookup is at4). A tap outside a lane's image runs, or on a sample that is not skin, adds
   // a weight of +0, which leaves the lane's non-negative sums exactly as skipping it would:
   // the four results equal convolve()'s to the last bit, at about half the time.
+  // kInside: every tap of the four grids is inside the image (pixels at least three of the
+  // widest sigmas from its borders, most of them), so no tap needs the lanes' runs checked.
+  template <bool kInside>
   void convolve_four(int x, int y, const glm::vec3& p, const Grid* grids, glm::vec3* out) const {
     const Sample& centre = samples_[static_cast<std::size_t>(y) * width_ + x];
     const __m128 inv_two_variance =
@@ -344,18 +356,22 @@ class Diffusion {
       std::array<const Sample*, 4> rows{};
       for (int lane = 0; lane < 4; ++lane) {
         const Grid& g = grids[lane];
-        if (j >= g.j_begin && j < g.j_end) {
+        if (kInside || (j >= g.j_begin && j < g.j_end)) {
           rows[lane] = &samples_[static_cast<std::size_t>(y + g.offset[j]) * width_ + x];
         }
       }
       for (int i = 0; i < kMaxTaps; ++i) {
         std::array<const Sample*, 4> tap{};
-        alignas(16) std::array<std::uint32_t, 4> inside{};
+        alignas(16) std::array<std::uint32_t, 4> inside{~0u, ~0u, ~0u, ~0u};
         for (int lane = 0; lane < 4; ++lane) {
           const Grid& g = grids[lane];
-          const bool in = rows[lane] != nullptr && i >= g.i_begin && i < g.i_end;
-          tap[lane] = in ? rows[lane] + g.offset[i] : &centre;
-          inside[lane] = in ? ~0u : 0u;
+          if constexpr (kInside) {
+            tap[lane] = rows[lane] + g.offset[i];
+          } else {
+            const bool in = rows[lane] != nullptr && i >= g.i_begin && i < g.i_end;
+            tap[lane] = in ? rows[lane] + g.offset[i] : &centre;
+            inside[lane] = in ? ~0u : 0u;
+          }
         }
         __m128 pos0 = _mm_load_ps(&tap[0]->position.x), pos1 = _mm_load_ps(&tap[1]->position.x);
         __m128 pos2 = _mm_load_ps(&tap[2]->position.x), pos3 = _mm_load_ps(&tap[3]->position.x);
@@ -367,9 +383,12 @@ class Diffusion {
         const __m128 dz = _mm_sub_ps(pos2, pz);
         const __m128 dd =
             _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz));
-        const __m128 counted = _mm_and_ps(
-            _mm_castsi128_ps(_mm_load_si128(reinterpret_cast<const __m128i*>(inside.data()))),
-            _mm_cmpeq_ps(pos3, skin));
+        const __m128 is_skin = _mm_cmpeq_ps(pos3, skin);
+        const __m128 counted =
+            kInside ? is_skin
+                    : _mm_and_ps(_mm_castsi128_ps(_mm_load_si128(
+                                     reinterpret_cast<const __m128i*>(inside.data()))),
+                                 is_skin);
         const __m128 g = _mm_and_ps(counted, exp_neg_.at4(_mm_mul_ps(dd, inv_two_variance)));
         sum_x = _mm_add_ps(sum_x, _mm_mul_ps(g, e0));
         sum_y = _mm_add_ps(sum_y, _mm_mul_ps(g, e1));
