@@ -25,6 +25,21 @@ bool FlipStatistics::visible(const FlipParams& params) const {
   return static_cast<double>(visible_pixels) >= flip_visible_area_pixels(params);
 }
 
+namespace {
+
+std::size_t count_visible(const std::vector<float>& values) {
+  const float threshold = static_cast<float>(flip_visibility_threshold());
+  std::size_t visible = 0;
+  for (const float v : values) visible += v > threshold ? 1 : 0;
+  return visible;
+}
+
+}  // namespace
+
+std::size_t flip_visible_pixels(const ScalarMap& map) {
+  return count_visible(map.values);
+}
+
 FlipStatistics flip_statistics(const ScalarMap& map, const Mask* mask) {
   if (mask && (mask->width != map.width || mask->height != map.height)) {
     throw QualityError("FLIP statistics: mask and map sizes differ");
@@ -37,8 +52,7 @@ FlipStatistics flip_statistics(const ScalarMap& map, const Mask* mask) {
   FlipStatistics s;
   s.pixels = values.size();
   if (values.empty()) return s;
-  const float threshold = static_cast<float>(flip_visibility_threshold());
-  for (const float v : values) s.visible_pixels += v > threshold ? 1 : 0;
+  s.visible_pixels = count_visible(values);
   s.mean = masked_mean(map.values, map.width, map.height, mask);  // as FlipResult::mean
   // The percentiles by selection, not a full sort (the same values in linear time): after the
   // first selection every value from p95's place on is at least p95, so p99's is among them.

@@ -1,5 +1,9 @@
 #include "quality/metric_inputs.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <atomic>
 #include <cmath>
 #include <string>
 
@@ -21,13 +25,30 @@ void check_image(std::string_view metric, std::string_view role, const Image& im
     throw QualityError(where + " holds " + std::to_string(image.rgb.size()) +
                        " pixels but is declared " + size_text(image.width, image.height));
   }
-  for (std::size_t i = 0; i < image.rgb.size(); ++i) {
-    const glm::vec3& p = image.rgb[i];
-    if (!std::isfinite(p.r) || !std::isfinite(p.g) || !std::isfinite(p.b)) {
-      throw QualityError(where + " has a non-finite value at pixel (" +
-                         std::to_string(i % image.width) + ", " + std::to_string(i / image.width) +
-                         ")");
-    }
+  // Every metric checks both its images: on every thread, and branch-free until a block
+  // holds a non-finite value.
+  std::atomic<std::size_t> first_bad = image.rgb.size();
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, image.rgb.size(), std::size_t{1} << 16),
+                    [&](const tbb::blocked_range<std::size_t>& pixels) {
+                      bool finite = true;
+                      for (std::size_t i = pixels.begin(); i < pixels.end(); ++i) {
+                        const glm::vec3& p = image.rgb[i];
+                        finite &= std::isfinite(p.r) & std::isfinite(p.g) & std::isfinite(p.b);
+                      }
+                      if (finite) return;
+                      std::size_t i = pixels.begin();
+                      while (std::isfinite(image.rgb[i].r) && std::isfinite(image.rgb[i].g) &&
+                             std::isfinite(image.rgb[i].b)) {
+                        ++i;
+                      }
+                      std::size_t seen = first_bad.load();
+                      while (i < seen && !first_bad.compare_exchange_weak(seen, i)) {
+                      }
+                    });
+  if (const std::size_t i = first_bad.load(); i < image.rgb.size()) {
+    throw QualityError(where + " has a non-finite value at pixel (" +
+                       std::to_string(i % image.width) + ", " + std::to_string(i / image.width) +
+                       ")");
   }
 }
 

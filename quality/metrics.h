@@ -92,5 +92,7 @@ struct FlipStatistics {
   bool visible(const FlipParams& params = {}) const;  // visible_pixels >= the area above
 };
 FlipStatistics flip_statistics(const ScalarMap& map, const Mask* mask = nullptr);
+// flip_statistics(map).visible_pixels alone, without the percentiles' selection.
+std::size_t flip_visible_pixels(const ScalarMap& map);
 
 }  // namespace skinsim::quality

@@ -3,6 +3,7 @@
 #include <xxhash.h>
 
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <memory>
 #include <stdexcept>
@@ -176,16 +177,17 @@ PassMemo::StoredPixels PassMemo::pack(const RenderTarget& target) {
   StoredPixels s;
   if (target.format == TexelFormat::kRGBA8) {
     // A stored RGBA8 value is one of the 256 (quantize); a value that is not (one the host
-    // wrote) keeps the target in floats.
+    // wrote) keeps the target in floats. On every thread: the final pass's target is packed in
+    // every frame.
     s.unorm8.resize(target.pixels.size() * 4);
-    bool exact = true;
-    for (std::size_t i = 0; i < target.pixels.size() && exact; ++i) {
-      for (int c = 0; c < 4 && exact; ++c) {
+    std::atomic<bool> exact = true;
+    for_each_pixel(target.pixels.size(), [&](std::size_t i) {
+      for (int c = 0; c < 4; ++c) {
         const std::optional<std::uint8_t> k = unorm8_code(target.pixels[i][c]);
-        exact = k.has_value();
+        if (!k) exact.store(false, std::memory_order_relaxed);
         s.unorm8[i * 4 + c] = k.value_or(0);
       }
-    }
+    });
     if (exact) return s;
     s.unorm8 = {};
   }
@@ -193,13 +195,15 @@ PassMemo::StoredPixels PassMemo::pack(const RenderTarget& target) {
     // quantize() stores depth in red and 0 in the rest; a bit pattern other than +0 (one the
     // host wrote) keeps the target in floats.
     s.depth.resize(target.pixels.size());
-    bool exact = true;
-    for (std::size_t i = 0; i < target.pixels.size() && exact; ++i) {
+    std::atomic<bool> exact = true;
+    for_each_pixel(target.pixels.size(), [&](std::size_t i) {
       const glm::vec4& p = target.pixels[i];
-      exact = std::bit_cast<std::uint32_t>(p.y) == 0 && std::bit_cast<std::uint32_t>(p.z) == 0 &&
-              std::bit_cast<std::uint32_t>(p.w) == 0;
+      if (std::bit_cast<std::uint32_t>(p.y) != 0 || std::bit_cast<std::uint32_t>(p.z) != 0 ||
+          std::bit_cast<std::uint32_t>(p.w) != 0) {
+        exact.store(false, std::memory_order_relaxed);
+      }
       s.depth[i] = p.x;
-    }
+    });
     if (exact) return s;
     s.depth = {};
   }
