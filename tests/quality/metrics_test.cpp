@@ -406,6 +406,16 @@ TEST(Metrics, BadInputNamesTheProblem) {
   } catch (const QualityError& e) {
     EXPECT_NE(std::string(e.what()).find("(3, 4)"), std::string::npos) << e.what();
   }
+  // Over several blocks of pixels checked in parallel, the first bad pixel is named.
+  Image large = Image::filled(300, 300, glm::vec3(0.5f));
+  large.at(10, 250).b = std::numeric_limits<float>::infinity();
+  large.at(200, 5).r = -std::numeric_limits<float>::infinity();
+  try {
+    psnr(large, Image::filled(300, 300, glm::vec3(0.5f)));
+    FAIL() << "infinity accepted";
+  } catch (const QualityError& e) {
+    EXPECT_NE(std::string(e.what()).find("(200, 5)"), std::string::npos) << e.what();
+  }
   Image truncated = a;
   truncated.rgb.pop_back();
   EXPECT_THROW(psnr(truncated, a), QualityError);
