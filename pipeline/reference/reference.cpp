@@ -242,7 +242,7 @@ class Diffusion {
         units_per_mm_(units_per_mm) {
     for (std::size_t i = 0; i < samples_.size(); ++i) {
       const glm::vec4& q = g.position.pixels[i];
-      samples_[i] = {glm::vec3(q), q.w, irradiance[i]};
+      samples_[i] = {glm::vec3(q), q.w, irradiance[i], 1.0f};
     }
   }
 
@@ -317,22 +317,46 @@ class Diffusion {
     return g;
   }
 
+  // One Gaussian's M_i(p): the skin taps' weights g = exp(-|x_q - x_p|^2 / 2 sigma^2) and the
+  // sums of g E(q) and of g, taken tap by tap along each grid row (j outer, i inner). The
+  // weights of four taps are computed at once (at4, glm::dot's (x*x + y*y) + z*z), and each
+  // tap then adds g * (r, g, b, 1) to one register holding the three sums and the weight sum:
+  // per lane the scalar sum += g * E and weight += g in the same order. A tap that is not
+  // skin weighs +0 and adds +0 (E is finite), leaving the non-negative sums as skipping it.
   glm::vec3 convolve(int x, int y, const glm::vec3& p, const Grid& grid) const {
-    if (grid.centre_only) return samples_[static_cast<size_t>(y) * width_ + x].irradiance;
-    glm::vec3 sum(0.0f);
-    float weight_sum = 0.0f;
+    const Sample& centre = samples_[static_cast<std::size_t>(y) * width_ + x];
+    if (grid.centre_only) return centre.irradiance;
+    const __m128 px = _mm_set1_ps(p.x), py = _mm_set1_ps(p.y), pz = _mm_set1_ps(p.z);
+    const __m128 inv_two_variance = _mm_set1_ps(grid.inv_two_variance);
+    const __m128 skin = _mm_set1_ps(reference::kKindSkin);
+    __m128 sums = _mm_setzero_ps();  // r, g, b, weight
     for (int j = grid.j_begin; j < grid.j_end; ++j) {
       const Sample* row = &samples_[static_cast<std::size_t>(y + grid.offset[j]) * width_ + x];
-      for (int i = grid.i_begin; i < grid.i_end; ++i) {
-        const Sample& q = row[grid.offset[i]];
-        if (q.kind != reference::kKindSkin) continue;
-        const glm::vec3 d = q.position - p;
-        const float g = exp_neg_.at(glm::dot(d, d) * grid.inv_two_variance);
-        sum += g * q.irradiance;
-        weight_sum += g;
+      for (int i = grid.i_begin; i < grid.i_end; i += 4) {
+        const int taps = std::min(4, grid.i_end - i);
+        std::array<const Sample*, 4> tap{};
+        for (int lane = 0; lane < 4; ++lane) {
+          tap[lane] = lane < taps ? row + grid.offset[i + lane] : &centre;
+        }
+        __m128 pos0 = _mm_load_ps(&tap[0]->position.x), pos1 = _mm_load_ps(&tap[1]->position.x);
+        __m128 pos2 = _mm_load_ps(&tap[2]->position.x), pos3 = _mm_load_ps(&tap[3]->position.x);
+        _MM_TRANSPOSE4_PS(pos0, pos1, pos2, pos3);  // x, y, z, kind of the four taps
+        const __m128 dx = _mm_sub_ps(pos0, px), dy = _mm_sub_ps(pos1, py);
+        const __m128 dz = _mm_sub_ps(pos2, pz);
+        const __m128 dd =
+            _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz));
+        alignas(16) std::array<float, 4> g;
+        _mm_store_ps(g.data(), _mm_and_ps(_mm_cmpeq_ps(pos3, skin),
+                                          exp_neg_.at4(_mm_mul_ps(dd, inv_two_variance))));
+        for (int lane = 0; lane < taps; ++lane) {
+          sums = _mm_add_ps(
+              sums, _mm_mul_ps(_mm_set1_ps(g[lane]), _mm_load_ps(&tap[lane]->irradiance.x)));
+        }
       }
     }
-    return sum / weight_sum;  // the centre sample has weight 1
+    alignas(16) std::array<float, 4> s;
+    _mm_store_ps(s.data(), sums);
+    return glm::vec3(s[0], s[1], s[2]) / s[3];  // the centre sample has weight 1
   }
 
   // convolve() of four full grids at once, one SSE lane each. Every lane does the scalar
@@ -411,6 +435,7 @@ class Diffusion {
     glm::vec3 position;
     float kind;
     glm::vec3 irradiance;
+    float one;  // irradiance and one load as (r, g, b, 1): convolve() sums weights with light
   };
 
   const ExpNegTable exp_neg_;
