@@ -318,17 +318,15 @@ class Diffusion {
   }
 
   // One Gaussian's M_i(p): the skin taps' weights g = exp(-|x_q - x_p|^2 / 2 sigma^2) and the
-  // sums of g E(q) and of g, taken tap by tap along each grid row (j outer, i inner). The
-  // weights of four taps are computed at once (at4, glm::dot's (x*x + y*y) + z*z), and each
-  // tap then adds g * (r, g, b, 1) to one register holding the three sums and the weight sum:
-  // per lane the scalar sum += g * E and weight += g in the same order. A tap that is not
-  // skin weighs +0 and adds +0 (E is finite), leaving the non-negative sums as skipping it.
+  // sums of g E(q) and of g, taken tap by tap along each grid row (j outer, i inner). Four
+  // taps' weights are computed at once (tap_weights); each tap then adds g * (r, g, b, 1) to
+  // one register holding the three sums and the weight sum, so each lane is the sum of its
+  // terms in tap order. A tap that is not skin weighs +0 and adds +0 (E is finite), which
+  // leaves the non-negative sums as skipping it would.
   glm::vec3 convolve(int x, int y, const glm::vec3& p, const Grid& grid) const {
     const Sample& centre = samples_[static_cast<std::size_t>(y) * width_ + x];
     if (grid.centre_only) return centre.irradiance;
-    const __m128 px = _mm_set1_ps(p.x), py = _mm_set1_ps(p.y), pz = _mm_set1_ps(p.z);
     const __m128 inv_two_variance = _mm_set1_ps(grid.inv_two_variance);
-    const __m128 skin = _mm_set1_ps(reference::kKindSkin);
     __m128 sums = _mm_setzero_ps();  // r, g, b, weight
     for (int j = grid.j_begin; j < grid.j_end; ++j) {
       const Sample* row = &samples_[static_cast<std::size_t>(y + grid.offset[j]) * width_ + x];
@@ -338,16 +336,8 @@ class Diffusion {
         for (int lane = 0; lane < 4; ++lane) {
           tap[lane] = lane < taps ? row + grid.offset[i + lane] : &centre;
         }
-        __m128 pos0 = _mm_load_ps(&tap[0]->position.x), pos1 = _mm_load_ps(&tap[1]->position.x);
-        __m128 pos2 = _mm_load_ps(&tap[2]->position.x), pos3 = _mm_load_ps(&tap[3]->position.x);
-        _MM_TRANSPOSE4_PS(pos0, pos1, pos2, pos3);  // x, y, z, kind of the four taps
-        const __m128 dx = _mm_sub_ps(pos0, px), dy = _mm_sub_ps(pos1, py);
-        const __m128 dz = _mm_sub_ps(pos2, pz);
-        const __m128 dd =
-            _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz));
         alignas(16) std::array<float, 4> g;
-        _mm_store_ps(g.data(), _mm_and_ps(_mm_cmpeq_ps(pos3, skin),
-                                          exp_neg_.at4(_mm_mul_ps(dd, inv_two_variance))));
+        _mm_store_ps(g.data(), tap_weights(tap, p, inv_two_variance));
         for (int lane = 0; lane < taps; ++lane) {
           sums = _mm_add_ps(
               sums, _mm_mul_ps(_mm_set1_ps(g[lane]), _mm_load_ps(&tap[lane]->irradiance.x)));
@@ -372,8 +362,6 @@ class Diffusion {
     const __m128 inv_two_variance =
         _mm_setr_ps(grids[0].inv_two_variance, grids[1].inv_two_variance, grids[2].inv_two_variance,
                     grids[3].inv_two_variance);
-    const __m128 px = _mm_set1_ps(p.x), py = _mm_set1_ps(p.y), pz = _mm_set1_ps(p.z);
-    const __m128 skin = _mm_set1_ps(reference::kKindSkin);
     __m128 sum_x = _mm_setzero_ps(), sum_y = _mm_setzero_ps(), sum_z = _mm_setzero_ps();
     __m128 weight_sum = _mm_setzero_ps();
     for (int j = 0; j < kMaxTaps; ++j) {
@@ -397,23 +385,14 @@ class Diffusion {
             inside[lane] = in ? ~0u : 0u;
           }
         }
-        __m128 pos0 = _mm_load_ps(&tap[0]->position.x), pos1 = _mm_load_ps(&tap[1]->position.x);
-        __m128 pos2 = _mm_load_ps(&tap[2]->position.x), pos3 = _mm_load_ps(&tap[3]->position.x);
-        _MM_TRANSPOSE4_PS(pos0, pos1, pos2, pos3);  // x, y, z, kind of the four taps
         __m128 e0 = _mm_load_ps(&tap[0]->irradiance.x), e1 = _mm_load_ps(&tap[1]->irradiance.x);
         __m128 e2 = _mm_load_ps(&tap[2]->irradiance.x), e3 = _mm_load_ps(&tap[3]->irradiance.x);
-        _MM_TRANSPOSE4_PS(e0, e1, e2, e3);  // r, g, b, padding
-        const __m128 dx = _mm_sub_ps(pos0, px), dy = _mm_sub_ps(pos1, py);
-        const __m128 dz = _mm_sub_ps(pos2, pz);
-        const __m128 dd =
-            _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz));
-        const __m128 is_skin = _mm_cmpeq_ps(pos3, skin);
-        const __m128 counted =
-            kInside ? is_skin
-                    : _mm_and_ps(_mm_castsi128_ps(_mm_load_si128(
-                                     reinterpret_cast<const __m128i*>(inside.data()))),
-                                 is_skin);
-        const __m128 g = _mm_and_ps(counted, exp_neg_.at4(_mm_mul_ps(dd, inv_two_variance)));
+        _MM_TRANSPOSE4_PS(e0, e1, e2, e3);  // r, g, b, 1
+        __m128 g = tap_weights(tap, p, inv_two_variance);
+        if constexpr (!kInside) {
+          g = _mm_and_ps(
+              _mm_castsi128_ps(_mm_load_si128(reinterpret_cast<const __m128i*>(inside.data()))), g);
+        }
         sum_x = _mm_add_ps(sum_x, _mm_mul_ps(g, e0));
         sum_y = _mm_add_ps(sum_y, _mm_mul_ps(g, e1));
         sum_z = _mm_add_ps(sum_z, _mm_mul_ps(g, e2));
@@ -437,6 +416,21 @@ class Diffusion {
     glm::vec3 irradiance;
     float one;  // irradiance and one load as (r, g, b, 1): convolve() sums weights with light
   };
+
+  // The weights of four taps, one lane each: exp(-|x_q - p|^2 inv_two_variance) by at4
+  // (glm::dot's order, (x*x + y*y) + z*z), and +0 where the tap is not skin.
+  __m128 tap_weights(const std::array<const Sample*, 4>& tap, const glm::vec3& p,
+                     __m128 inv_two_variance) const {
+    __m128 pos0 = _mm_load_ps(&tap[0]->position.x), pos1 = _mm_load_ps(&tap[1]->position.x);
+    __m128 pos2 = _mm_load_ps(&tap[2]->position.x), pos3 = _mm_load_ps(&tap[3]->position.x);
+    _MM_TRANSPOSE4_PS(pos0, pos1, pos2, pos3);  // x, y, z, kind of the four taps
+    const __m128 dx = _mm_sub_ps(pos0, _mm_set1_ps(p.x)), dy = _mm_sub_ps(pos1, _mm_set1_ps(p.y));
+    const __m128 dz = _mm_sub_ps(pos2, _mm_set1_ps(p.z));
+    const __m128 dd =
+        _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz));
+    return _mm_and_ps(_mm_cmpeq_ps(pos3, _mm_set1_ps(reference::kKindSkin)),
+                      exp_neg_.at4(_mm_mul_ps(dd, inv_two_variance)));
+  }
 
   const ExpNegTable exp_neg_;
   int width_, height_;
