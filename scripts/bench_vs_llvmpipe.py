@@ -10,8 +10,10 @@ count, two llvmpipe anchors (rendering only):
   (../shared/anchors/llvmpipe/README.md), when it was built.
 It alternates them ROUNDS times so that a noisy shared machine slows all alike, and prints
 each one's median and the ratio skinsim / replay.
-Host threads beyond the device's emulated cores (4 on the iPad 4) are not used by skinsim
-(docs/performance.md says why), so counts above that measure llvmpipe's scaling alone.
+Both use every host thread they are given: skinsim's tiles shade on any thread and each
+emulated core's texture cache replays its tiles' requests in order (docs/performance.md,
+"Host threads beyond the emulated cores"). BUILD_DIR may be a profile-guided build
+(scripts/build-pgo.sh) holding gles_replay and llvmpipe_skinbench, or links to them.
 
 Usage: scripts/bench_vs_llvmpipe.py [BUILD_DIR=build] [--threads 1,2] [--rounds 3]
        [--frames 10]
