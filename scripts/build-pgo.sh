@@ -2,7 +2,7 @@
 # Builds an optimised skinsim (and the benchmarks) with profile-guided optimisation into
 # BUILD_DIR (default build-pgo): an instrumented build, a training run of the default sweep
 # at 1024x768, then the build again from the measured profiles (cmake/pgo.cmake). The
-# default sweep at 2048x1536 runs 4-9% faster than with scripts/build.sh, with the same
+# default sweep at 2048x1536 runs about 8% faster than with scripts/build.sh, with the same
 # images and numbers (docs/performance.md, "Profile-guided optimisation"). It compiles
 # twice, without ccache (the profiles differ from run to run), so it is opt-in. Safe to run again: every run
 # trains afresh. Extra arguments go to cmake's configure.
