@@ -52,8 +52,7 @@ FrameQuality evaluate_quality(const sim::RenderTarget& frame, const ReferenceIma
     q.metrics["visible_skin_px"] = static_cast<double>(skin.visible_pixels);
   }
   const std::size_t visible_frame = quality::flip_visible_pixels(flip.map);
-  q.metrics["visible_frame_pct"] =
-      100.0 * static_cast<double>(visible_frame) / static_cast<double>(flip.map.values.size());
+  q.metrics["visible_frame_pct"] = quality::visible_percent(visible_frame, flip.map.values.size());
   q.metrics["visible_frame_px"] = static_cast<double>(visible_frame);
   // The FLIP map covers every pixel; only its mean depends on the mask.
   double sum = 0.0;

@@ -17,8 +17,12 @@ std::size_t rank_index(std::size_t count, double q) {
 
 }  // namespace
 
+double visible_percent(std::size_t visible, std::size_t pixels) {
+  return pixels == 0 ? 0.0 : 100.0 * static_cast<double>(visible) / static_cast<double>(pixels);
+}
+
 double FlipStatistics::visible_percent() const {
-  return pixels == 0 ? 0.0 : 100.0 * static_cast<double>(visible_pixels) / pixels;
+  return quality::visible_percent(visible_pixels, pixels);
 }
 
 bool FlipStatistics::visible(const FlipParams& params) const {

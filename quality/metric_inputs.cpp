@@ -18,6 +18,26 @@ std::string size_text(int width, int height) {
   return std::to_string(width) + "x" + std::to_string(height);
 }
 
+bool finite(const glm::vec3& p) {
+  return std::isfinite(p.r) && std::isfinite(p.g) && std::isfinite(p.b);
+}
+
+// Whether `count` floats are all finite, four at a time: a value is infinite or NaN exactly
+// when its exponent bits are all ones.
+bool all_finite(const float* values, std::size_t count) {
+  const Int4 exponent = {0x7f800000, 0x7f800000, 0x7f800000, 0x7f800000};
+  Int4 bad{};
+  std::size_t j = 0;
+  for (; j + 4 <= count; j += 4) {
+    Int4 v;
+    std::memcpy(&v, values + j, sizeof v);
+    bad |= (v & exponent) == exponent;
+  }
+  bool finite_so_far = (bad[0] | bad[1] | bad[2] | bad[3]) == 0;
+  for (; j < count; ++j) finite_so_far = finite_so_far && std::isfinite(values[j]);
+  return finite_so_far;
+}
+
 void check_image(std::string_view metric, std::string_view role, const Image& image) {
   const std::string where = std::string(metric) + ": " + std::string(role) + " image";
   if (image.width <= 0 || image.height <= 0) {
@@ -27,28 +47,12 @@ void check_image(std::string_view metric, std::string_view role, const Image& im
     throw QualityError(where + " holds " + std::to_string(image.rgb.size()) +
                        " pixels but is declared " + size_text(image.width, image.height));
   }
-  // Every metric checks both its images: on every thread, four floats at a time, looking at
-  // a block's pixels one by one only when the block holds an infinite or NaN value (an
-  // exponent of all ones).
+  // Every metric checks both its images: on every thread, a block's pixels looked at one by
+  // one only when the block holds a non-finite value.
   std::atomic<std::size_t> first_bad = image.rgb.size();
-  const auto finite = [](const glm::vec3& p) {
-    return std::isfinite(p.r) && std::isfinite(p.g) && std::isfinite(p.b);
-  };
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, image.rgb.size(), std::size_t{1} << 16),
                     [&](const tbb::blocked_range<std::size_t>& pixels) {
-                      const float* values = &image.rgb[pixels.begin()].x;
-                      const std::size_t count = 3 * pixels.size();
-                      const Int4 exponent = {0x7f800000, 0x7f800000, 0x7f800000, 0x7f800000};
-                      Int4 bad{};
-                      std::size_t j = 0;
-                      for (; j + 4 <= count; j += 4) {
-                        Int4 v;
-                        std::memcpy(&v, values + j, sizeof v);
-                        bad |= (v & exponent) == exponent;
-                      }
-                      bool all_finite = (bad[0] | bad[1] | bad[2] | bad[3]) == 0;
-                      for (; j < count; ++j) all_finite = all_finite && std::isfinite(values[j]);
-                      if (all_finite) return;
+                      if (all_finite(&image.rgb[pixels.begin()].x, 3 * pixels.size())) return;
                       std::size_t i = pixels.begin();
                       while (finite(image.rgb[i])) ++i;
                       std::size_t seen = first_bad.load();

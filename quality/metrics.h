@@ -80,6 +80,9 @@ FlipResult flip(const Image& test, const FlipFeatures& reference, const Mask* ma
 double flip_visibility_threshold();
 double flip_visible_area_pixels(const FlipParams& params = {});
 
+// The share of `pixels` that `visible` is, in percent (0 for no pixels).
+double visible_percent(std::size_t visible, std::size_t pixels);
+
 // Statistics of a FLIP map over a mask (every pixel if null): the mean, the 95th and 99th
 // percentiles (nearest rank), and the pixels above flip_visibility_threshold().
 struct FlipStatistics {
