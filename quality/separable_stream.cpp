@@ -7,11 +7,13 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <span>
 #include <stdexcept>
 #include <string>
 
 #include "quality/float4.h"
+#include "util/simd_dispatch.h"
 
 namespace skinsim::quality {
 namespace {
@@ -26,27 +28,73 @@ int radius_of(const std::vector<float>& kernel) {
 
 // out[x] for x in [begin, end) = sum over k of kernel[k] * taps[k][x], summed from 0 in k's
 // order. Each output is that very sequence of float operations, as if a loop over k added one
-// tap to all outputs at a time, but 32 outputs stay in registers across the taps (eight
-// independent sums hide the additions' latency) instead of going to memory and back per tap.
-void weighted_sum(std::span<const float* const> taps, const std::vector<float>& kernel, int begin,
-                  int end, float* out) {
-  constexpr int kBlock = 32;
-  constexpr int kSums = kBlock / 4;
-  int x = begin;
+// tap to all outputs at a time, but a block of outputs stays in registers across the taps
+// (eight independent sums hide the additions' latency) instead of going to memory and back
+// per tap. Vec is 4 float lanes (SSE2) or 8 (AVX): each output's operations are the same
+// whichever holds it, so both paths give the same bits.
+//
+// The helpers are always inlined, so that in the AVX path they are AVX code too: SSE2 code
+// run while the AVX registers' upper halves are in use is several times slower on some
+// processors, and GCC does not clear them (vzeroupper) before a call it makes as a tail call.
+
+// Outputs from x in blocks of kBlock while a whole block fits; returns where it stopped.
+template <class Vec, int kBlock>
+[[gnu::always_inline]] inline int weighted_sum_blocks(std::span<const float* const> taps,
+                                                      const std::vector<float>& kernel, int x,
+                                                      int end, float* out) {
+  constexpr int kLanes = static_cast<int>(sizeof(Vec) / sizeof(float));
+  constexpr int kSums = kBlock / kLanes;
   for (; x + kBlock <= end; x += kBlock) {
-    std::array<Float4, kSums> sum{};
+    std::array<Vec, kSums> sum{};
     for (std::size_t k = 0; k < kernel.size(); ++k) {
-      const Float4 weight = splat(kernel[k]);
+      Vec weight;
+      for (int lane = 0; lane < kLanes; ++lane) weight[lane] = kernel[k];
       const float* src = taps[k] + x;
-      for (int i = 0; i < kSums; ++i) sum[i] += weight * load4(src + 4 * i, 4);
+      for (int i = 0; i < kSums; ++i) {
+        Vec v;
+        std::memcpy(&v, src + kLanes * i, sizeof v);
+        sum[i] += weight * v;
+      }
     }
-    for (int i = 0; i < kSums; ++i) store4(out + x + 4 * i, sum[i], 4);
+    std::memcpy(out + x, sum.data(), sizeof sum);
   }
+  return x;
+}
+
+// Outputs [x, end) four at a time, the last group partial.
+[[gnu::always_inline]] inline void weighted_sum_tail(std::span<const float* const> taps,
+                                                     const std::vector<float>& kernel, int x,
+                                                     int end, float* out) {
   for (; x < end; x += 4) {
     const int n = std::min(4, end - x);
     Float4 sum{};
     for (std::size_t k = 0; k < kernel.size(); ++k) sum += splat(kernel[k]) * load4(taps[k] + x, n);
     store4(out + x, sum, n);
+  }
+}
+
+void weighted_sum_sse2(std::span<const float* const> taps, const std::vector<float>& kernel,
+                       int begin, int end, float* out) {
+  const int x = weighted_sum_blocks<Float4, 32>(taps, kernel, begin, end, out);
+  weighted_sum_tail(taps, kernel, x, end, out);
+}
+
+// No FMA in target "avx": a multiply and an add stay two roundings, as in SSE2.
+[[gnu::target("avx")]] void weighted_sum_avx(std::span<const float* const> taps,
+                                             const std::vector<float>& kernel, int begin, int end,
+                                             float* out) {
+  using Float8 = float __attribute__((vector_size(32)));
+  int x = weighted_sum_blocks<Float8, 64>(taps, kernel, begin, end, out);
+  x = weighted_sum_blocks<Float8, 32>(taps, kernel, x, end, out);
+  weighted_sum_tail(taps, kernel, x, end, out);
+}
+
+void weighted_sum(std::span<const float* const> taps, const std::vector<float>& kernel, int begin,
+                  int end, float* out) {
+  if (use_avx()) {
+    weighted_sum_avx(taps, kernel, begin, end, out);
+  } else {
+    weighted_sum_sse2(taps, kernel, begin, end, out);
   }
 }
 

@@ -11,12 +11,14 @@
 #include <limits>
 #include <span>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 #include <vector>
 
 #include "quality/error.h"
 #include "quality/separable_stream.h"
 #include "tests/quality/test_image.h"
+#include "util/simd_dispatch.h"
 
 namespace skinsim::quality {
 namespace {
@@ -420,6 +422,38 @@ TEST(Metrics, BadInputNamesTheProblem) {
   truncated.rgb.pop_back();
   EXPECT_THROW(psnr(truncated, a), QualityError);
   EXPECT_THROW(flip(a, a, nullptr, FlipParams{0.0}), QualityError);
+}
+
+// The separable filters (FLIP's and SSIM's) have an AVX path beside the SSE2 baseline
+// (util/simd_dispatch.h): both must give the same bits. 301 columns: 64-wide AVX blocks, then
+// a 32-wide block and a partial group of four in the tail.
+TEST(SimdPaths, AvxAndBaselineGiveTheSameBits) {
+  if (!__builtin_cpu_supports("avx")) GTEST_SKIP() << "this processor has no AVX";
+  const Image reference = pattern_image(301, 97);
+  const Image test = box_blur(add_noise(reference, 0.2f));
+  const auto measure = [&] {
+    ScalarMap ssim_map;
+    const double ssim_mean = ssim(test, reference, nullptr, &ssim_map);
+    return std::tuple{flip(test, reference).map.values, ssim_map.values, ssim_mean};
+  };
+  ASSERT_TRUE(use_avx());
+  const auto avx = measure();
+  const auto baseline = [&] {
+    const BaselineSimdScope scope;
+    EXPECT_FALSE(use_avx());
+    return measure();
+  }();
+  EXPECT_TRUE(use_avx());
+  const auto bits = [](const std::vector<float>& v) {
+    std::vector<std::uint32_t> out(v.size());
+    std::transform(v.begin(), v.end(), out.begin(),
+                   [](float f) { return std::bit_cast<std::uint32_t>(f); });
+    return out;
+  };
+  EXPECT_EQ(bits(std::get<0>(avx)), bits(std::get<0>(baseline)));
+  EXPECT_EQ(bits(std::get<1>(avx)), bits(std::get<1>(baseline)));
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(std::get<2>(avx)),
+            std::bit_cast<std::uint64_t>(std::get<2>(baseline)));
 }
 
 }  // namespace
