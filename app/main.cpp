@@ -15,6 +15,7 @@
 
 #include "app/commands.h"
 #include "driver/host_memory.h"
+#include "util/simd_dispatch.h"
 #include "util/user_error.h"
 
 namespace {
@@ -94,6 +95,7 @@ int main(int argc, char** argv) {
   add(skinsim::app::add_validate_command(app));
   add(skinsim::app::add_export_command(app));
   const int parsed = report_errors("skinsim", [&] {  // knobs validate as they are parsed
+    skinsim::check_simd_environment();
     check_raw_arguments(app, argc, argv);
     try {
       app.parse(argc, argv);

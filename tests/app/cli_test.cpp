@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -112,6 +113,14 @@ TEST(Cli, UnknownDeviceIsExitTwo) {
   const Result r = run("run --device nosuchphone --no-reference");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("nosuchphone"), std::string::npos) << r.output;
+}
+
+TEST(Cli, UnknownSimdChoiceIsExitTwoNamingTheVariable) {
+  ASSERT_EQ(setenv("SKINSIM_SIMD", "avx9", 1), 0);
+  const Result r = run("devices");
+  unsetenv("SKINSIM_SIMD");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("SKINSIM_SIMD is 'avx9'"), std::string::npos) << r.output;
 }
 
 TEST(Cli, DevicesAndShadersPrintTables) {
