@@ -51,6 +51,12 @@ glm::vec3 DipoleDiffusion::profile(float distance2_mm2) const {
   return table_[i] + (table_[i + 1] - table_[i]) * (f - static_cast<float>(i));
 }
 
+void DipoleDiffusion::row(int y, int x_begin, int x_end, glm::vec3* out) const {
+  for (int x = x_begin; x < x_end; ++x) {
+    if (position_.at(x, y).w == kind_skin_) out[x - x_begin] = at(x, y);
+  }
+}
+
 glm::vec3 DipoleDiffusion::at(int x, int y) const {
   const int w = position_.width, h = position_.height;
   const glm::vec3 p(position_.at(x, y));

@@ -14,23 +14,25 @@
 
 #include "pipeline/bake/dipole.h"
 #include "pipeline/gpu_scene.h"
+#include "pipeline/reference/skin_diffusion.h"
 #include "sim/render_target.h"
 
 namespace skinsim::pipeline {
 
-class DipoleDiffusion {
+class DipoleDiffusion final : public SkinDiffusion {
  public:
   // `position`: world position and material kind (kind == kind_skin marks skin);
   // `irradiance`: one value per pixel.
   DipoleDiffusion(const sim::RenderTarget& position, float kind_skin,
                   const std::vector<glm::vec3>& irradiance, const View& view, float units_per_mm,
                   const bake::DipoleTerms& terms);
-  glm::vec3 at(int x, int y) const;
+  void row(int y, int x_begin, int x_end, glm::vec3* out) const override;
 
   static constexpr int kRings = 48;
   static constexpr int kAngles = 16;
 
  private:
+  glm::vec3 at(int x, int y) const;  // M at one skin pixel
   struct Sample {
     glm::vec2 offset_mm;  // in the image plane at p's depth
     float area_mm2;

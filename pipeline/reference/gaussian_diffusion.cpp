@@ -178,12 +178,12 @@ class GaussianDiffusion::Impl {
   // terms in tap order. A tap that is not skin weighs +0 and adds +0 (E is finite), which
   // leaves the non-negative sums as skipping it would.
   glm::vec3 convolve(int x, int y, const glm::vec3& p, const Grid& grid) const {
-    const Sample& centre = samples_[static_cast<std::size_t>(y) * width_ + x];
+    const Sample& centre = sample(x, y);
     if (grid.centre_only) return centre.irradiance;
     const __m128 inv_two_variance = _mm_set1_ps(grid.inv_two_variance);
     __m128 sums = _mm_setzero_ps();  // r, g, b, weight
     for (int j = grid.j_begin; j < grid.j_end; ++j) {
-      const Sample* row = &samples_[static_cast<std::size_t>(y + grid.offset[j]) * width_ + x];
+      const Sample* row = &sample(x, y + grid.offset[j]);
       for (int i = grid.i_begin; i < grid.i_end; i += 4) {
         const int taps = std::min(4, grid.i_end - i);
         std::array<const Sample*, 4> tap{};
@@ -212,7 +212,7 @@ class GaussianDiffusion::Impl {
   // widest sigmas from its borders, most of them), so no tap needs the lanes' runs checked.
   template <bool kInside>
   void convolve_four(int x, int y, const glm::vec3& p, const Grid* grids, glm::vec3* out) const {
-    const Sample& centre = samples_[static_cast<std::size_t>(y) * width_ + x];
+    const Sample& centre = sample(x, y);
     const __m128 inv_two_variance =
         _mm_setr_ps(grids[0].inv_two_variance, grids[1].inv_two_variance, grids[2].inv_two_variance,
                     grids[3].inv_two_variance);
@@ -223,7 +223,7 @@ class GaussianDiffusion::Impl {
       for (int lane = 0; lane < 4; ++lane) {
         const Grid& g = grids[lane];
         if (kInside || (j >= g.j_begin && j < g.j_end)) {
-          rows[lane] = &samples_[static_cast<std::size_t>(y + g.offset[j]) * width_ + x];
+          rows[lane] = &sample(x, y + g.offset[j]);
         }
       }
       for (int i = 0; i < kMaxTaps; ++i) {
@@ -258,8 +258,16 @@ class GaussianDiffusion::Impl {
     _mm_store_ps(gr.data(), sum_y);
     _mm_store_ps(b.data(), sum_z);
     _mm_store_ps(w.data(), weight_sum);
-    for (int lane = 0; lane < 4; ++lane)
-      out[lane] = glm::vec3(r[lane], gr[lane], b[lane]) / w[lane];
+    normalise_four(r.data(), gr.data(), b.data(), w.data(), out);
+  }
+
+  // Four Gaussians' M_i from their lanes' sums of g * E (r, g, b) and of g. Always inlined,
+  // so that in the AVX kernel it is AVX code too (see quality/separable_stream.cpp).
+  [[gnu::always_inline]] static void normalise_four(const float* r, const float* g, const float* b,
+                                                    const float* weight, glm::vec3* out) {
+    for (int lane = 0; lane < 4; ++lane) {
+      out[lane] = glm::vec3(r[lane], g[lane], b[lane]) / weight[lane];
+    }
   }
 
   // What a tap reads, in one 32-byte record (position, the G-buffer's kind, irradiance), so
@@ -481,10 +489,8 @@ class GaussianDiffusion::Impl {
     _mm256_store_ps(gr.data(), sum_y);
     _mm256_store_ps(bl.data(), sum_z);
     _mm256_store_ps(w.data(), weight_sum);
-    for (int l = 0; l < 4; ++l) {
-      a.diffused[kWide + l] = glm::vec3(r[l], gr[l], bl[l]) / w[l];
-      b.diffused[kWide + l] = glm::vec3(r[l + 4], gr[l + 4], bl[l + 4]) / w[l + 4];
-    }
+    normalise_four(r.data(), gr.data(), bl.data(), w.data(), &a.diffused[kWide]);
+    normalise_four(r.data() + 4, gr.data() + 4, bl.data() + 4, w.data() + 4, &b.diffused[kWide]);
   }
 
   const ExpNegTable exp_neg_;

@@ -11,24 +11,24 @@
 #include <vector>
 
 #include "pipeline/gpu_scene.h"
+#include "pipeline/reference/skin_diffusion.h"
 #include "sim/render_target.h"
 
 namespace skinsim::pipeline {
 
-class GaussianDiffusion {
+class GaussianDiffusion final : public SkinDiffusion {
  public:
   // `position`: world position and material kind (kind == kind_skin marks skin);
   // `irradiance`: one value per pixel.
   GaussianDiffusion(const sim::RenderTarget& position, float kind_skin,
                     const std::vector<glm::vec3>& irradiance, const View& view, float units_per_mm);
-  ~GaussianDiffusion();
+  ~GaussianDiffusion() override;
   GaussianDiffusion(const GaussianDiffusion&) = delete;
   GaussianDiffusion& operator=(const GaussianDiffusion&) = delete;
 
-  // M of the skin pixels of row y in [x_begin, x_end), to out[x - x_begin]; the entries of
-  // other pixels are left as they are. A row at a time, so that pixels can share SIMD
-  // registers (the same bits as one pixel at a time).
-  void row(int y, int x_begin, int x_end, glm::vec3* out) const;
+  // A row at a time, so that pixels can share SIMD registers (the same bits as one pixel at
+  // a time).
+  void row(int y, int x_begin, int x_end, glm::vec3* out) const override;
 
  private:
   class Impl;

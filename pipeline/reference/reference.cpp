@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
-#include <optional>
+#include <memory>
 #include <vector>
 
 #include "pipeline/bake/brdf_lut.h"
@@ -294,21 +294,15 @@ ReferenceFrame render_reference(const GpuScene& gs, const PipelineConfig& config
     }
   });
 
-  std::optional<GaussianDiffusion> gaussians;
-  std::optional<DipoleDiffusion> dipole;
+  std::unique_ptr<const SkinDiffusion> diffusion;
   if (config.reference_profile == ReferenceProfile::kDipole) {
-    dipole.emplace(g.position, reference::kKindSkin, irradiance, view, sc.units_per_mm,
-                   bake::dipole_terms(bake::jensen_skin1()));
+    diffusion = std::make_unique<const DipoleDiffusion>(g.position, reference::kKindSkin,
+                                                        irradiance, view, sc.units_per_mm,
+                                                        bake::dipole_terms(bake::jensen_skin1()));
   } else {
-    gaussians.emplace(g.position, reference::kKindSkin, irradiance, view, sc.units_per_mm);
+    diffusion = std::make_unique<const GaussianDiffusion>(g.position, reference::kKindSkin,
+                                                          irradiance, view, sc.units_per_mm);
   }
-  // The diffused irradiance of row y's skin pixels in [x_begin, x_end), to out[x - x_begin].
-  const auto diffused_row = [&](int y, int x_begin, int x_end, glm::vec3* out) {
-    if (gaussians) return gaussians->row(y, x_begin, x_end, out);
-    for (int x = x_begin; x < x_end; ++x) {
-      if (g.position.at(x, y).w == reference::kKindSkin) out[x - x_begin] = dipole->at(x, y);
-    }
-  };
   const bake::BrdfLutParams lut_params = brdf_lut_params(config);
   const DirectionalTable directional(lut_params);
   ReferenceFrame out{sim::RenderTarget("reference", w, h, sim::TexelFormat::kRGBA32F),
@@ -345,7 +339,7 @@ ReferenceFrame render_reference(const GpuScene& gs, const PipelineConfig& config
   // rows stay in the core's cache while a whole row's would not.
   for_blocks([&](int y, int x_begin, int x_end) {
     std::vector<glm::vec3> diffused(static_cast<std::size_t>(x_end - x_begin));
-    diffused_row(y, x_begin, x_end, diffused.data());
+    diffusion->row(y, x_begin, x_end, diffused.data());
     for (int x = x_begin; x < x_end; ++x) shade(x, y, diffused[x - x_begin]);
   });
   return out;
