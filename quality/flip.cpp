@@ -2,8 +2,8 @@
 // "FLIP: A Difference Evaluator for Alternating Images", HPG 2020, with the constants of the
 // paper and its reference implementation (github.com/NVlabs/flip). Convolutions clamp at the
 // image border (the reference's C++ code does the same). Like that code, FLIP here computes in
-// single precision; the per-pixel colour and error work runs on four pixels at once
-// (quality/float4.h).
+// single precision; the per-pixel colour and error work runs on four pixels at once, or eight
+// where the processor has AVX2 (quality/float_lanes.h), with the same bits either way.
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -19,16 +19,21 @@
 
 #include "quality/error.h"
 #include "quality/flip_color.h"
-#include "quality/float4.h"
+#include "quality/float_lanes.h"
 #include "quality/metric_inputs.h"
 #include "quality/metrics.h"
 #include "quality/separable_stream.h"
+#include "util/simd_dispatch.h"
 #include "util/unorm8.h"
+
+// Eight-lane vectors pass only between always-inlined functions inside target("avx2") code
+// (quality/float_lanes.h), never across a call.
+#pragma GCC diagnostic ignored "-Wpsabi"
 
 namespace skinsim::quality {
 namespace {
 
-using flip_color::Colour4;
+using flip_color::Colour;
 constexpr double kPi = std::numbers::pi;
 
 // Colour pipeline exponent and error redistribution (section 4.3): qc, pc, pt.
@@ -177,45 +182,55 @@ class SrgbDecoder {
   std::array<float, 256> table_;
 };
 
-// Source columns of row y: YCxCz and luminance, four pixels at a time.
-void write_source_row(const Image& image, int y, Columns columns, const SrgbDecoder& decode,
-                      float* const* rows) {
+// Source columns of row y: YCxCz and luminance, a vector of pixels at a time.
+template <class V>
+[[gnu::always_inline]] inline void write_source_row(const Image& image, int y, Columns columns,
+                                                    const SrgbDecoder& decode, float* const* rows) {
   const std::size_t begin = static_cast<std::size_t>(y) * image.width;
-  for (int x = columns.begin; x < columns.end; x += 4) {
-    const int n = std::min(4, columns.end - x);
-    Colour4 linear{};
+  for (int x = columns.begin; x < columns.end; x += kLanes<V>) {
+    const int n = std::min(kLanes<V>, columns.end - x);
+    Colour<V> linear{};
     for (int lane = 0; lane < n; ++lane) {
       const glm::vec3& p = image.rgb[begin + x + lane];
       linear.x[lane] = decode(p.r);
       linear.y[lane] = decode(p.g);
       linear.z[lane] = decode(p.b);
     }
-    const Colour4 opponent = flip_color::xyz_to_ycxcz(flip_color::linear_rgb_to_xyz(linear));
-    store4(rows[0] + x, opponent.x, n);
-    store4(rows[1] + x, opponent.y, n);
-    store4(rows[2] + x, opponent.z, n);
-    store4(rows[kLuminance] + x, (opponent.x + 16.0f) / 116.0f, n);
+    const Colour<V> opponent = flip_color::xyz_to_ycxcz(flip_color::linear_rgb_to_xyz(linear));
+    store_lanes(rows[0] + x, opponent.x, n);
+    store_lanes(rows[1] + x, opponent.y, n);
+    store_lanes(rows[2] + x, opponent.z, n);
+    store_lanes(rows[kLuminance] + x, (opponent.x + 16.0f) / 116.0f, n);
   }
 }
 
-// Four pixels' FLIP features: Hunt-adjusted L*a*b*, edge and point strengths.
+[[gnu::target("avx2")]] void write_source_row_avx2(const Image& image, int y, Columns columns,
+                                                   const SrgbDecoder& decode, float* const* rows) {
+  write_source_row<Float8>(image, y, columns, decode, rows);
+}
+
+// A vector of pixels' FLIP features: Hunt-adjusted L*a*b*, edge and point strengths.
+template <class V>
 struct FlipLanes {
-  Colour4 hunt_lab;
-  Float4 edge, point;
+  Colour<V> hunt_lab;
+  V edge, point;
 };
 
 // The features of pixels [x, x + n) from the filtered rows.
-FlipLanes pixel_features(const ImageOutputs& o, std::span<const float* const> f, int x, int n) {
-  Colour4 opponent{};
-  const std::array<Float4*, 3> channel{&opponent.x, &opponent.y, &opponent.z};
+template <class V>
+[[gnu::always_inline]] inline FlipLanes<V> pixel_features(const ImageOutputs& o,
+                                                          std::span<const float* const> f, int x,
+                                                          int n) {
+  Colour<V> opponent{};
+  const std::array<V*, 3> channel{&opponent.x, &opponent.y, &opponent.z};
   for (int c = 0; c < 3; ++c) {
     for (const auto& [filter, share] : o.opponent[c]) {
-      *channel[c] += static_cast<float>(share) * load4(f[filter] + x, n);
+      *channel[c] += static_cast<float>(share) * load_lanes<V>(f[filter] + x, n);
     }
   }
-  const auto length = [&](int a, int b) {
-    const Float4 u = load4(f[a] + x, n), v = load4(f[b] + x, n);
-    return sqrt4(u * u + v * v);
+  const auto length = [&](int a, int b) __attribute__((always_inline)) {
+    const V u = load_lanes<V>(f[a] + x, n), v = load_lanes<V>(f[b] + x, n);
+    return sqrt_lanes(u * u + v * v);
   };
   return {flip_color::ycxcz_to_hunt_lab(opponent), length(o.edge_x, o.edge_y),
           length(o.point_x, o.point_y)};
@@ -224,17 +239,18 @@ FlipLanes pixel_features(const ImageOutputs& o, std::span<const float* const> f,
 // Largest colour difference FLIP expects: HyAB between Hunt-adjusted green and blue, to qc.
 float max_colour_difference() {
   const auto hunt_lab = [](float r, float g, float b) {
-    return flip_color::hunt_adjust(
-        flip_color::xyz_to_lab(flip_color::linear_rgb_to_xyz({splat(r), splat(g), splat(b)})));
+    return flip_color::hunt_adjust(flip_color::xyz_to_lab(
+        flip_color::linear_rgb_to_xyz(Colour<Float4>{splat(r), splat(g), splat(b)})));
   };
-  return pow4(flip_color::hyab(hunt_lab(0, 1, 0), hunt_lab(0, 0, 1)), splat(kQc))[0];
+  return pow_lanes(flip_color::hyab(hunt_lab(0, 1, 0), hunt_lab(0, 0, 1)), splat(kQc))[0];
 }
 
 // Section 4.3's colour error of a colour difference `hyab` > 0 (HyAB in Hunt-adjusted
 // L*a*b*) where there are no edges or points: small differences compressed into [0, pt), large
 // ones into [pt, 1].
-Float4 colour_error(Float4 hyab, float cmax) {
-  const Float4 colour = pow4(hyab, splat(kQc));
+template <class V>
+[[gnu::always_inline]] inline V colour_error(V hyab, float cmax) {
+  const V colour = pow_lanes(hyab, splat<V>(kQc));
   const float pccmax = kPc * cmax;
   return colour < pccmax ? kPt / pccmax * colour
                          : kPt + (colour - pccmax) / (cmax - pccmax) * (1.0f - kPt);
@@ -268,15 +284,17 @@ double checked_pixels_per_degree(const FlipParams& params) {
   return params.pixels_per_degree;
 }
 
-// Section 4.5: the colour error of two pixels, amplified by their feature difference; four
-// pairs at once.
-Float4 pixel_error(const FlipLanes& t, const FlipLanes& r, float cmax) {
-  const Float4 distance = flip_color::hyab(t.hunt_lab, r.hunt_lab);
-  const Float4 feature_difference = max4(abs4(t.edge - r.edge), abs4(t.point - r.point));
-  const Float4 feature_error = sqrt4(feature_difference / std::numbers::sqrt2_v<float>);  // ^qf
-  const Float4 error = pow4(colour_error(distance, cmax), 1.0f - feature_error);
+// Section 4.5: the colour error of two pixels, amplified by their feature difference; a
+// vector of pairs at once.
+template <class V>
+[[gnu::always_inline]] inline V pixel_error(const FlipLanes<V>& t, const FlipLanes<V>& r,
+                                            float cmax) {
+  const V distance = flip_color::hyab(t.hunt_lab, r.hunt_lab);
+  const V feature_difference = max_lanes(abs_lanes(t.edge - r.edge), abs_lanes(t.point - r.point));
+  const V feature_error = sqrt_lanes(feature_difference / std::numbers::sqrt2_v<float>);  // ^qf
+  const V error = pow_lanes(colour_error(distance, cmax), 1.0f - feature_error);
   // No colour difference: the error is 0 whatever the features.
-  return distance == 0.0f ? splat(0.0f) : error;
+  return distance == 0.0f ? splat<V>(0.0f) : error;
 }
 
 // Which pixels of `a` may differ from `b` after filters `radius` wide: those with a pixel
@@ -327,11 +345,49 @@ NearDifferences near_differences(const Image& a, const Image& b, int radius) {
   return near;
 }
 
-// Streams `images` (one or two) through their filters and hands `sink` the FLIP pixels four at
-// a time: sink(i, n, keep, lanes of images[0], lanes of images[1] or nullptr) for pixels
-// [i, i + n) (row-major indices, n <= 4, in one row). With `unchanged_from`, `keep` is -1 in
-// the lanes of pixels near a difference between images[0] and it (near_differences), 0
-// elsewhere, and groups without such a pixel are skipped; without, every lane is -1.
+// One filtered row's FLIP pixels, kLanes<V> at a time, to `sink` (stream_flip_pixels).
+template <class V, class Sink>
+[[gnu::always_inline]] inline void sink_row(std::span<const ImageOutputs> outputs,
+                                            std::span<const float* const> filtered,
+                                            const std::uint8_t* near, std::size_t row,
+                                            Columns columns, const Sink& sink) {
+  for (int x = columns.begin; x < columns.end; x += kLanes<V>) {
+    const int n = std::min(kLanes<V>, columns.end - x);
+    IntLanes<V> keep = ~IntLanes<V>{};
+    if (near != nullptr) {
+      bool any = false;
+      for (int lane = 0; lane < kLanes<V>; ++lane) {
+        const bool wanted = lane < n && near[row + x + lane];
+        keep[lane] = wanted ? -1 : 0;
+        any = any || wanted;
+      }
+      if (!any) continue;
+    }
+    const FlipLanes<V> first = pixel_features<V>(outputs[0], filtered, x, n);
+    if (outputs.size() == 1) {
+      sink(row + x, n, keep, first, static_cast<const FlipLanes<V>*>(nullptr));
+    } else {
+      const FlipLanes<V> second = pixel_features<V>(outputs[1], filtered, x, n);
+      sink(row + x, n, keep, first, &second);
+    }
+  }
+}
+
+template <class Sink>
+[[gnu::target("avx2")]] void sink_row_avx2(std::span<const ImageOutputs> outputs,
+                                           std::span<const float* const> filtered,
+                                           const std::uint8_t* near, std::size_t row,
+                                           Columns columns, const Sink& sink) {
+  sink_row<Float8>(outputs, filtered, near, row, columns, sink);
+}
+
+// Streams `images` (one or two) through their filters and hands `sink` the FLIP pixels a
+// vector at a time: sink(i, n, keep, lanes of images[0], lanes of images[1] or nullptr) for
+// pixels [i, i + n) (row-major indices, n <= the lanes, in one row). With `unchanged_from`,
+// `keep` is -1 in the lanes of pixels near a difference between images[0] and it
+// (near_differences), 0 elsewhere, and groups without such a pixel are skipped; without, every
+// lane is -1. `sink` is a generic lambda marked always_inline: it is called with four lanes
+// (SSE2) or eight (AVX2, where use_avx2()), and must be compiled into each width's loop.
 template <class Sink>
 void stream_flip_pixels(std::span<const Image* const> images, double ppd,
                         const Image* unchanged_from, const Sink& sink) {
@@ -353,33 +409,25 @@ void stream_flip_pixels(std::span<const Image* const> images, double ppd,
     near = std::move(differences.mask);
     stream.wanted = std::move(differences.rows);  // only there can the error be other than 0
   }
+  const bool avx2 = use_avx2();
   const SrgbDecoder decode;
   const auto source = [&](int y, Columns columns, std::span<float* const> rows) {
     for (int i = 0; i < count; ++i) {
-      write_source_row(*images[i], y, columns, decode, rows.data() + i * kSourcesPerImage);
+      float* const* image_rows = rows.data() + i * kSourcesPerImage;
+      if (avx2) {
+        write_source_row_avx2(*images[i], y, columns, decode, image_rows);
+      } else {
+        write_source_row<Float4>(*images[i], y, columns, decode, image_rows);
+      }
     }
   };
   const auto row_sink = [&](int y, Columns columns, std::span<const float* const> filtered) {
     const std::size_t row = static_cast<std::size_t>(y) * stream.width;
-    for (int x = columns.begin; x < columns.end; x += 4) {
-      const int n = std::min(4, columns.end - x);
-      Int4 keep = {-1, -1, -1, -1};
-      if (!near.empty()) {
-        bool any = false;
-        for (int lane = 0; lane < 4; ++lane) {
-          const bool wanted = lane < n && near[row + x + lane];
-          keep[lane] = wanted ? -1 : 0;
-          any = any || wanted;
-        }
-        if (!any) continue;
-      }
-      const FlipLanes first = pixel_features(outputs[0], filtered, x, n);
-      if (count == 1) {
-        sink(row + x, n, keep, first, nullptr);
-      } else {
-        const FlipLanes second = pixel_features(outputs[1], filtered, x, n);
-        sink(row + x, n, keep, first, &second);
-      }
+    const std::uint8_t* near_mask = near.empty() ? nullptr : near.data();
+    if (avx2) {
+      sink_row_avx2(outputs, filtered, near_mask, row, columns, sink);
+    } else {
+      sink_row<Float4>(outputs, filtered, near_mask, row, columns, sink);
     }
   };
   run_separable_stream(stream, source, row_sink);
@@ -395,10 +443,12 @@ FlipResult flip(const Image& test, const Image& reference, const Mask* mask,
   result.map = ScalarMap{test.width, test.height, std::vector<float>(test.pixel_count())};
   const std::array<const Image*, 2> images{&test, &reference};
   // The map starts at 0, the error wherever the images do not differ nearby.
-  stream_flip_pixels(images, checked_pixels_per_degree(params), &reference,
-                     [&](std::size_t i, int n, Int4 keep, const FlipLanes& t, const FlipLanes* r) {
-                       store4(&result.map.values[i], keep ? pixel_error(t, *r, cmax) : 0.0f, n);
-                     });
+  stream_flip_pixels(
+      images, checked_pixels_per_degree(params), &reference,
+      [&](std::size_t i, int n, auto keep, const auto& t, const auto* r)
+          __attribute__((always_inline)) {
+            store_lanes(&result.map.values[i], keep ? pixel_error(t, *r, cmax) : 0.0f, n);
+          });
   result.mean = masked_mean(result.map.values, test.width, test.height, mask);
   return result;
 }
@@ -408,14 +458,15 @@ FlipFeatures::FlipFeatures(const Image& image, const FlipParams& params)
   check_metric_inputs("FLIP", image, image, nullptr);
   for (std::vector<float>& plane : planes_) plane.resize(image.pixel_count());
   const std::array<const Image*, 1> images{&image};
-  stream_flip_pixels(images, checked_pixels_per_degree(params), nullptr,
-                     [&](std::size_t i, int n, Int4, const FlipLanes& p, const FlipLanes*) {
-                       store4(&planes_[kLightness][i], p.hunt_lab.x, n);
-                       store4(&planes_[kA][i], p.hunt_lab.y, n);
-                       store4(&planes_[kB][i], p.hunt_lab.z, n);
-                       store4(&planes_[kEdge][i], p.edge, n);
-                       store4(&planes_[kPoint][i], p.point, n);
-                     });
+  stream_flip_pixels(
+      images, checked_pixels_per_degree(params), nullptr,
+      [&](std::size_t i, int n, auto, const auto& p, const auto*) __attribute__((always_inline)) {
+        store_lanes(&planes_[kLightness][i], p.hunt_lab.x, n);
+        store_lanes(&planes_[kA][i], p.hunt_lab.y, n);
+        store_lanes(&planes_[kB][i], p.hunt_lab.z, n);
+        store_lanes(&planes_[kEdge][i], p.edge, n);
+        store_lanes(&planes_[kPoint][i], p.point, n);
+      });
 }
 
 FlipResult flip(const Image& test, const FlipFeatures& reference, const Mask* mask) {
@@ -432,14 +483,18 @@ FlipResult flip(const Image& test, const FlipFeatures& reference, const Mask* ma
   const std::array<const Image*, 1> images{&test};
   stream_flip_pixels(
       images, checked_pixels_per_degree(reference.params()), &reference.image(),
-      [&](std::size_t i, int n, Int4 keep, const FlipLanes& t, const FlipLanes*) {
-        const auto lanes = [&](FlipFeatures::Plane p) { return load4(reference.plane(p) + i, n); };
-        const FlipLanes r{
-            {lanes(FlipFeatures::kLightness), lanes(FlipFeatures::kA), lanes(FlipFeatures::kB)},
-            lanes(FlipFeatures::kEdge),
-            lanes(FlipFeatures::kPoint)};
-        store4(&result.map.values[i], keep ? pixel_error(t, r, cmax) : 0.0f, n);
-      });
+      [&](std::size_t i, int n, auto keep, const auto& t, const auto*)
+          __attribute__((always_inline)) {
+            using V = decltype(t.edge);
+            const auto lanes = [&](FlipFeatures::Plane p) __attribute__((always_inline)) {
+              return load_lanes<V>(reference.plane(p) + i, n);
+            };
+            const FlipLanes<V> r{
+                {lanes(FlipFeatures::kLightness), lanes(FlipFeatures::kA), lanes(FlipFeatures::kB)},
+                lanes(FlipFeatures::kEdge),
+                lanes(FlipFeatures::kPoint)};
+            store_lanes(&result.map.values[i], keep ? pixel_error(t, r, cmax) : 0.0f, n);
+          });
   result.mean = masked_mean(result.map.values, test.width, test.height, mask);
   return result;
 }

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "quality/error.h"
-#include "quality/float4.h"
+#include "quality/float_lanes.h"
 
 namespace skinsim::quality {
 namespace {

@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "quality/float4.h"
+#include "quality/float_lanes.h"
 #include "util/simd_dispatch.h"
 
 namespace skinsim::quality {
@@ -68,8 +68,9 @@ template <class Vec, int kBlock>
   for (; x < end; x += 4) {
     const int n = std::min(4, end - x);
     Float4 sum{};
-    for (std::size_t k = 0; k < kernel.size(); ++k) sum += splat(kernel[k]) * load4(taps[k] + x, n);
-    store4(out + x, sum, n);
+    for (std::size_t k = 0; k < kernel.size(); ++k)
+      sum += splat(kernel[k]) * load_lanes(taps[k] + x, n);
+    store_lanes(out + x, sum, n);
   }
 }
 

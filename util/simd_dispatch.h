@@ -1,12 +1,14 @@
-// Which SIMD width the host runs the hot loops at. A loop with an AVX path (8 float lanes)
-// beside its SSE2 baseline (4 lanes, all x86-64 has) does each lane's IEEE operations in the
-// baseline's order and never fuses a multiply and an add (the AVX paths are compiled for
-// target("avx"), which has no FMA), so both paths give the same bits: images, counters and
-// metrics do not depend on the processor.
+// Which SIMD width the host runs the hot loops at. A loop with an AVX or AVX2 path (8 float
+// lanes) beside its SSE2 baseline (4 lanes, all x86-64 has) does each lane's IEEE operations in
+// the baseline's order and never fuses a multiply and an add (the wide paths are compiled for
+// target("avx") or target("avx2"), neither of which has FMA), so every path gives the same
+// bits: images, counters and metrics do not depend on the processor. AVX2 is asked for where a
+// loop needs eight integer lanes too (FLIP's exponent and mantissa arithmetic).
 //
 // SKINSIM_SIMD=sse2 in the environment makes every loop take its baseline, as on a processor
-// without AVX (tests/determinism checks whole runs both ways); unset, empty or "auto": AVX
-// where the processor has it. Tests in one process compare the paths with BaselineSimdScope.
+// without AVX (tests/determinism checks whole runs both ways); unset, empty or "auto": the
+// wide paths where the processor has them. Tests in one process compare the paths with
+// BaselineSimdScope.
 #pragma once
 
 #include <atomic>
@@ -46,6 +48,13 @@ inline void check_simd_environment() {
 inline bool use_avx() {
   static const bool supported =
       __builtin_cpu_supports("avx") && detail::simd_request() != detail::SimdRequest::kBaseline;
+  return supported && !detail::baseline_simd_forced.load(std::memory_order_relaxed);
+}
+
+// The same for AVX2.
+inline bool use_avx2() {
+  static const bool supported =
+      __builtin_cpu_supports("avx2") && detail::simd_request() != detail::SimdRequest::kBaseline;
   return supported && !detail::baseline_simd_forced.load(std::memory_order_relaxed);
 }
 

@@ -424,36 +424,59 @@ TEST(Metrics, BadInputNamesTheProblem) {
   EXPECT_THROW(flip(a, a, nullptr, FlipParams{0.0}), QualityError);
 }
 
-// The separable filters (FLIP's and SSIM's) have an AVX path beside the SSE2 baseline
-// (util/simd_dispatch.h): both must give the same bits. 301 columns: 64-wide AVX blocks, then
-// a 32-wide block and a partial group of four in the tail.
-TEST(SimdPaths, AvxAndBaselineGiveTheSameBits) {
-  if (!__builtin_cpu_supports("avx")) GTEST_SKIP() << "this processor has no AVX";
+// The separable filters (FLIP's and SSIM's) have an AVX path beside the SSE2 baseline, and
+// FLIP's per-pixel colour and error work an AVX2 one (util/simd_dispatch.h): every path must
+// give the same bits. 301 columns: 64-wide AVX filter blocks, then a 32-wide block and a
+// partial group of four in the tail; 37 groups of eight pixels and a partial one of five. The
+// left 100 columns of the test equal the reference, so FLIP skips groups there and keeps some
+// lanes of the groups near them (the prepared path's near-difference mask).
+TEST(SimdPaths, WideAndBaselineGiveTheSameBits) {
+  if (!__builtin_cpu_supports("avx2")) GTEST_SKIP() << "this processor has no AVX2";
   const Image reference = pattern_image(301, 97);
-  const Image test = box_blur(add_noise(reference, 0.2f));
-  const auto measure = [&] {
-    ScalarMap ssim_map;
-    const double ssim_mean = ssim(test, reference, nullptr, &ssim_map);
-    return std::tuple{flip(test, reference).map.values, ssim_map.values, ssim_mean};
-  };
-  ASSERT_TRUE(use_avx());
-  const auto avx = measure();
-  const auto baseline = [&] {
-    const BaselineSimdScope scope;
-    EXPECT_FALSE(use_avx());
-    return measure();
-  }();
-  EXPECT_TRUE(use_avx());
+  Image test = box_blur(add_noise(reference, 0.2f));
+  for (int y = 0; y < test.height; ++y) {
+    for (int x = 0; x < 100; ++x) test.at(x, y) = reference.at(x, y);
+  }
   const auto bits = [](const std::vector<float>& v) {
     std::vector<std::uint32_t> out(v.size());
     std::transform(v.begin(), v.end(), out.begin(),
                    [](float f) { return std::bit_cast<std::uint32_t>(f); });
     return out;
   };
-  EXPECT_EQ(bits(std::get<0>(avx)), bits(std::get<0>(baseline)));
-  EXPECT_EQ(bits(std::get<1>(avx)), bits(std::get<1>(baseline)));
-  EXPECT_EQ(std::bit_cast<std::uint64_t>(std::get<2>(avx)),
-            std::bit_cast<std::uint64_t>(std::get<2>(baseline)));
+  const auto measure = [&] {
+    ScalarMap ssim_map;
+    const double ssim_mean = ssim(test, reference, nullptr, &ssim_map);
+    const FlipFeatures prepared(reference);
+    std::vector<std::uint32_t> planes;
+    for (int p = 0; p < FlipFeatures::kPlanes; ++p) {
+      const float* plane = prepared.plane(static_cast<FlipFeatures::Plane>(p));
+      const std::vector<std::uint32_t> b =
+          bits(std::vector<float>(plane, plane + reference.pixel_count()));
+      planes.insert(planes.end(), b.begin(), b.end());
+    }
+    return std::tuple{bits(flip(test, reference).map.values), bits(ssim_map.values),
+                      std::bit_cast<std::uint64_t>(ssim_mean), planes,
+                      bits(flip(test, prepared).map.values)};
+  };
+  ASSERT_TRUE(use_avx());
+  ASSERT_TRUE(use_avx2());
+  const auto wide = measure();
+  const auto baseline = [&] {
+    const BaselineSimdScope scope;
+    EXPECT_FALSE(use_avx());
+    EXPECT_FALSE(use_avx2());
+    return measure();
+  }();
+  EXPECT_TRUE(use_avx2());
+  EXPECT_EQ(std::get<0>(wide), std::get<0>(baseline)) << "FLIP of two images";
+  EXPECT_EQ(std::get<1>(wide), std::get<1>(baseline)) << "SSIM map";
+  EXPECT_EQ(std::get<2>(wide), std::get<2>(baseline)) << "SSIM mean";
+  EXPECT_EQ(std::get<3>(wide), std::get<3>(baseline)) << "a prepared image's FLIP planes";
+  EXPECT_EQ(std::get<4>(wide), std::get<4>(baseline)) << "FLIP against a prepared image";
+  // The map is not all zeros, nor all errors: the kept and skipped lanes both occur.
+  const std::vector<float> map = flip(test, FlipFeatures(reference)).map.values;
+  EXPECT_EQ(map[50], 0.0f);
+  EXPECT_GT(map[200], 0.0f);
 }
 
 }  // namespace
