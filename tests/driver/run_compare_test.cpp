@@ -4,7 +4,6 @@
 #include "driver/run_compare.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -13,6 +12,7 @@
 #include "io/atomic_file.h"
 #include "io/read_file.h"
 #include "quality/image.h"
+#include "tests/scratch_dir.h"
 
 namespace skinsim::driver {
 namespace {
@@ -20,8 +20,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path scratch(const std::string& name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("skinsim_compare_" + std::to_string(::getpid())) / name;
+  const fs::path dir = testing::scratch_root("skinsim_compare") / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

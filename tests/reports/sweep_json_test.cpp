@@ -1,6 +1,5 @@
 // results.json round trip and the errors bad input gets.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -10,6 +9,7 @@
 #include "reports/error.h"
 #include "reports/sweep_table.h"
 #include "tests/reports/synthetic_sweep.h"
+#include "tests/scratch_dir.h"
 
 namespace skinsim::reports {
 namespace {
@@ -17,10 +17,7 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string temp_file(const std::string& name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("skinsim_reports_json_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return (dir / name).string();
+  return (skinsim::testing::scratch_root("skinsim_reports_json") / name).string();
 }
 
 std::string error_of(const nlohmann::json& j) {
