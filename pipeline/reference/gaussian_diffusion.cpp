@@ -67,6 +67,11 @@ class ExpNegTable {
   std::vector<float> values_;
 };
 
+// __m128 and __m256 as plain GCC vector types (without their may_alias attribute), for
+// template arguments.
+using Float4 = float __attribute__((vector_size(16)));
+using Float8 = float __attribute__((vector_size(32)));
+
 // Four floats from each of a and b in one AVX register: a's in the low half, b's in the high.
 [[gnu::target("avx")]] inline __m256 load_pair(const float* a, const float* b) {
   return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_load_ps(a)), _mm_load_ps(b), 1);
@@ -203,6 +208,32 @@ class GaussianDiffusion::Impl {
     return glm::vec3(s[0], s[1], s[2]) / s[3];  // the centre sample has weight 1
   }
 
+  // Four or eight lanes' sums of g * E (r, g, b) and of g, one Gaussian of one pixel per
+  // lane: the four-lane kernel's (convolve_four) and the eight-lane one's (convolve_eight)
+  // share them, so that both add and divide in the same order. Always inlined, so that in the
+  // AVX kernel they are AVX code too (see quality/separable_stream.cpp).
+  template <class Reg>
+  struct Sums {
+    static constexpr int kLanes = static_cast<int>(sizeof(Reg) / sizeof(float));
+    Reg x{}, y{}, z{}, weight{};
+
+    // One tap of every lane: weights g, light (r, g, b).
+    [[gnu::always_inline]] void add(const Reg& g, const Reg& r, const Reg& gr, const Reg& b) {
+      x += g * r;
+      y += g * gr;
+      z += g * b;
+      weight += g;
+    }
+    // Each lane's M_i: the first four lanes to low[0..3], lanes 4-7 (eight lanes: a second
+    // pixel's) to high[0..3].
+    [[gnu::always_inline]] void normalise(glm::vec3* low, glm::vec3* high = nullptr) const {
+      for (int lane = 0; lane < kLanes; ++lane) {
+        glm::vec3& out = lane < 4 ? low[lane] : high[lane - 4];
+        out = glm::vec3(x[lane], y[lane], z[lane]) / weight[lane];
+      }
+    }
+  };
+
   // convolve() of four full grids at once, one SSE lane each. Every lane does the scalar
   // path's operations in the same order (glm::dot is (x*x + y*y) + z*z; the weight's table
   // lookup is at4). A tap outside a lane's image runs, or on a sample that is not skin, adds
@@ -216,8 +247,7 @@ class GaussianDiffusion::Impl {
     const __m128 inv_two_variance =
         _mm_setr_ps(grids[0].inv_two_variance, grids[1].inv_two_variance, grids[2].inv_two_variance,
                     grids[3].inv_two_variance);
-    __m128 sum_x = _mm_setzero_ps(), sum_y = _mm_setzero_ps(), sum_z = _mm_setzero_ps();
-    __m128 weight_sum = _mm_setzero_ps();
+    Sums<Float4> sums;
     for (int j = 0; j < kMaxTaps; ++j) {
       std::array<const Sample*, 4> rows{};
       for (int lane = 0; lane < 4; ++lane) {
@@ -247,27 +277,10 @@ class GaussianDiffusion::Impl {
           g = _mm_and_ps(
               _mm_castsi128_ps(_mm_load_si128(reinterpret_cast<const __m128i*>(inside.data()))), g);
         }
-        sum_x = _mm_add_ps(sum_x, _mm_mul_ps(g, e0));
-        sum_y = _mm_add_ps(sum_y, _mm_mul_ps(g, e1));
-        sum_z = _mm_add_ps(sum_z, _mm_mul_ps(g, e2));
-        weight_sum = _mm_add_ps(weight_sum, g);
+        sums.add(g, e0, e1, e2);
       }
     }
-    alignas(16) std::array<float, 4> r, gr, b, w;
-    _mm_store_ps(r.data(), sum_x);
-    _mm_store_ps(gr.data(), sum_y);
-    _mm_store_ps(b.data(), sum_z);
-    _mm_store_ps(w.data(), weight_sum);
-    normalise_four(r.data(), gr.data(), b.data(), w.data(), out);
-  }
-
-  // Four Gaussians' M_i from their lanes' sums of g * E (r, g, b) and of g. Always inlined,
-  // so that in the AVX kernel it is AVX code too (see quality/separable_stream.cpp).
-  [[gnu::always_inline]] static void normalise_four(const float* r, const float* g, const float* b,
-                                                    const float* weight, glm::vec3* out) {
-    for (int lane = 0; lane < 4; ++lane) {
-      out[lane] = glm::vec3(r[lane], g[lane], b[lane]) / weight[lane];
-    }
+    sums.normalise(out);
   }
 
   // What a tap reads, in one 32-byte record (position, the G-buffer's kind, irradiance), so
@@ -458,8 +471,7 @@ class GaussianDiffusion::Impl {
         grid_a[0].inv_two_variance, grid_a[1].inv_two_variance, grid_a[2].inv_two_variance,
         grid_a[3].inv_two_variance, grid_b[0].inv_two_variance, grid_b[1].inv_two_variance,
         grid_b[2].inv_two_variance, grid_b[3].inv_two_variance);
-    __m256 sum_x = _mm256_setzero_ps(), sum_y = _mm256_setzero_ps(), sum_z = _mm256_setzero_ps();
-    __m256 weight_sum = _mm256_setzero_ps();
+    Sums<Float8> sums;
     for (int j = 0; j < kMaxTaps; ++j) {
       std::array<const Sample*, 8> rows;
       for (int l = 0; l < 4; ++l) {
@@ -478,19 +490,10 @@ class GaussianDiffusion::Impl {
         __m256 bl = load_pair(&tap[2]->irradiance.x, &tap[6]->irradiance.x);
         __m256 one = load_pair(&tap[3]->irradiance.x, &tap[7]->irradiance.x);
         transpose_halves(r, gr, bl, one);  // r, g, b, 1
-        sum_x = _mm256_add_ps(sum_x, _mm256_mul_ps(g, r));
-        sum_y = _mm256_add_ps(sum_y, _mm256_mul_ps(g, gr));
-        sum_z = _mm256_add_ps(sum_z, _mm256_mul_ps(g, bl));
-        weight_sum = _mm256_add_ps(weight_sum, g);
+        sums.add(g, r, gr, bl);
       }
     }
-    alignas(32) std::array<float, 8> r, gr, bl, w;
-    _mm256_store_ps(r.data(), sum_x);
-    _mm256_store_ps(gr.data(), sum_y);
-    _mm256_store_ps(bl.data(), sum_z);
-    _mm256_store_ps(w.data(), weight_sum);
-    normalise_four(r.data(), gr.data(), bl.data(), w.data(), &a.diffused[kWide]);
-    normalise_four(r.data() + 4, gr.data() + 4, bl.data() + 4, w.data() + 4, &b.diffused[kWide]);
+    sums.normalise(&a.diffused[kWide], &b.diffused[kWide]);
   }
 
   const ExpNegTable exp_neg_;
