@@ -15,6 +15,7 @@
 #include "io/read_file.h"
 #include "pipeline/knob.h"
 #include "quality/image.h"
+#include "util/build_identity.h"
 #include "util/fingerprint.h"
 
 namespace skinsim::driver {
@@ -38,10 +39,12 @@ std::string group_label(const SweepSpec& spec, const ConfigResult& row) {
   return fmt::format("{}", fmt::join(parts, ", "));
 }
 
-// What the cached comparison of two frames depends on: both frames' and the mask's bytes.
+// What the cached comparison of two frames depends on: both frames' and the mask's bytes, and
+// the build that measures them.
 std::string comparison_key(const fs::path& dir, const ConfigResult& row, const ConfigResult& other,
                            const std::string& mask) {
-  std::string key = content_fingerprint(io::read_regular_file(dir / row.frame_image, "frame"));
+  std::string key(build_identity());
+  key += content_fingerprint(io::read_regular_file(dir / row.frame_image, "frame"));
   key += content_fingerprint(io::read_regular_file(dir / other.frame_image, "frame"));
   if (!mask.empty()) key += content_fingerprint(io::read_regular_file(dir / mask, "skin mask"));
   return key;

@@ -13,6 +13,7 @@
 #include "io/read_file.h"
 #include "pipeline/reference/reference.h"
 #include "quality/image.h"
+#include "util/build_identity.h"
 
 namespace skinsim::driver {
 
@@ -32,16 +33,15 @@ nlohmann::json reference_fingerprint(const pipeline::PipelineConfig& c, const Sc
             {"units_per_mm", s.units_per_mm}}}};
 }
 
-bool load_cached(const std::filesystem::path& marker, const nlohmann::json& fingerprint,
+// `expected`: the marker a usable cached copy has, its fingerprint and the build that
+// rendered it (another build may render another image).
+bool load_cached(const std::filesystem::path& marker, const nlohmann::json& expected,
                  const std::filesystem::path& image_path, const std::filesystem::path& mask_path,
                  ReferenceImages& out) {
   if (!std::filesystem::exists(marker)) return false;
   const nlohmann::json stored = nlohmann::json::parse(
       io::read_regular_file(marker, "reference cache marker"), nullptr, /*allow_exceptions=*/false);
-  if (stored.is_discarded() || !stored.contains("fingerprint") ||
-      stored["fingerprint"] != fingerprint) {
-    return false;
-  }
+  if (stored != expected) return false;
   try {
     out.image = quality::load_png(image_path);
     out.skin = quality::load_mask_png(mask_path);
@@ -74,7 +74,8 @@ ReferenceImages cached_reference(const pipeline::GpuScene& scene,
   const std::filesystem::path image_path = refs_dir / (stem + ".png");
   const std::filesystem::path mask_path = refs_dir / reference_mask_path(stem + ".png");
   const std::filesystem::path marker = refs_dir / (stem + ".json");
-  const nlohmann::json fingerprint = reference_fingerprint(resolved, source);
+  const nlohmann::json marker_content = {{"fingerprint", reference_fingerprint(resolved, source)},
+                                         {"build", build_identity()}};
 
   // Processes sharing the directory (sweep shards) take turns: the first renders and writes
   // the reference, the others wait and then load it, so it is rendered once and never
@@ -86,7 +87,7 @@ ReferenceImages cached_reference(const pipeline::GpuScene& scene,
     }
   });
   ReferenceImages images;
-  if (load_cached(marker, fingerprint, image_path, mask_path, images)) {
+  if (load_cached(marker, marker_content, image_path, mask_path, images)) {
     if (rendered) *rendered = false;
     return images;
   }
@@ -103,8 +104,7 @@ ReferenceImages cached_reference(const pipeline::GpuScene& scene,
   }
   quality::save_png(images.image, image_path);
   quality::save_mask_png(images.skin, mask_path);
-  io::write_file_atomically(marker.string(),
-                            nlohmann::json{{"fingerprint", fingerprint}}.dump(2) + "\n");
+  io::write_file_atomically(marker.string(), marker_content.dump(2) + "\n");
   if (rendered) *rendered = true;
   return images;
 }

@@ -25,6 +25,7 @@
 #include "pipeline/frame.h"
 #include "quality/image.h"
 #include "sim/pass_memo.h"
+#include "util/build_identity.h"
 #include "util/fingerprint.h"
 
 namespace skinsim::driver {
@@ -133,8 +134,8 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
   const fs::path dir(options.out_dir);
 
   // Devices first: an unknown profile fails before any work or directory. A stored result
-  // made with other figures (an edited profile) is not this sweep's: the profile's bytes are
-  // part of the fingerprint.
+  // made with other figures (an edited profile) or by another build of skinsim is not this
+  // sweep's: the profile's bytes and the build identity are part of the fingerprint.
   std::map<std::string, gpu_model::DeviceProfile> devices;
   std::map<std::string, std::string> device_fingerprints;
   for (const SweepConfig& c : configs) {
@@ -173,6 +174,7 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
     job.resolved = resolve_config(c.config, *job.device);
     job.fingerprint = config_fingerprint(c, spec.scene, job.resolved.width, job.resolved.height);
     job.fingerprint["device_profile"] = device_fingerprints.at(c.device);
+    job.fingerprint["build"] = build_identity();  // another skinsim may compute other figures
     summary.fingerprints[c.id] = job.fingerprint;
     if (shard_of[index] != this_shard) continue;  // another shard's
     ++summary.this_part;

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 
@@ -18,6 +19,7 @@
 #include "reports/sweep_table.h"
 #include "sweep_test_support.h"
 #include "tests/test_paths.h"
+#include "util/build_identity.h"
 
 namespace skinsim::driver {
 namespace {
@@ -238,6 +240,43 @@ TEST(SweepRun, AnEditedDeviceProfileIsAnotherSweep) {
   run_and_write(spec, options(results, 1), &edited);
   EXPECT_EQ(edited.resumed, 0);
   EXPECT_EQ(edited.computed.size(), 2u);
+}
+
+// Rewrites the "build" field of a stored JSON file (at `pointer`), as an older or newer
+// skinsim would have written it.
+void stamp_other_build(const fs::path& file, const nlohmann::json::json_pointer& pointer) {
+  nlohmann::json j = nlohmann::json::parse(read_file(file));
+  ASSERT_EQ(j.at(pointer), std::string(build_identity()));
+  j[pointer] = "sha256:0123456789abcdef";
+  std::ofstream(file) << j.dump(1);
+}
+
+// Results and the cached reference written by another build of skinsim (changed sources or
+// compiler) are not resumed: that build may compute other figures and images.
+TEST(SweepRun, ResultsOfAnotherBuildAreRecomputed) {
+  const fs::path dir = out_dir("other_build");
+  const SweepSpec spec = tiny_spec();
+  run_and_write(spec, options(dir, 1));
+  const std::string results_before = read_file(dir / "results.json");
+
+  stamp_other_build(dir / config_json_path("scale0.5"), "/fingerprint/build"_json_pointer);
+  SweepRunSummary one;
+  run_and_write(spec, options(dir, 1), &one);
+  EXPECT_EQ(one.resumed, 1);
+  EXPECT_EQ(one.computed, std::vector<std::string>{"scale0.5"});
+  EXPECT_EQ(one.references_rendered, 0);
+
+  std::vector<fs::path> markers;
+  for (const auto& e : fs::directory_iterator(dir / "refs")) {
+    if (e.path().extension() == ".json") markers.push_back(e.path());
+  }
+  ASSERT_EQ(markers.size(), 1u);
+  stamp_other_build(markers[0], "/build"_json_pointer);
+  fs::remove(dir / config_json_path("scale0.25"));
+  SweepRunSummary reference;
+  run_and_write(spec, options(dir, 1), &reference);
+  EXPECT_EQ(reference.references_rendered, 1);
+  EXPECT_EQ(read_file(dir / "results.json"), results_before);  // this build, the same figures
 }
 
 TEST(FrameQuality, AReferenceWithoutSkinGivesFrameMetricsOnly) {
