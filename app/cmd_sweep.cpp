@@ -9,6 +9,8 @@
 #include <atomic>
 #include <csignal>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 
 #include "app/cli_options.h"
@@ -241,19 +243,27 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
   if (!report.note.empty()) fmt::print(stderr, "skinsim sweep: note: {}\n", report.note);
   print_recommendations(table);
   fmt::print("wrote {}/{{{}}}\n", o.out, fmt::join(written, ", "));
+  int code = 0;
   if (!summary.failed.empty()) {
     fmt::print(stderr, "skinsim sweep: {} of {} configurations failed (reasons above)\n",
                summary.failed.size(), summary.total);
-    return 1;
-  }
-  if (o.merge && !summary.left_by_shards.empty()) {
+    code = 1;
+  } else if (o.merge && !summary.left_by_shards.empty()) {
     fmt::print(stderr,
                "skinsim sweep: the report shows {} of {} configurations; re-run the shards "
                "named above (they resume), then --merge again\n",
                table.rows.size(), summary.total);
-    return 1;
+    code = 1;
+  } else if (o.charts && o.require_charts && !report.charts_drawn) {
+    code = 1;
   }
-  return o.charts && o.require_charts && !report.charts_drawn ? 1 : 0;
+  if (report.display_attempt_pending) {
+    // Every file is written and closed; only the exit handlers are skipped, which would tear
+    // down libX11 under the attempt still waiting for the display (display_check.h).
+    std::fflush(nullptr);
+    std::_Exit(code);
+  }
+  return code;
 }
 
 void axis_option(CLI::App& cmd, SweepOptions& o, const std::string& flag, const std::string& knob,

@@ -31,6 +31,7 @@ SweepReportOutcome write_sweep_report(const reports::SweepTable& table, const st
   options.alongside_charts = [&] { write_thumbnails(table, out_dir); };
   outcome.report_path = reports::write_report(table, out_dir, options);
   outcome.charts_drawn = charts;
+  outcome.display_attempt_pending = reports::abandoned_display_attempts() > 0;
   return outcome;
 }
 

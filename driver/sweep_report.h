@@ -12,6 +12,9 @@ struct SweepReportOutcome {
   std::string report_path;  // "" when no report was written
   bool charts_drawn = false;
   std::string note;  // why charts or the report are missing ("" if nothing is)
+  // An attempt to open a display that never answered is still inside Xlib: the process must
+  // end with std::_Exit, not by returning from main (reports::abandoned_display_attempts).
+  bool display_attempt_pending = false;
 };
 
 // Writes out_dir/report.html, with the charts when `charts` is set and an X display is

@@ -3,6 +3,7 @@
 #include <GL/glx.h>
 #include <X11/Xlib.h>
 
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <cstdio>
@@ -97,15 +98,19 @@ std::string missing_opengl(Display* display) {
   return "";
 }
 
+// Attempts given up on at their deadline whose XOpenDisplay has not returned yet.
+std::atomic<int> abandoned_attempts{0};
+
 // XOpenDisplay(name), or nullopt when it has not returned by `deadline`. The attempt runs on
-// a thread of its own; one still waiting at the deadline is left to finish alone, and a
-// connection it opens after that is never used.
+// a thread of its own; one still waiting at the deadline is left to finish alone (counted in
+// abandoned_attempts until it does), and a connection it opens after that is never used.
 std::optional<Display*> open_before(const std::string& name,
                                     std::chrono::steady_clock::time_point deadline) {
   struct Attempt {
     std::mutex mutex;
     std::condition_variable done;
     bool finished = false;
+    bool abandoned = false;
     Display* display = nullptr;
   };
   const auto attempt = std::make_shared<Attempt>();
@@ -114,10 +119,13 @@ std::optional<Display*> open_before(const std::string& name,
     const std::lock_guard lock(attempt->mutex);
     attempt->display = display;
     attempt->finished = true;
+    if (attempt->abandoned) --abandoned_attempts;
     attempt->done.notify_one();
   }).detach();
   std::unique_lock lock(attempt->mutex);
   if (!attempt->done.wait_until(lock, deadline, [&] { return attempt->finished; })) {
+    attempt->abandoned = true;
+    ++abandoned_attempts;
     return std::nullopt;
   }
   return attempt->display;
@@ -185,6 +193,10 @@ Display* display_from_environment(std::string* why) {
 }
 
 }  // namespace
+
+int abandoned_display_attempts() {
+  return abandoned_attempts.load();
+}
 
 bool charts_available(std::string* why) {
   return display_from_environment(why) != nullptr;

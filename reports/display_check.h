@@ -17,6 +17,15 @@ namespace skinsim::reports {
 // Creates no VTK object.
 bool charts_available(std::string* why);
 
+// How many attempts to open the display were given up on at the check's deadline (a display
+// that took the connection and never answered) and are still inside XOpenDisplay. Such an
+// attempt holds Xlib's global lock, so no other display can be opened meanwhile, and it may
+// return at any time: if it returns while the process exits, it runs in libraries whose
+// destructors have already run, and crashes (seen when a test freed the hung connection just
+// before its process ended). A process with one pending ends with std::_Exit after flushing
+// its output (driver::SweepReportOutcome::display_attempt_pending).
+int abandoned_display_attempts();
+
 // The open connection (an Xlib Display*) to the display named by DISPLAY, opened on first use
 // and never closed, for vtkRenderWindow::SetDisplayId. Throws ReportError with
 // charts_available's message if there is none. If the X server goes away later, skinsim

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "tests/app/run_skinsim.h"
+#include "tests/hung_display.h"
 #include "tests/scene/gltf_fixture.h"
 
 namespace {
@@ -301,6 +302,29 @@ TEST(Cli, SweepRefusesBadOutHugeSweepsAndOutOfRangeIntegers) {
                          (dir / "dev.toml").string());
   EXPECT_EQ(dev.exit_code, 2);
   EXPECT_NE(dev.output.find((dir / "mine.toml").string()), std::string::npos) << dev.output;
+}
+
+// A DISPLAY that takes the connection and never answers: the sweep gives up on the charts
+// after the display check's deadline, writes everything else and the report, says why, and
+// exits 0. The check's attempt is then still waiting inside Xlib, so the process ends without
+// its exit handlers (display_check.h); its output must still be complete.
+TEST(Cli, SweepWithAHungDisplayWritesTheReportWithoutCharts) {
+  skinsim::test::HungDisplay hung;
+  ASSERT_FALSE(hung.name().empty()) << "no free port in 6200-6399";
+  const auto dir = temp_dir("sweep_hung_display");
+  ASSERT_EQ(setenv("DISPLAY", hung.name().c_str(), 1), 0);
+  const Result r =
+      run("sweep --scales 0.5 --luts 8x32 --resolutions 128x96 --head-triangles 2000 "
+          "--texture-size 64 --out " +
+          dir.string());
+  unsetenv("DISPLAY");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("X display '" + hung.name() + "' did not answer within"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("report.html (no charts)"), std::string::npos) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(dir / "report.html"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "results.json"));
 }
 
 // A scene whose skin materials match nothing: every configuration is still rendered and

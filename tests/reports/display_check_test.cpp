@@ -4,25 +4,23 @@
 // process with a message and status 2, not a crash.
 #include "reports/display_check.h"
 
-#include <arpa/inet.h>
 #include <gtest/gtest.h>
-#include <netinet/in.h>
 #include <poll.h>
 #include <signal.h>
-#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
-#include <cstdint>
 #include <cstdlib>
 #include <optional>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
 #include "reports/charts.h"
 #include "reports/error.h"
+#include "tests/hung_display.h"
 
 namespace skinsim::reports {
 namespace {
@@ -78,28 +76,27 @@ TEST(ChartsAvailable, NoWhenTheDisplayCannotBeOpened) {
 // A display that takes the connection but never answers (a hung X server, another program
 // on its port) would block Xlib forever: the check gives up after its deadline and says so.
 TEST(ChartsAvailable, NoWhenTheDisplayNeverAnswers) {
-  // A listener on 127.0.0.1:6000+N, display N over TCP: the kernel accepts the connection,
-  // nobody answers it.
-  const int listener = socket(AF_INET, SOCK_STREAM, 0);
-  ASSERT_GE(listener, 0);
-  int number = -1;
-  for (int n = 200; n < 400 && number < 0; ++n) {
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_port = htons(static_cast<std::uint16_t>(6000 + n));
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    if (bind(listener, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0) number = n;
-  }
-  ASSERT_GE(number, 0) << "no free port in 6200-6399";
-  ASSERT_EQ(listen(listener, 4), 0);
-  const std::string name = "127.0.0.1:" + std::to_string(number);
+  test::HungDisplay hung;
+  ASSERT_FALSE(hung.name().empty()) << "no free port in 6200-6399";
+  const std::string& name = hung.name();
   ScopedEnv use("DISPLAY", name);
   const auto start = std::chrono::steady_clock::now();
   std::string why;
   EXPECT_FALSE(charts_available(&why));
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(30));
   EXPECT_NE(why.find("'" + name + "' did not answer within"), std::string::npos) << why;
-  close(listener);  // resets the abandoned attempt's connection: it returns and ends
+  // The attempt given up on is still inside XOpenDisplay, holding Xlib's global lock.
+  EXPECT_EQ(abandoned_display_attempts(), 1);
+  // Closing the listener resets the waiting connection: the attempt returns and ends. Wait
+  // for it, so that it neither returns while this process exits (in a torn-down libX11: it
+  // crashed one run in eight under load) nor blocks the next test's XOpenDisplay.
+  hung.release();
+  const auto released = std::chrono::steady_clock::now();
+  while (abandoned_display_attempts() > 0 &&
+         std::chrono::steady_clock::now() - released < std::chrono::seconds(10)) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  EXPECT_EQ(abandoned_display_attempts(), 0);
 }
 
 TEST(ChartsAvailable, ChartFunctionsThrowInsteadOfCrashing) {
