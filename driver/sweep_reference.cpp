@@ -24,13 +24,7 @@ nlohmann::json reference_fingerprint(const pipeline::PipelineConfig& c, const Sc
   for (const pipeline::KnobSpec& k : pipeline::all_knobs()) {
     if (k.reference) knobs[k.name] = k.get(c);
   }
-  return {{"knobs", knobs},
-          {"scene",
-           {{"label", s.label()},
-            {"head_triangles", s.head_triangles},
-            {"texture_size", s.texture_size},
-            {"skin_materials", s.skin_materials},
-            {"units_per_mm", s.units_per_mm}}}};
+  return {{"knobs", knobs}, {"scene", scene_fingerprint(s)}};
 }
 
 // `expected`: the marker a usable cached copy has, its fingerprint and the build that

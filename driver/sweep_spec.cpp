@@ -340,13 +340,15 @@ nlohmann::json config_fingerprint(const SweepConfig& config, const SceneSource& 
                                   int height) {
   nlohmann::json knobs = nlohmann::json::object();
   for (const auto& [name, value] : all_knobs(config, width, height)) knobs[name] = value;
-  return {{"knobs", knobs},
-          {"scene",
-           {{"label", scene.label()},
-            {"head_triangles", scene.head_triangles},
-            {"texture_size", scene.texture_size},
-            {"skin_materials", scene.skin_materials},
-            {"units_per_mm", scene.units_per_mm}}}};
+  return {{"knobs", knobs}, {"scene", scene_fingerprint(scene)}};
+}
+
+nlohmann::json scene_fingerprint(const SceneSource& scene) {
+  return {{"label", scene.label()},
+          {"head_triangles", scene.head_triangles},
+          {"texture_size", scene.texture_size},
+          {"skin_materials", scene.skin_materials},
+          {"units_per_mm", scene.units_per_mm}};
 }
 
 std::string short_hash(const std::string& text) {

@@ -95,6 +95,10 @@ std::size_t count_sweep_configs(const SweepSpec& spec);
 nlohmann::json config_fingerprint(const SweepConfig& config, const SceneSource& scene, int width,
                                   int height);
 
+// The scene options a result depends on (label, head triangles, texture size, skin
+// materials, units per mm): part of config_fingerprint and of the cached reference's.
+nlohmann::json scene_fingerprint(const SceneSource& scene);
+
 // Every pipeline knob plus device, with the resolution resolved (the fingerprint's knobs;
 // a results row keeps those the configuration uses, see keep_used_knobs).
 std::vector<std::pair<std::string, std::string>> all_knobs(const SweepConfig& config, int width,

@@ -14,6 +14,7 @@
 #include "tests/app/run_skinsim.h"
 #include "tests/hung_display.h"
 #include "tests/scene/gltf_fixture.h"
+#include "tests/scoped_env.h"
 
 namespace {
 
@@ -117,9 +118,10 @@ TEST(Cli, UnknownDeviceIsExitTwo) {
 }
 
 TEST(Cli, UnknownSimdChoiceIsExitTwoNamingTheVariable) {
-  ASSERT_EQ(setenv("SKINSIM_SIMD", "avx9", 1), 0);
-  const Result r = run("devices");
-  unsetenv("SKINSIM_SIMD");
+  const Result r = [] {
+    const skinsim::test::ScopedEnv simd("SKINSIM_SIMD", "avx9");
+    return run("devices");
+  }();
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("SKINSIM_SIMD is 'avx9'"), std::string::npos) << r.output;
 }
@@ -312,12 +314,13 @@ TEST(Cli, SweepWithAHungDisplayWritesTheReportWithoutCharts) {
   skinsim::test::HungDisplay hung;
   ASSERT_FALSE(hung.name().empty()) << "no free port in 6200-6399";
   const auto dir = temp_dir("sweep_hung_display");
-  ASSERT_EQ(setenv("DISPLAY", hung.name().c_str(), 1), 0);
-  const Result r =
-      run("sweep --scales 0.5 --luts 8x32 --resolutions 128x96 --head-triangles 2000 "
-          "--texture-size 64 --out " +
-          dir.string());
-  unsetenv("DISPLAY");
+  const Result r = [&] {
+    const skinsim::test::ScopedEnv display("DISPLAY", hung.name());
+    return run(
+        "sweep --scales 0.5 --luts 8x32 --resolutions 128x96 --head-triangles 2000 "
+        "--texture-size 64 --out " +
+        dir.string());
+  }();
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("X display '" + hung.name() + "' did not answer within"),
             std::string::npos)
