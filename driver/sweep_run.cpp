@@ -134,8 +134,9 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
   const fs::path dir(options.out_dir);
 
   // Devices first: an unknown profile fails before any work or directory. A stored result
-  // made with other figures (an edited profile) or by another build of skinsim is not this
-  // sweep's: the profile's bytes and the build identity are part of the fingerprint.
+  // made with other figures (an edited profile), from an edited scene file or by another build
+  // of skinsim is not this sweep's: the profile's bytes, the scene's content
+  // (scene_fingerprint) and the build identity are part of the fingerprint.
   std::map<std::string, gpu_model::DeviceProfile> devices;
   std::map<std::string, std::string> device_fingerprints;
   for (const SweepConfig& c : configs) {
@@ -165,14 +166,15 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
   if (options.shard) status = {*options.shard, "running", "", {}, {}};
 
   std::vector<Job> jobs;
-  std::set<std::string> foreign;  // ids holding another sweep's result
+  std::set<std::string> foreign;                               // ids holding another sweep's result
+  const nlohmann::json scene = scene_fingerprint(spec.scene);  // reads a scan once, not per job
   for (std::size_t index = 0; index < configs.size(); ++index) {
     const SweepConfig& c = configs[index];
     Job job;
     job.config = &c;
     job.device = &devices.at(c.device);
     job.resolved = resolve_config(c.config, *job.device);
-    job.fingerprint = config_fingerprint(c, spec.scene, job.resolved.width, job.resolved.height);
+    job.fingerprint = config_fingerprint(c, scene, job.resolved.width, job.resolved.height);
     job.fingerprint["device_profile"] = device_fingerprints.at(c.device);
     job.fingerprint["build"] = build_identity();  // another skinsim may compute other figures
     summary.fingerprints[c.id] = job.fingerprint;

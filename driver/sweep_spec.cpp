@@ -9,6 +9,8 @@
 #include <map>
 #include <set>
 
+#include "scene/gltf_input.h"
+
 namespace skinsim::driver {
 
 namespace {
@@ -336,19 +338,22 @@ void keep_used_knobs(const SweepConfig& config, std::map<std::string, std::strin
   });
 }
 
-nlohmann::json config_fingerprint(const SweepConfig& config, const SceneSource& scene, int width,
+nlohmann::json config_fingerprint(const SweepConfig& config, const nlohmann::json& scene, int width,
                                   int height) {
   nlohmann::json knobs = nlohmann::json::object();
   for (const auto& [name, value] : all_knobs(config, width, height)) knobs[name] = value;
-  return {{"knobs", knobs}, {"scene", scene_fingerprint(scene)}};
+  return {{"knobs", knobs}, {"scene", scene}};
 }
 
 nlohmann::json scene_fingerprint(const SceneSource& scene) {
-  return {{"label", scene.label()},
-          {"head_triangles", scene.head_triangles},
-          {"texture_size", scene.texture_size},
-          {"skin_materials", scene.skin_materials},
-          {"units_per_mm", scene.units_per_mm}};
+  nlohmann::json j = {{"label", scene.label()},
+                      {"head_triangles", scene.head_triangles},
+                      {"texture_size", scene.texture_size},
+                      {"skin_materials", scene.skin_materials},
+                      {"units_per_mm", scene.units_per_mm}};
+  // The built-in head is made by the code, which the build identity covers.
+  if (!scene.builtin()) j["content"] = scene::gltf::content_fingerprint_of(scene.path);
+  return j;
 }
 
 std::string short_hash(const std::string& text) {

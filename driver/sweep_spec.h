@@ -90,13 +90,17 @@ std::vector<SweepConfig> expand_sweep(const SweepSpec& spec,
 std::size_t count_sweep_configs(const SweepSpec& spec);
 
 // Everything a finished configuration's results depend on that the sweep controls: every
-// pipeline knob (resolution resolved to `width`x`height`), the device and the scene options.
-// A stored result is reused only when its fingerprint equals this one.
-nlohmann::json config_fingerprint(const SweepConfig& config, const SceneSource& scene, int width,
+// pipeline knob (resolution resolved to `width`x`height`), the device and the scene
+// (`scene`: scene_fingerprint, computed once for all configurations). A stored result is
+// reused only when its fingerprint equals this one.
+nlohmann::json config_fingerprint(const SweepConfig& config, const nlohmann::json& scene, int width,
                                   int height);
 
-// The scene options a result depends on (label, head triangles, texture size, skin
-// materials, units per mm): part of config_fingerprint and of the cached reference's.
+// The scene a result depends on: the options (label, head triangles, texture size, skin
+// materials, units per mm) and, for a glTF file, its content (scene::gltf::
+// content_fingerprint_of: the file and the buffers and images it names), so an edited scan
+// at the same path is not mistaken for the old one. Part of config_fingerprint and of the
+// cached reference's. Throws scene::SceneError as loading the file would.
 nlohmann::json scene_fingerprint(const SceneSource& scene);
 
 // Every pipeline knob plus device, with the resolution resolved (the fingerprint's knobs;

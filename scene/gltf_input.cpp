@@ -8,11 +8,13 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string_view>
+#include <vector>
 
 #include "io/read_file.h"
 #include "scene/error.h"
 #include "scene/gltf_materials.h"
 #include "scene/json_depth.h"
+#include "util/fingerprint.h"
 
 namespace skinsim::scene::gltf {
 namespace {
@@ -84,10 +86,11 @@ std::string percent_decode(const std::string& uri) {
   return out;
 }
 
-// Every external buffers[i].uri / images[i].uri must name a regular file of bounded size;
-// checked here so the message can name the index and URI (tinygltf's cannot).
-void check_external_files(std::string_view json_text, const fs::path& dir,
-                          const std::string& path) {
+// The files that every external buffers[i].uri / images[i].uri names, each checked to be a
+// regular file of bounded size here, so the message can name the index and URI (tinygltf's
+// cannot).
+std::vector<fs::path> external_files(std::string_view json_text, const fs::path& dir,
+                                     const std::string& path) {
   nlohmann::json doc;
   try {
     doc = nlohmann::json::parse(json_text);
@@ -95,6 +98,7 @@ void check_external_files(std::string_view json_text, const fs::path& dir,
     fail(path, fmt::format("invalid JSON: {}", e.what()));
   }
   if (!doc.is_object()) fail(path, "the JSON top level is not an object");
+  std::vector<fs::path> files;
   for (const char* array : {"buffers", "images"}) {
     const auto it = doc.find(array);
     if (it == doc.end() || !it->is_array()) continue;
@@ -103,8 +107,9 @@ void check_external_files(std::string_view json_text, const fs::path& dir,
       if (!entry.is_object() || !entry.contains("uri") || !entry["uri"].is_string()) continue;
       const std::string uri = entry["uri"].get<std::string>();
       if (uri.rfind("data:", 0) == 0) continue;
+      files.push_back(dir / percent_decode(uri));
       try {
-        io::require_regular_file(dir / percent_decode(uri),
+        io::require_regular_file(files.back(),
                                  fmt::format("{}: {}[{}].uri '{}' names", path, array, i, uri),
                                  kMaxGltfInputBytes);
       } catch (const io::InputError& e) {
@@ -112,6 +117,7 @@ void check_external_files(std::string_view json_text, const fs::path& dir,
       }
     }
   }
+  return files;
 }
 
 // tinygltf's file access, replaced: no wordexp() path expansion, no fopen() that blocks on a
@@ -146,9 +152,16 @@ std::string lower_extension(const std::string& path) {
   return ext;
 }
 
-}  // namespace
+// The file's bytes and its JSON, checked as parse_gltf_file needs them before tinygltf runs.
+struct GltfFile {
+  std::string bytes;
+  bool binary = false;
+  std::string_view json;
+  fs::path dir;
+  std::vector<fs::path> external;
+};
 
-tinygltf::Model parse_gltf_file(const std::string& path) {
+GltfFile read_gltf_file(const std::string& path) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) {
     throw SceneError(fmt::format("{}: file not found (or not a regular file)", path));
@@ -157,17 +170,41 @@ tinygltf::Model parse_gltf_file(const std::string& path) {
   if (ext != ".gltf" && ext != ".glb") {
     throw SceneError(fmt::format("{}: expected a .gltf or .glb file", path));
   }
-  std::string bytes;
+  GltfFile f;
   try {
-    bytes = io::read_regular_file(path, "glTF file", kMaxGltfInputBytes);
+    f.bytes = io::read_regular_file(path, "glTF file", kMaxGltfInputBytes);
   } catch (const io::InputError& e) {
     throw SceneError(fmt::format("{}: {}", path, e.what()));
   }
-  const bool binary = ext == ".glb";
-  const std::string_view json = binary ? glb_json_chunk(bytes, path) : std::string_view(bytes);
-  check_depth(json, path);
-  const fs::path dir = fs::path(path).parent_path();
-  check_external_files(json, dir, path);
+  f.binary = ext == ".glb";
+  f.json = f.binary ? glb_json_chunk(f.bytes, path) : std::string_view(f.bytes);
+  check_depth(f.json, path);
+  f.dir = fs::path(path).parent_path();
+  f.external = external_files(f.json, f.dir, path);
+  return f;
+}
+
+}  // namespace
+
+std::string content_fingerprint_of(const std::string& path) {
+  const GltfFile f = read_gltf_file(path);
+  std::string parts = content_fingerprint(f.bytes);
+  for (const fs::path& file : f.external) {
+    try {
+      parts +=
+          content_fingerprint(io::read_regular_file(file, "glTF resource", kMaxGltfInputBytes));
+    } catch (const io::InputError& e) {
+      throw SceneError(fmt::format("{}: {}", path, e.what()));
+    }
+  }
+  return f.external.empty() ? parts : content_fingerprint(parts);
+}
+
+tinygltf::Model parse_gltf_file(const std::string& path) {
+  const GltfFile f = read_gltf_file(path);
+  const std::string& bytes = f.bytes;
+  const bool binary = f.binary;
+  const fs::path& dir = f.dir;
 
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&decode_unless_in_buffer_view, nullptr);

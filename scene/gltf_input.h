@@ -20,4 +20,9 @@ inline constexpr std::uintmax_t kMaxGltfInputBytes = std::uintmax_t{512} << 20;
 
 tinygltf::Model parse_gltf_file(const std::string& path);
 
+// content_fingerprint (util/fingerprint.h) of the file's bytes, or, where it names external
+// buffers or images, of the file's and each of theirs: what a stored result made from the
+// scene must match. Checks and errors as parse_gltf_file's.
+std::string content_fingerprint_of(const std::string& path);
+
 }  // namespace skinsim::scene::gltf

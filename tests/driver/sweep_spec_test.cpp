@@ -5,11 +5,17 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <set>
 
+#include "scene/error.h"
+
 namespace skinsim::driver {
 namespace {
+
+namespace fs = std::filesystem;
 
 TEST(SweepSpec, DefaultSweepIsFourScalesByFourLuts) {
   const std::vector<SweepConfig> configs = expand_sweep(default_sweep_spec());
@@ -88,7 +94,8 @@ TEST(SweepSpec, AnAxisATechniqueDoesNotUseRunsOnceForIt) {
   EXPECT_EQ(configs[0].label, "scale 1, technique mobile");
   // The wrap frame is the one the full cross product ran as scale0.5_wrap: same id, same
   // fingerprint, so a sweep directory written before resumes it.
-  EXPECT_EQ(config_fingerprint(wrap, SceneSource{}, 64, 48)["knobs"]["scale"], "0.5");
+  EXPECT_EQ(config_fingerprint(wrap, scene_fingerprint(SceneSource{}), 64, 48)["knobs"]["scale"],
+            "0.5");
 }
 
 TEST(SweepSpec, AnUnusedAxisKeepsTheFixedValue) {
@@ -249,16 +256,53 @@ TEST(SweepSpec, BadInputNamesTheOrigin) {
 
 TEST(SweepSpec, FingerprintCoversKnobsDeviceAndScene) {
   const std::vector<SweepConfig> configs = expand_sweep(default_sweep_spec());
-  const SceneSource scene;
+  const nlohmann::json scene = scene_fingerprint(SceneSource{});
   const nlohmann::json a = config_fingerprint(configs[0], scene, 2048, 1536);
   EXPECT_EQ(a, config_fingerprint(configs[0], scene, 2048, 1536));
   EXPECT_NE(a, config_fingerprint(configs[1], scene, 2048, 1536));
   EXPECT_NE(a, config_fingerprint(configs[0], scene, 1024, 768));
-  SceneSource other = scene;
+  SceneSource other;
   other.head_triangles = 5000;
-  EXPECT_NE(a, config_fingerprint(configs[0], other, 2048, 1536));
+  EXPECT_NE(a, config_fingerprint(configs[0], scene_fingerprint(other), 2048, 1536));
   EXPECT_EQ(a["knobs"]["resolution"], "2048x1536");
   EXPECT_EQ(a["knobs"]["device"], "ipad4");
+}
+
+// An edited scan at the same path, or an edited buffer or image beside it, is another scene:
+// results made from the old one must not be resumed.
+TEST(SweepSpec, SceneFingerprintCoversTheFilesContent) {
+  const fs::path dir = fs::path(::testing::TempDir()) / "scene_fingerprint";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const auto write = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir / name, std::ios::binary) << text;
+  };
+  const std::string gltf =
+      R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "mesh.bin", "byteLength": 4}]})";
+  write("head.gltf", gltf);
+  write("mesh.bin", "abcd");
+  SceneSource scene;
+  scene.path = (dir / "head.gltf").string();
+  const nlohmann::json before = scene_fingerprint(scene);
+  EXPECT_EQ(before["label"], scene.path);
+  EXPECT_EQ(scene_fingerprint(scene), before);
+
+  write("mesh.bin", "abce");
+  const nlohmann::json buffer_edited = scene_fingerprint(scene);
+  EXPECT_NE(buffer_edited, before);
+  write("mesh.bin", "abcd");
+  EXPECT_EQ(scene_fingerprint(scene), before);
+  write("head.gltf", gltf + " ");
+  EXPECT_NE(scene_fingerprint(scene), before);
+
+  fs::remove(dir / "mesh.bin");  // as loading it would: the file at fault, named
+  try {
+    scene_fingerprint(scene);
+    ADD_FAILURE() << "a missing buffer was fingerprinted";
+  } catch (const scene::SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("mesh.bin"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(scene_fingerprint(SceneSource{}).contains("content"));  // the code makes it
 }
 
 TEST(SweepSpec, ShortHashIsStable) {
