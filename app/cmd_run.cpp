@@ -56,6 +56,7 @@ int run(const RunOptions& o) {
   };
   job.threads = o.device.threads;
   job.reference = o.reference;
+  job.previous_run = o.out;  // the run this one replaces: its reference may be this one's
   const driver::FrameJobResult frame_job = driver::run_frame_job(job);
   const driver::FrameResult& result = frame_job.frame;
 
@@ -81,10 +82,17 @@ int run(const RunOptions& o) {
   nlohmann::json json = driver::frame_result_json(result, o.scene.label());
   json["device"] = device.name;
   if (frame_job.quality) {
-    quality::save_png(frame_job.reference->image, out / "reference.png");
+    quality::save_png(frame_job.reference->image, out / driver::kRunReferenceImage);
+    quality::save_mask_png(frame_job.reference->skin, out / driver::kRunReferenceMask);
+    json["reference"] = frame_job.reference_marker;
+    if (frame_job.reference_reused) {
+      fmt::print("reference: reused from {}/{} (same scene, reference knobs and build)\n", o.out,
+                 driver::kRunReferenceImage);
+    }
     const driver::FrameQuality& q = *frame_job.quality;
     quality::save_png(q.error_map, out / "error_flip.png");
-    written.insert(written.end(), {"reference.png", "error_flip.png"});
+    written.insert(written.end(),
+                   {driver::kRunReferenceImage, driver::kRunReferenceMask, "error_flip.png"});
     nlohmann::json metrics = nlohmann::json::object();
     for (const auto& [name, value] : q.metrics) metrics[name] = quality::metric_to_json(value);
     if (q.has_skin_metrics()) {

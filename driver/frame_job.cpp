@@ -1,10 +1,33 @@
 #include "driver/frame_job.h"
 
+#include <filesystem>
+
+#include "driver/reference_cache.h"
 #include "driver/skin_diagnosis.h"
+#include "io/read_file.h"
 #include "pipeline/reference/reference.h"
 #include "util/check.h"
 
 namespace skinsim::driver {
+
+namespace {
+
+// result.json's "reference" of a previous run in `dir`; null when there is none or it is not
+// JSON (a damaged or foreign directory is not an error here: the reference is rendered).
+nlohmann::json previous_marker(const std::filesystem::path& dir) {
+  const std::filesystem::path result = dir / "result.json";
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(result, ec)) return nullptr;
+  try {
+    const nlohmann::json j = nlohmann::json::parse(
+        io::read_regular_file(result, "previous run's result"), nullptr, false);
+    return j.is_object() && j.contains("reference") ? j["reference"] : nlohmann::json(nullptr);
+  } catch (const std::exception&) {
+    return nullptr;
+  }
+}
+
+}  // namespace
 
 FrameJobResult run_frame_job(const FrameJob& job) {
   SKINSIM_CHECK(job.device != nullptr);
@@ -18,8 +41,16 @@ FrameJobResult run_frame_job(const FrameJob& job) {
   r.frame = run_frame(*r.gpu_scene, job.config, *job.device, job.threads, job.capture);
   for (const std::string& notice : r.frame.output.notices) warn(notice);
   if (job.reference) {
+    r.reference_marker = reference_marker(job.config, job.scene);
+    ReferenceImages kept;
+    r.reference_reused = !job.previous_run.empty() &&
+                         previous_marker(job.previous_run) == r.reference_marker &&
+                         load_reference(job.previous_run / kRunReferenceImage,
+                                        job.previous_run / kRunReferenceMask, kept);
     r.reference =
-        reference_images(pipeline::render_reference(*r.gpu_scene, job.config, job.threads));
+        r.reference_reused
+            ? std::move(kept)
+            : reference_images(pipeline::render_reference(*r.gpu_scene, job.config, job.threads));
     r.quality = evaluate_quality(r.frame.output.frame, *r.reference);
     if (!r.quality->has_skin_metrics()) {
       r.no_skin = no_skin_reason(*r.scene, job.scene.skin_materials);

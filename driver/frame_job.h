@@ -6,8 +6,10 @@
 // evaluate_quality) itself.
 #pragma once
 
+#include <filesystem>
 #include <functional>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 
@@ -55,13 +57,22 @@ struct FrameJob {
   int threads = 0;
   bool reference = true;  // render the reference and measure the quality against it
   PassCapture capture;    // optional: sees every pass of the frame (`skinsim export`)
+  // Optional: a previous `skinsim run` directory whose reference is reused when its marker
+  // (result.json's "reference": reference_marker) is this frame's, instead of rendering it.
+  std::filesystem::path previous_run;
 };
+
+// The files of a run's reference, as run_frame_job reuses them from FrameJob::previous_run.
+inline constexpr const char* kRunReferenceImage = "reference.png";
+inline constexpr const char* kRunReferenceMask = "reference_skin.png";
 
 struct FrameJobResult {
   std::unique_ptr<scene::Scene> scene;
   std::unique_ptr<pipeline::GpuScene> gpu_scene;  // refers to *scene
   FrameResult frame;
   std::optional<ReferenceImages> reference;  // with FrameJob::reference
+  nlohmann::json reference_marker;           // with FrameJob::reference (reference_cache.h)
+  bool reference_reused = false;             // from FrameJob::previous_run, not rendered
   std::optional<FrameQuality> quality;       // with FrameJob::reference
   // Set when the reference shows no skin (so there are no skin metrics): which rule found
   // none and what to pass (skin_diagnosis.h); also sent to `warn`.

@@ -17,7 +17,8 @@ void collect(const nlohmann::json& j, const std::string& path, NamedValues& out)
   const std::string prefix = path.empty() ? "" : path + ".";
   if (j.is_object()) {
     for (const auto& [key, value] : j.items()) {
-      if (path.empty() && key == "config") continue;
+      // Settings, not measurements: the knobs, and what the run's reference was made from.
+      if (path.empty() && (key == "config" || key == "reference")) continue;
       collect(value, prefix + key, out);
     }
     return;

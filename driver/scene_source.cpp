@@ -1,5 +1,6 @@
 #include "driver/scene_source.h"
 
+#include "scene/gltf_input.h"
 #include "scene/gltf_loader.h"
 #include "scene/procedural_head.h"
 
@@ -21,6 +22,17 @@ scene::Scene load_scene(const SceneSource& source, float aspect) {
   o.skin_materials = source.skin_materials;
   o.warn = source.warn;
   return scene::load_gltf(source.path, o);
+}
+
+nlohmann::json scene_fingerprint(const SceneSource& scene) {
+  nlohmann::json j = {{"label", scene.label()},
+                      {"head_triangles", scene.head_triangles},
+                      {"texture_size", scene.texture_size},
+                      {"skin_materials", scene.skin_materials},
+                      {"units_per_mm", scene.units_per_mm}};
+  // The built-in head is made by the code, which the build identity covers.
+  if (!scene.builtin()) j["content"] = scene::gltf::content_fingerprint_of(scene.path);
+  return j;
 }
 
 }  // namespace skinsim::driver

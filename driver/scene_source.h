@@ -2,6 +2,7 @@
 #pragma once
 
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -27,5 +28,13 @@ struct SceneSource {
 
 // Loads or generates the scene; throws scene::SceneError naming the file on bad input.
 scene::Scene load_scene(const SceneSource& source, float aspect);
+
+// The scene a result depends on: the options (label, head triangles, texture size, skin
+// materials, units per mm) and, for a glTF file, its content (scene::gltf::
+// content_fingerprint_of: the file and the buffers and images it names), so an edited scan
+// at the same path is not mistaken for the old one. Part of a sweep configuration's
+// fingerprint and of a kept reference's (reference_cache.h). Throws scene::SceneError as loading
+// the file would.
+nlohmann::json scene_fingerprint(const SceneSource& scene);
 
 }  // namespace skinsim::driver

@@ -7,42 +7,26 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
+#include "driver/reference_cache.h"
 #include "driver/sweep_spec.h"
 #include "io/atomic_file.h"
 #include "io/file_lock.h"
 #include "io/read_file.h"
 #include "pipeline/reference/reference.h"
 #include "quality/image.h"
-#include "util/build_identity.h"
 
 namespace skinsim::driver {
 
 namespace {
 
-nlohmann::json reference_fingerprint(const pipeline::PipelineConfig& c, const SceneSource& s) {
-  nlohmann::json knobs = nlohmann::json::object();
-  for (const pipeline::KnobSpec& k : pipeline::all_knobs()) {
-    if (k.reference) knobs[k.name] = k.get(c);
-  }
-  return {{"knobs", knobs}, {"scene", scene_fingerprint(s)}};
-}
-
-// `expected`: the marker a usable cached copy has, its fingerprint and the build that
-// rendered it (another build may render another image).
+// `expected`: the marker (reference_marker) a usable cached copy has.
 bool load_cached(const std::filesystem::path& marker, const nlohmann::json& expected,
                  const std::filesystem::path& image_path, const std::filesystem::path& mask_path,
                  ReferenceImages& out) {
   if (!std::filesystem::exists(marker)) return false;
   const nlohmann::json stored = nlohmann::json::parse(
       io::read_regular_file(marker, "reference cache marker"), nullptr, /*allow_exceptions=*/false);
-  if (stored != expected) return false;
-  try {
-    out.image = quality::load_png(image_path);
-    out.skin = quality::load_mask_png(mask_path);
-  } catch (const std::exception&) {
-    return false;  // damaged or deleted by hand: render again
-  }
-  return out.image.width == out.skin.width && out.image.height == out.skin.height;
+  return stored == expected && load_reference(image_path, mask_path, out);
 }
 
 }  // namespace
@@ -68,8 +52,7 @@ ReferenceImages cached_reference(const pipeline::GpuScene& scene,
   const std::filesystem::path image_path = refs_dir / (stem + ".png");
   const std::filesystem::path mask_path = refs_dir / reference_mask_path(stem + ".png");
   const std::filesystem::path marker = refs_dir / (stem + ".json");
-  const nlohmann::json marker_content = {{"fingerprint", reference_fingerprint(resolved, source)},
-                                         {"build", build_identity()}};
+  const nlohmann::json marker_content = reference_marker(resolved, source);
 
   // Processes sharing the directory (sweep shards) take turns: the first renders and writes
   // the reference, the others wait and then load it, so it is rendered once and never

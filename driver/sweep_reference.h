@@ -1,5 +1,5 @@
-// The reference frame of a sweep, rendered once per (scene, resolution, material knobs) and
-// cached in the sweep directory (refs/), so a resumed sweep does not render it again.
+// The reference frame of a sweep, rendered once per (scene, resolution, reference knobs) and
+// kept in the sweep directory (refs/), so a resumed sweep does not render it again.
 #pragma once
 
 #include <cstdio>
@@ -14,9 +14,8 @@
 namespace skinsim::driver {
 
 // File stem of the reference a resolved configuration is compared against, e.g.
-// "reference_2048x1536_1f0c...". The reference depends on the configuration only through
-// the knobs marked `reference` in the knob table (the resolution, the BRDF parameters, the
-// light and framing: pipeline/knob.h), so configurations that differ in other knobs share it.
+// "reference_2048x1536_1f0c...": from its fingerprint (reference_cache.h), so configurations
+// that differ only in knobs the reference does not read share it.
 std::string reference_stem(const pipeline::PipelineConfig& resolved, const SceneSource& scene);
 
 // refs/<stem>.png, relative to the sweep directory, and its skin mask's path from it

@@ -9,8 +9,6 @@
 #include <map>
 #include <set>
 
-#include "scene/gltf_input.h"
-
 namespace skinsim::driver {
 
 namespace {
@@ -343,17 +341,6 @@ nlohmann::json config_fingerprint(const SweepConfig& config, const nlohmann::jso
   nlohmann::json knobs = nlohmann::json::object();
   for (const auto& [name, value] : all_knobs(config, width, height)) knobs[name] = value;
   return {{"knobs", knobs}, {"scene", scene}};
-}
-
-nlohmann::json scene_fingerprint(const SceneSource& scene) {
-  nlohmann::json j = {{"label", scene.label()},
-                      {"head_triangles", scene.head_triangles},
-                      {"texture_size", scene.texture_size},
-                      {"skin_materials", scene.skin_materials},
-                      {"units_per_mm", scene.units_per_mm}};
-  // The built-in head is made by the code, which the build identity covers.
-  if (!scene.builtin()) j["content"] = scene::gltf::content_fingerprint_of(scene.path);
-  return j;
 }
 
 std::string short_hash(const std::string& text) {

@@ -96,13 +96,6 @@ std::size_t count_sweep_configs(const SweepSpec& spec);
 nlohmann::json config_fingerprint(const SweepConfig& config, const nlohmann::json& scene, int width,
                                   int height);
 
-// The scene a result depends on: the options (label, head triangles, texture size, skin
-// materials, units per mm) and, for a glTF file, its content (scene::gltf::
-// content_fingerprint_of: the file and the buffers and images it names), so an edited scan
-// at the same path is not mistaken for the old one. Part of config_fingerprint and of the
-// cached reference's. Throws scene::SceneError as loading the file would.
-nlohmann::json scene_fingerprint(const SceneSource& scene);
-
 // Every pipeline knob plus device, with the resolution resolved (the fingerprint's knobs;
 // a results row keeps those the configuration uses, see keep_used_knobs).
 std::vector<std::pair<std::string, std::string>> all_knobs(const SweepConfig& config, int width,

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
@@ -356,6 +357,57 @@ TEST(Cli, SweepWithoutSkinComparesWholeFrames) {
 
 // `run` on a scene without skin renders and writes everything, warns why, and leaves the skin
 // metrics out of result.json (saying why) while the frame metrics are there.
+// A run into the directory of an earlier run reuses that run's reference when nothing the
+// reference depends on changed (result.json's "reference" marker): the same files and metrics
+// as rendering it, in a fraction of the time; any other reference, or damaged files, render.
+TEST(Cli, RunReusesTheReferenceOfTheRunItReplaces) {
+  const auto dir = temp_dir("reuse_reference");
+  const std::string base = "run --resolution 128x96 --head-triangles 2000 --texture-size 64 ";
+  const auto bytes = [](const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  const auto quality = [](const std::filesystem::path& run_dir) {
+    std::ifstream in(run_dir / "result.json");
+    return nlohmann::json::parse(in).at("quality");
+  };
+  const char* kReused = "reference: reused";
+
+  const Result first = run(base + "--out " + dir.string());
+  ASSERT_EQ(first.exit_code, 0) << first.output;
+  EXPECT_EQ(first.output.find(kReused), std::string::npos) << first.output;
+  const std::string reference = bytes(dir / "reference.png");
+  const std::string mask = bytes(dir / "reference_skin.png");
+  ASSERT_FALSE(reference.empty());
+  ASSERT_FALSE(mask.empty());
+
+  // Another buffer scale: a frame knob, not a reference one.
+  const Result second = run(base + "--scale 0.25 --out " + dir.string());
+  ASSERT_EQ(second.exit_code, 0) << second.output;
+  EXPECT_NE(second.output.find(kReused), std::string::npos) << second.output;
+  EXPECT_EQ(bytes(dir / "reference.png"), reference);
+  EXPECT_EQ(bytes(dir / "reference_skin.png"), mask);
+  const auto fresh = temp_dir("reuse_reference_fresh");
+  const Result rendered = run(base + "--scale 0.25 --out " + fresh.string());
+  ASSERT_EQ(rendered.exit_code, 0) << rendered.output;
+  EXPECT_EQ(quality(dir), quality(fresh));
+  EXPECT_EQ(bytes(dir / "error_flip.png"), bytes(fresh / "error_flip.png"));
+
+  // The key light is a reference knob: rendered again.
+  const Result relit = run(base + "--light-azimuth 30 --out " + dir.string());
+  ASSERT_EQ(relit.exit_code, 0) << relit.output;
+  EXPECT_EQ(relit.output.find(kReused), std::string::npos) << relit.output;
+  EXPECT_NE(bytes(dir / "reference.png"), reference);
+
+  // A damaged image with a matching marker: rendered again, not an error.
+  ASSERT_EQ(run(base + "--out " + dir.string()).exit_code, 0);
+  std::ofstream(dir / "reference.png", std::ios::binary | std::ios::trunc) << "not a png";
+  const Result repaired = run(base + "--out " + dir.string());
+  ASSERT_EQ(repaired.exit_code, 0) << repaired.output;
+  EXPECT_EQ(repaired.output.find(kReused), std::string::npos) << repaired.output;
+  EXPECT_EQ(bytes(dir / "reference.png"), reference);
+}
+
 TEST(Cli, RunWithoutSkinWritesFrameMetricsAndSaysWhy) {
   if (!std::filesystem::exists(skinsim::test_paths::kLeePerrySmith))
     GTEST_SKIP() << "asset not present";

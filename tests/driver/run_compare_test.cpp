@@ -57,6 +57,9 @@ TEST(ResultValues, NamesNumbersByPathAndRepeatedNamesByCount) {
   EXPECT_EQ(v.at("timing.passes.blur_h#2.ms"), 2.0);
   EXPECT_EQ(v.at("counters.skin.renderer.fragments_shaded"), 100.0);
   EXPECT_EQ(v.count("config.lut"), 0u);  // settings are compared as changes, not values
+  nlohmann::json with_reference = result(2.0, 100.0, "8x32");
+  with_reference["reference"] = {{"fingerprint", {{"scene", {{"head_triangles", 60000}}}}}};
+  EXPECT_EQ(numeric_values(with_reference), v);  // what the reference was made from: settings
 }
 
 TEST(ResultValues, CountersAreExactAndModelledValuesHaveATolerance) {

@@ -1,0 +1,31 @@
+// What a reference frame kept on disk must match to be reused, and loading it: a sweep keeps
+// its references in refs/ (sweep_reference.h), a run keeps its own beside its frame
+// (frame_job.h), and both reuse a kept copy only when its marker equals the one here.
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "driver/frame_quality.h"
+#include "driver/scene_source.h"
+#include "pipeline/config.h"
+
+namespace skinsim::driver {
+
+// What the reference depends on: the knobs marked `reference` in the knob table (the
+// resolution, the BRDF parameters, the light and framing: pipeline/knob.h) and the scene
+// (scene_fingerprint). Configurations that differ only in other knobs share a reference.
+nlohmann::json reference_fingerprint(const pipeline::PipelineConfig& resolved,
+                                     const SceneSource& scene);
+
+// The marker a kept reference carries: its fingerprint and the build that rendered it
+// (another build may render another image).
+nlohmann::json reference_marker(const pipeline::PipelineConfig& resolved, const SceneSource& scene);
+
+// Loads a reference image and its skin mask (as quality::save_png and save_mask_png wrote
+// them) into `out`: false if either is missing or damaged or their sizes differ. The image
+// is the 8-bit one written, so metrics against it are those against the rendered reference.
+bool load_reference(const std::filesystem::path& image, const std::filesystem::path& mask,
+                    ReferenceImages& out);
+
+}  // namespace skinsim::driver
