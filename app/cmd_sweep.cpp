@@ -220,8 +220,9 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
   if (summary.foreign_ignored) {
     fmt::print(stderr,
                "skinsim sweep: note: {} stored results from a different sweep ignored (another "
-               "--set knob, scene, device profile or build of skinsim wrote them into {}); this "
-               "sweep replaces them as it computes those configurations\n",
+               "--set knob, scene or scene file content, device profile or build of skinsim "
+               "wrote them into {}); this sweep replaces them as it computes those "
+               "configurations\n",
                summary.foreign_ignored, o.out);
   }
   const reports::SweepTable table =
