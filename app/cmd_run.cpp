@@ -12,6 +12,7 @@
 #include "driver/frame_passes.h"
 #include "driver/frame_quality.h"
 #include "driver/images.h"
+#include "driver/reference_cache.h"
 #include "driver/result_json.h"
 #include "gpu_model/profile_loader.h"
 #include "gpu_model/sensitivity.h"
@@ -83,7 +84,8 @@ int run(const RunOptions& o) {
   json["device"] = device.name;
   if (frame_job.quality) {
     quality::save_png(frame_job.reference->image, out / driver::kRunReferenceImage);
-    quality::save_mask_png(frame_job.reference->skin, out / driver::kRunReferenceMask);
+    const std::string mask = driver::reference_mask_path(driver::kRunReferenceImage);
+    quality::save_mask_png(frame_job.reference->skin, out / mask);
     json["reference"] = frame_job.reference_marker;
     if (frame_job.reference_reused) {
       fmt::print("reference: reused from {}/{} (same scene, reference knobs and build)\n", o.out,
@@ -91,8 +93,7 @@ int run(const RunOptions& o) {
     }
     const driver::FrameQuality& q = *frame_job.quality;
     quality::save_png(q.error_map, out / "error_flip.png");
-    written.insert(written.end(),
-                   {driver::kRunReferenceImage, driver::kRunReferenceMask, "error_flip.png"});
+    written.insert(written.end(), {driver::kRunReferenceImage, mask, "error_flip.png"});
     nlohmann::json metrics = nlohmann::json::object();
     for (const auto& [name, value] : q.metrics) metrics[name] = quality::metric_to_json(value);
     if (q.has_skin_metrics()) {

@@ -41,12 +41,12 @@ FrameJobResult run_frame_job(const FrameJob& job) {
   r.frame = run_frame(*r.gpu_scene, job.config, *job.device, job.threads, job.capture);
   for (const std::string& notice : r.frame.output.notices) warn(notice);
   if (job.reference) {
-    r.reference_marker = reference_marker(job.config, job.scene);
+    r.reference_marker = reference_marker(job.config, scene_fingerprint(job.scene));
     ReferenceImages kept;
-    r.reference_reused = !job.previous_run.empty() &&
-                         previous_marker(job.previous_run) == r.reference_marker &&
-                         load_reference(job.previous_run / kRunReferenceImage,
-                                        job.previous_run / kRunReferenceMask, kept);
+    r.reference_reused =
+        !job.previous_run.empty() && previous_marker(job.previous_run) == r.reference_marker &&
+        load_reference(job.previous_run / kRunReferenceImage,
+                       job.previous_run / reference_mask_path(kRunReferenceImage), kept);
     r.reference =
         r.reference_reused
             ? std::move(kept)

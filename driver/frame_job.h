@@ -62,9 +62,9 @@ struct FrameJob {
   std::filesystem::path previous_run;
 };
 
-// The files of a run's reference, as run_frame_job reuses them from FrameJob::previous_run.
+// A run's reference image, as run_frame_job reuses it from FrameJob::previous_run (its skin
+// mask beside it: reference_mask_path).
 inline constexpr const char* kRunReferenceImage = "reference.png";
-inline constexpr const char* kRunReferenceMask = "reference_skin.png";
 
 struct FrameJobResult {
   std::unique_ptr<scene::Scene> scene;

@@ -14,13 +14,18 @@ namespace skinsim::driver {
 
 // What the reference depends on: the knobs marked `reference` in the knob table (the
 // resolution, the BRDF parameters, the light and framing: pipeline/knob.h) and the scene
-// (scene_fingerprint). Configurations that differ only in other knobs share a reference.
+// (`scene`: scene_fingerprint, which reads a scan, so callers compute it once).
+// Configurations that differ only in other knobs share a reference.
 nlohmann::json reference_fingerprint(const pipeline::PipelineConfig& resolved,
-                                     const SceneSource& scene);
+                                     const nlohmann::json& scene);
 
 // The marker a kept reference carries: its fingerprint and the build that rendered it
 // (another build may render another image).
-nlohmann::json reference_marker(const pipeline::PipelineConfig& resolved, const SceneSource& scene);
+nlohmann::json reference_marker(const pipeline::PipelineConfig& resolved,
+                                const nlohmann::json& scene);
+
+// The skin mask kept beside a reference image: <image stem>_skin.png.
+std::string reference_mask_path(const std::string& reference_image);
 
 // Loads a reference image and its skin mask (as quality::save_png and save_mask_png wrote
 // them) into `out`: false if either is missing or damaged or their sizes differ. The image

@@ -31,7 +31,7 @@ bool load_cached(const std::filesystem::path& marker, const nlohmann::json& expe
 
 }  // namespace
 
-std::string reference_stem(const pipeline::PipelineConfig& resolved, const SceneSource& scene) {
+std::string reference_stem(const pipeline::PipelineConfig& resolved, const nlohmann::json& scene) {
   return fmt::format("reference_{}x{}_{}", resolved.width, resolved.height,
                      short_hash(reference_fingerprint(resolved, scene).dump()).substr(0, 8));
 }
@@ -40,19 +40,16 @@ std::string reference_image_path(const std::string& stem) {
   return "refs/" + stem + ".png";
 }
 
-std::string reference_mask_path(const std::string& reference_image) {
-  return std::filesystem::path(reference_image).replace_extension().string() + "_skin.png";
-}
-
 ReferenceImages cached_reference(const pipeline::GpuScene& scene,
                                  const pipeline::PipelineConfig& resolved,
-                                 const SceneSource& source, const std::filesystem::path& refs_dir,
-                                 int threads, bool* rendered, std::FILE* notes) {
-  const std::string stem = reference_stem(resolved, source);
+                                 const nlohmann::json& scene_fingerprint,
+                                 const std::filesystem::path& refs_dir, int threads, bool* rendered,
+                                 std::FILE* notes) {
+  const std::string stem = reference_stem(resolved, scene_fingerprint);
   const std::filesystem::path image_path = refs_dir / (stem + ".png");
   const std::filesystem::path mask_path = refs_dir / reference_mask_path(stem + ".png");
   const std::filesystem::path marker = refs_dir / (stem + ".json");
-  const nlohmann::json marker_content = reference_marker(resolved, source);
+  const nlohmann::json marker_content = reference_marker(resolved, scene_fingerprint);
 
   // Processes sharing the directory (sweep shards) take turns: the first renders and writes
   // the reference, the others wait and then load it, so it is rendered once and never

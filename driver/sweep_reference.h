@@ -7,6 +7,7 @@
 #include <string>
 
 #include "driver/frame_quality.h"
+#include "driver/reference_cache.h"
 #include "driver/scene_source.h"
 #include "pipeline/config.h"
 #include "pipeline/gpu_scene.h"
@@ -14,14 +15,13 @@
 namespace skinsim::driver {
 
 // File stem of the reference a resolved configuration is compared against, e.g.
-// "reference_2048x1536_1f0c...": from its fingerprint (reference_cache.h), so configurations
-// that differ only in knobs the reference does not read share it.
-std::string reference_stem(const pipeline::PipelineConfig& resolved, const SceneSource& scene);
+// "reference_2048x1536_1f0c...": from its fingerprint (reference_cache.h; `scene`:
+// scene_fingerprint), so configurations that differ only in knobs the reference does not
+// read share it.
+std::string reference_stem(const pipeline::PipelineConfig& resolved, const nlohmann::json& scene);
 
-// refs/<stem>.png, relative to the sweep directory, and its skin mask's path from it
-// (refs/<stem>_skin.png).
+// refs/<stem>.png, relative to the sweep directory (its skin mask: reference_mask_path).
 std::string reference_image_path(const std::string& stem);
-std::string reference_mask_path(const std::string& reference_image);
 
 // Loads refs/<stem>.png and its skin mask from `refs_dir` if a complete cached copy exists,
 // else renders the reference with `threads` host threads and writes it there (atomically;
@@ -31,7 +31,8 @@ std::string reference_mask_path(const std::string& reference_image);
 // A render says when it starts and how long it took on `notes`.
 ReferenceImages cached_reference(const pipeline::GpuScene& scene,
                                  const pipeline::PipelineConfig& resolved,
-                                 const SceneSource& source, const std::filesystem::path& refs_dir,
-                                 int threads, bool* rendered = nullptr, std::FILE* notes = nullptr);
+                                 const nlohmann::json& scene_fingerprint,
+                                 const std::filesystem::path& refs_dir, int threads,
+                                 bool* rendered = nullptr, std::FILE* notes = nullptr);
 
 }  // namespace skinsim::driver

@@ -166,15 +166,15 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
   if (options.shard) status = {*options.shard, "running", "", {}, {}};
 
   std::vector<Job> jobs;
-  std::set<std::string> foreign;                               // ids holding another sweep's result
-  const nlohmann::json scene = scene_fingerprint(spec.scene);  // reads a scan once, not per job
+  std::set<std::string> foreign;  // ids holding another sweep's result
+  const nlohmann::json scene_fp = scene_fingerprint(spec.scene);  // reads a scan once, not per job
   for (std::size_t index = 0; index < configs.size(); ++index) {
     const SweepConfig& c = configs[index];
     Job job;
     job.config = &c;
     job.device = &devices.at(c.device);
     job.resolved = resolve_config(c.config, *job.device);
-    job.fingerprint = config_fingerprint(c, scene, job.resolved.width, job.resolved.height);
+    job.fingerprint = config_fingerprint(c, scene_fp, job.resolved.width, job.resolved.height);
     job.fingerprint["device_profile"] = device_fingerprints.at(c.device);
     job.fingerprint["build"] = build_identity();  // another skinsim may compute other figures
     summary.fingerprints[c.id] = job.fingerprint;
@@ -210,14 +210,14 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
       s.gpu = std::make_unique<pipeline::GpuScene>(*s.scene);
     }
     job.scene = s.gpu.get();
-    const std::string stem = reference_stem(job.resolved, spec.scene);
+    const std::string stem = reference_stem(job.resolved, scene_fp);
     job.reference_image = reference_image_path(stem);
     auto it = references.find(stem);
     if (it == references.end()) {
       bool rendered = false;
       ReferenceImages images;
       arena.execute([&] {
-        images = cached_reference(*s.gpu, job.resolved, spec.scene, dir / "refs", options.threads,
+        images = cached_reference(*s.gpu, job.resolved, scene_fp, dir / "refs", options.threads,
                                   &rendered, options.progress);
         images.flip_features = std::make_shared<const quality::FlipFeatures>(images.image);
       });

@@ -156,7 +156,6 @@ std::string lower_extension(const std::string& path) {
 struct GltfFile {
   std::string bytes;
   bool binary = false;
-  std::string_view json;
   fs::path dir;
   std::vector<fs::path> external;
 };
@@ -177,10 +176,11 @@ GltfFile read_gltf_file(const std::string& path) {
     throw SceneError(fmt::format("{}: {}", path, e.what()));
   }
   f.binary = ext == ".glb";
-  f.json = f.binary ? glb_json_chunk(f.bytes, path) : std::string_view(f.bytes);
-  check_depth(f.json, path);
+  const std::string_view json =
+      f.binary ? glb_json_chunk(f.bytes, path) : std::string_view(f.bytes);
+  check_depth(json, path);
   f.dir = fs::path(path).parent_path();
-  f.external = external_files(f.json, f.dir, path);
+  f.external = external_files(json, f.dir, path);
   return f;
 }
 
@@ -202,10 +202,6 @@ std::string content_fingerprint_of(const std::string& path) {
 
 tinygltf::Model parse_gltf_file(const std::string& path) {
   const GltfFile f = read_gltf_file(path);
-  const std::string& bytes = f.bytes;
-  const bool binary = f.binary;
-  const fs::path& dir = f.dir;
-
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&decode_unless_in_buffer_view, nullptr);
   loader.SetFsCallbacks(
@@ -214,12 +210,11 @@ tinygltf::Model parse_gltf_file(const std::string& path) {
   std::string err, warn;
   bool ok = false;
   try {
-    const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
-    const std::string base = dir.empty() ? std::string(".") : dir.string();
-    ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, data,
-                                              static_cast<unsigned int>(bytes.size()), base)
-                : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(),
-                                             static_cast<unsigned int>(bytes.size()), base);
+    const auto* data = reinterpret_cast<const unsigned char*>(f.bytes.data());
+    const auto size = static_cast<unsigned int>(f.bytes.size());
+    const std::string base = f.dir.empty() ? std::string(".") : f.dir.string();
+    ok = f.binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, data, size, base)
+                  : loader.LoadASCIIFromString(&model, &err, &warn, f.bytes.data(), size, base);
   } catch (const std::exception& e) {  // tinygltf's JSON layer may throw on odd input
     fail(path, e.what());
   }
