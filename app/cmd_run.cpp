@@ -38,6 +38,31 @@ struct RunOptions {
   bool reference = true;
 };
 
+// Where the reference came from, when it was not rendered, and why a rendered one could not
+// be kept for later runs.
+void print_reference_source(const driver::FrameJobResult& r, const driver::FrameJob& job,
+                            const std::string& out) {
+  switch (r.reference_source) {
+    case driver::ReferenceSource::kKept:
+      fmt::print("reference: reused from {}/{} (same scene, reference knobs and build)\n", out,
+                 driver::kRunReferenceImage);
+      break;
+    case driver::ReferenceSource::kStore:
+      fmt::print(
+          "reference: reused from the reference store {} (same scene, reference knobs and "
+          "build; SKINSIM_CACHE_DIR=off renders it)\n",
+          job.reference_store->dir().string());
+      break;
+    case driver::ReferenceSource::kRendered:
+      if (!r.reference_not_stored.empty()) {
+        fmt::print(stderr,
+                   "skinsim run: note: the reference was not kept in the reference store {}: {}\n",
+                   job.reference_store->dir().string(), r.reference_not_stored);
+      }
+      break;
+  }
+}
+
 int run(const RunOptions& o) {
   const std::string data_dir = o.device.data_dir.empty() ? default_data_dir() : o.device.data_dir;
   const gpu_model::DeviceProfile device = gpu_model::load_device_profile(o.device.device, data_dir);
@@ -58,6 +83,7 @@ int run(const RunOptions& o) {
   job.threads = o.device.threads;
   job.reference = o.reference;
   job.previous_run = o.out;  // the run this one replaces: its reference may be this one's
+  job.reference_store = driver::ReferenceStore::from_environment();
   const driver::FrameJobResult frame_job = driver::run_frame_job(job);
   const driver::FrameResult& result = frame_job.frame;
 
@@ -87,10 +113,7 @@ int run(const RunOptions& o) {
     const std::string mask = driver::reference_mask_path(driver::kRunReferenceImage);
     quality::save_mask_png(frame_job.reference->skin, out / mask);
     json["reference"] = frame_job.reference_marker;
-    if (frame_job.reference_reused) {
-      fmt::print("reference: reused from {}/{} (same scene, reference knobs and build)\n", o.out,
-                 driver::kRunReferenceImage);
-    }
+    print_reference_source(frame_job, job, o.out);
     const driver::FrameQuality& q = *frame_job.quality;
     quality::save_png(q.error_map, out / "error_flip.png");
     written.insert(written.end(), {driver::kRunReferenceImage, mask, "error_flip.png"});

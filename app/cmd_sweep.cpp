@@ -167,6 +167,7 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
   run_options.threads = o.threads;
   run_options.cancel = &g_cancel;
   run_options.compute = !o.merge;
+  run_options.reference_store = driver::ReferenceStore::from_environment();
   if (!o.shard.empty()) run_options.shard = driver::parse_shard(o.shard, "--shard");
   if (o.merge && !std::filesystem::is_directory(o.out)) {
     throw driver::SweepError(

@@ -78,6 +78,11 @@ int main(int argc, char** argv) {
       "skinsim: emulate a tile-based mobile GPU (PowerVR SGX-class) running skin-rendering "
       "pipelines, and model their cost per device"};
   app.require_subcommand(1);
+  app.footer(
+      "Environment:\n"
+      "  SKINSIM_CACHE_DIR  where runs and sweeps share rendered references (default\n"
+      "                     $XDG_CACHE_HOME/skinsim or ~/.cache/skinsim; 'off' for none)\n"
+      "  SKINSIM_SIMD       auto (default: AVX where the processor has it) or sse2");
   std::map<const CLI::App*, skinsim::app::Command> commands;
   auto add = [&](skinsim::app::Command c) {
     commands[app.get_subcommands({}).back()] = std::move(c);

@@ -43,14 +43,23 @@ FrameJobResult run_frame_job(const FrameJob& job) {
   if (job.reference) {
     r.reference_marker = reference_marker(job.config, scene_fingerprint(job.scene));
     ReferenceImages kept;
-    r.reference_reused =
-        !job.previous_run.empty() && previous_marker(job.previous_run) == r.reference_marker &&
+    if (!job.previous_run.empty() && previous_marker(job.previous_run) == r.reference_marker &&
         load_reference(job.previous_run / kRunReferenceImage,
-                       job.previous_run / reference_mask_path(kRunReferenceImage), kept);
-    r.reference =
-        r.reference_reused
-            ? std::move(kept)
-            : reference_images(pipeline::render_reference(*r.gpu_scene, job.config, job.threads));
+                       job.previous_run / reference_mask_path(kRunReferenceImage), kept)) {
+      r.reference = std::move(kept);
+      r.reference_source = ReferenceSource::kKept;
+    } else if (job.reference_store) {
+      r.reference = job.reference_store->load(r.reference_marker);
+      if (r.reference) r.reference_source = ReferenceSource::kStore;
+    }
+    if (!r.reference) {
+      r.reference =
+          reference_images(pipeline::render_reference(*r.gpu_scene, job.config, job.threads));
+      r.reference_source = ReferenceSource::kRendered;
+      if (job.reference_store) {
+        r.reference_not_stored = job.reference_store->keep(r.reference_marker, *r.reference);
+      }
+    }
     r.quality = evaluate_quality(r.frame.output.frame, *r.reference);
     if (!r.quality->has_skin_metrics()) {
       r.no_skin = no_skin_reason(*r.scene, job.scene.skin_materials);

@@ -14,6 +14,8 @@
 #include <string>
 
 #include "driver/frame_quality.h"
+#include "driver/reference_cache.h"
+#include "driver/reference_store.h"
 #include "driver/scene_source.h"
 #include "gpu_model/device_profile.h"
 #include "gpu_model/sensitivity.h"
@@ -60,6 +62,9 @@ struct FrameJob {
   // Optional: a previous `skinsim run` directory whose reference is reused when its marker
   // (result.json's "reference": reference_marker) is this frame's, instead of rendering it.
   std::filesystem::path previous_run;
+  // Optional: where references are shared with other runs and sweeps (reference_store.h): a
+  // reference not found in previous_run is taken from it, and a rendered one kept in it.
+  std::optional<ReferenceStore> reference_store;
 };
 
 // A run's reference image, as run_frame_job reuses it from FrameJob::previous_run (its skin
@@ -72,8 +77,9 @@ struct FrameJobResult {
   FrameResult frame;
   std::optional<ReferenceImages> reference;  // with FrameJob::reference
   nlohmann::json reference_marker;           // with FrameJob::reference (reference_cache.h)
-  bool reference_reused = false;             // from FrameJob::previous_run, not rendered
-  std::optional<FrameQuality> quality;       // with FrameJob::reference
+  ReferenceSource reference_source = ReferenceSource::kRendered;  // with FrameJob::reference
+  std::string reference_not_stored;     // why a rendered reference could not be kept in the store
+  std::optional<FrameQuality> quality;  // with FrameJob::reference
   // Set when the reference shows no skin (so there are no skin metrics): which rule found
   // none and what to pass (skin_diagnosis.h); also sent to `warn`.
   std::string no_skin;

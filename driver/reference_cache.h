@@ -12,6 +12,13 @@
 
 namespace skinsim::driver {
 
+// Where a run's or a sweep's reference came from.
+enum class ReferenceSource {
+  kKept,      // the output directory's own copy: the sweep's refs/, the replaced run's
+  kStore,     // the user's reference store (reference_store.h), shared by all output directories
+  kRendered,  // rendered, as neither had it
+};
+
 // What the reference depends on: the knobs marked `reference` in the knob table (the
 // resolution, the BRDF parameters, the light and framing: pipeline/knob.h) and the scene
 // (`scene`: scene_fingerprint, which reads a scan, so callers compute it once).

@@ -43,13 +43,17 @@ std::string reference_image_path(const std::string& stem) {
 ReferenceImages cached_reference(const pipeline::GpuScene& scene,
                                  const pipeline::PipelineConfig& resolved,
                                  const nlohmann::json& scene_fingerprint,
-                                 const std::filesystem::path& refs_dir, int threads, bool* rendered,
+                                 const std::filesystem::path& refs_dir, int threads,
+                                 const ReferenceStore* store, ReferenceSource* source,
                                  std::FILE* notes) {
   const std::string stem = reference_stem(resolved, scene_fingerprint);
   const std::filesystem::path image_path = refs_dir / (stem + ".png");
   const std::filesystem::path mask_path = refs_dir / reference_mask_path(stem + ".png");
   const std::filesystem::path marker = refs_dir / (stem + ".json");
   const nlohmann::json marker_content = reference_marker(resolved, scene_fingerprint);
+  const auto found = [&](ReferenceSource s) {
+    if (source) *source = s;
+  };
 
   // Processes sharing the directory (sweep shards) take turns: the first renders and writes
   // the reference, the others wait and then load it, so it is rendered once and never
@@ -62,24 +66,42 @@ ReferenceImages cached_reference(const pipeline::GpuScene& scene,
   });
   ReferenceImages images;
   if (load_cached(marker, marker_content, image_path, mask_path, images)) {
-    if (rendered) *rendered = false;
+    found(ReferenceSource::kKept);
     return images;
   }
-  // The reference takes tens of seconds at full resolution: say so, or the sweep looks hung.
-  if (notes) {
-    fmt::print(notes, "rendering the reference {}x{} (cached in {} for later runs) ...\n",
-               resolved.width, resolved.height, refs_dir.string());
-  }
-  const auto start = std::chrono::steady_clock::now();
-  images = reference_images(pipeline::render_reference(scene, resolved, threads));
-  if (notes) {
-    fmt::print(notes, "reference {}x{} rendered in {:.1f} s\n", resolved.width, resolved.height,
-               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  std::optional<ReferenceImages> stored = store ? store->load(marker_content) : std::nullopt;
+  if (stored) {
+    images = std::move(*stored);
+    found(ReferenceSource::kStore);
+    if (notes) {
+      fmt::print(notes, "reference {}x{}: reused from the reference store {}\n", resolved.width,
+                 resolved.height, store->dir().string());
+    }
+  } else {
+    // The reference takes seconds to minutes at full resolution: say so, or the sweep looks
+    // hung.
+    if (notes) {
+      fmt::print(notes, "rendering the reference {}x{} (cached in {} for later runs) ...\n",
+                 resolved.width, resolved.height, refs_dir.string());
+    }
+    const auto start = std::chrono::steady_clock::now();
+    images = reference_images(pipeline::render_reference(scene, resolved, threads));
+    if (notes) {
+      fmt::print(notes, "reference {}x{} rendered in {:.1f} s\n", resolved.width, resolved.height,
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+    found(ReferenceSource::kRendered);
   }
   quality::save_png(images.image, image_path);
   quality::save_mask_png(images.skin, mask_path);
   io::write_file_atomically(marker.string(), marker_content.dump(2) + "\n");
-  if (rendered) *rendered = true;
+  if (store && !stored) {
+    const std::string not_kept = store->keep(marker_content, images);
+    if (notes && !not_kept.empty()) {
+      fmt::print(notes, "note: the reference was not kept in the reference store {}: {}\n",
+                 store->dir().string(), not_kept);
+    }
+  }
   return images;
 }
 

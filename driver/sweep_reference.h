@@ -1,5 +1,6 @@
 // The reference frame of a sweep, rendered once per (scene, resolution, reference knobs) and
-// kept in the sweep directory (refs/), so a resumed sweep does not render it again.
+// kept in the sweep directory (refs/), so a resumed sweep does not render it again, and in the
+// user's reference store, so another sweep or run does not either.
 #pragma once
 
 #include <cstdio>
@@ -8,6 +9,7 @@
 
 #include "driver/frame_quality.h"
 #include "driver/reference_cache.h"
+#include "driver/reference_store.h"
 #include "driver/scene_source.h"
 #include "pipeline/config.h"
 #include "pipeline/gpu_scene.h"
@@ -24,15 +26,18 @@ std::string reference_stem(const pipeline::PipelineConfig& resolved, const nlohm
 std::string reference_image_path(const std::string& stem);
 
 // Loads refs/<stem>.png and its skin mask from `refs_dir` if a complete cached copy exists,
-// else renders the reference with `threads` host threads and writes it there (atomically;
-// the .json marker last). `rendered` (optional) tells which happened. Both paths give
-// bit-identical images. Processes sharing `refs_dir` take turns through a lock file
-// (refs/<stem>.lock): one renders, the others wait (saying so on `notes`, if given) and load.
-// A render says when it starts and how long it took on `notes`.
+// else takes it from `store` (when given and holding it), else renders the reference with
+// `threads` host threads; the last two write it to `refs_dir` (atomically; the .json marker
+// last), and a rendered one is also kept in `store`. `source` (optional) tells which
+// happened. All paths give bit-identical images. Processes sharing `refs_dir` take turns
+// through a lock file (refs/<stem>.lock): one renders, the others wait (saying so on `notes`,
+// if given) and load. Where the reference came from, and how long a render took, is said on
+// `notes`.
 ReferenceImages cached_reference(const pipeline::GpuScene& scene,
                                  const pipeline::PipelineConfig& resolved,
                                  const nlohmann::json& scene_fingerprint,
                                  const std::filesystem::path& refs_dir, int threads,
-                                 bool* rendered = nullptr, std::FILE* notes = nullptr);
+                                 const ReferenceStore* store = nullptr,
+                                 ReferenceSource* source = nullptr, std::FILE* notes = nullptr);
 
 }  // namespace skinsim::driver

@@ -214,14 +214,16 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
     job.reference_image = reference_image_path(stem);
     auto it = references.find(stem);
     if (it == references.end()) {
-      bool rendered = false;
+      ReferenceSource source = ReferenceSource::kKept;
       ReferenceImages images;
       arena.execute([&] {
         images = cached_reference(*s.gpu, job.resolved, scene_fp, dir / "refs", options.threads,
-                                  &rendered, options.progress);
+                                  options.reference_store ? &*options.reference_store : nullptr,
+                                  &source, options.progress);
         images.flip_features = std::make_shared<const quality::FlipFeatures>(images.image);
       });
-      summary.references_rendered += rendered ? 1 : 0;
+      summary.references_rendered += source == ReferenceSource::kRendered ? 1 : 0;
+      summary.references_from_store += source == ReferenceSource::kStore ? 1 : 0;
       if (images.skin.count() == 0) {  // still rendered and measured, over the whole frame
         summary.warnings.push_back(fmt::format(
             "{}x{}: {} (skin metrics not available; configurations are compared by FLIP over "

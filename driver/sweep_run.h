@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "driver/reference_store.h"
 #include "driver/sweep_shard.h"
 #include "driver/sweep_spec.h"
 
@@ -37,6 +38,9 @@ struct SweepRunOptions {
   std::FILE* progress = stderr;               // null: silent
   std::optional<SweepShard> shard;            // set: compute only this shard's configurations
   bool compute = true;                        // false: compute nothing, only take stock (a merge)
+  // Where references are shared with other runs and sweeps (reference_store.h); none: each
+  // is rendered unless refs/ has it.
+  std::optional<ReferenceStore> reference_store;
   // Called (from a worker thread, one call at a time) after each configuration is written.
   std::function<void(const std::string& id)> on_finished;
 };
@@ -66,7 +70,8 @@ struct SweepRunSummary {
   // shard statuses give, listed when computing nothing (a merge: they stay missing) or when
   // shards have written to the directory (this run computes what they left).
   std::vector<MissingConfig> left_by_shards;
-  int references_rendered = 0;  // references rendered (not loaded from refs/)
+  int references_rendered = 0;    // references rendered (not loaded from refs/ or the store)
+  int references_from_store = 0;  // references taken from SweepRunOptions::reference_store
   // Render passes of the computed configurations: replayed from an identical pass of an
   // earlier configuration (sim/pass_memo.h), and rendered.
   int passes_replayed = 0;

@@ -360,17 +360,23 @@ TEST(Cli, SweepWithoutSkinComparesWholeFrames) {
 // A run into the directory of an earlier run reuses that run's reference when nothing the
 // reference depends on changed (result.json's "reference" marker): the same files and metrics
 // as rendering it, in a fraction of the time; any other reference, or damaged files, render.
+// A run small enough for a test, reference and metrics included.
+constexpr const char* kTinyRun = "run --resolution 128x96 --head-triangles 2000 --texture-size 64 ";
+
+std::string bytes(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// A run directory's result.json "quality".
+nlohmann::json quality(const std::filesystem::path& run_dir) {
+  std::ifstream in(run_dir / "result.json");
+  return nlohmann::json::parse(in).at("quality");
+}
+
 TEST(Cli, RunReusesTheReferenceOfTheRunItReplaces) {
   const auto dir = temp_dir("reuse_reference");
-  const std::string base = "run --resolution 128x96 --head-triangles 2000 --texture-size 64 ";
-  const auto bytes = [](const std::filesystem::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-  };
-  const auto quality = [](const std::filesystem::path& run_dir) {
-    std::ifstream in(run_dir / "result.json");
-    return nlohmann::json::parse(in).at("quality");
-  };
+  const std::string base = kTinyRun;
   const char* kReused = "reference: reused";
 
   const Result first = run(base + "--out " + dir.string());
@@ -406,6 +412,43 @@ TEST(Cli, RunReusesTheReferenceOfTheRunItReplaces) {
   ASSERT_EQ(repaired.exit_code, 0) << repaired.output;
   EXPECT_EQ(repaired.output.find(kReused), std::string::npos) << repaired.output;
   EXPECT_EQ(bytes(dir / "reference.png"), reference);
+}
+
+// The user's reference store (SKINSIM_CACHE_DIR) serves a run into any directory: the same
+// reference, mask, FLIP map and metrics as rendering it; "off" renders it; a cache "directory"
+// that is a file is a bad input.
+TEST(Cli, RunTakesTheReferenceFromTheStoreInAnyDirectory) {
+  const auto store = temp_dir("store_cache");
+  const std::string base = kTinyRun;
+  const char* kFromStore = "reference: reused from the reference store";
+  const auto run_with = [&](const std::string& cache, const std::filesystem::path& out) {
+    const skinsim::test::ScopedEnv env("SKINSIM_CACHE_DIR", cache);
+    return run(base + "--out " + out.string());
+  };
+
+  const auto first = temp_dir("store_first");
+  const Result rendered = run_with(store.string(), first);
+  ASSERT_EQ(rendered.exit_code, 0) << rendered.output;
+  EXPECT_EQ(rendered.output.find("reference: reused"), std::string::npos) << rendered.output;
+  const auto second = temp_dir("store_second");
+  const Result reused = run_with(store.string(), second);
+  ASSERT_EQ(reused.exit_code, 0) << reused.output;
+  EXPECT_NE(reused.output.find(kFromStore), std::string::npos) << reused.output;
+  for (const char* file : {"reference.png", "reference_skin.png", "error_flip.png"}) {
+    EXPECT_EQ(bytes(second / file), bytes(first / file)) << file;
+  }
+  EXPECT_EQ(quality(second), quality(first));
+
+  const auto off = temp_dir("store_off");
+  const Result without = run_with("off", off);
+  ASSERT_EQ(without.exit_code, 0) << without.output;
+  EXPECT_EQ(without.output.find("reference: reused"), std::string::npos) << without.output;
+
+  const auto not_a_directory = temp_dir("store_file") / "cache";
+  std::ofstream(not_a_directory) << "x";
+  const Result bad = run_with(not_a_directory.string(), temp_dir("store_bad"));
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("SKINSIM_CACHE_DIR"), std::string::npos) << bad.output;
 }
 
 TEST(Cli, RunWithoutSkinWritesFrameMetricsAndSaysWhy) {

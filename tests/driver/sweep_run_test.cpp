@@ -133,6 +133,37 @@ TEST(SweepRun, TechniquesRunOncePerKnobTheyUseAndRowsOmitTheRest) {
   EXPECT_EQ(read_file(dir / "results.csv"), csv);
 }
 
+// A sweep into another directory takes the reference from the user's store (reference_store.h)
+// instead of rendering it, with the same results and the same refs/ files byte for byte.
+TEST(SweepRun, AnotherDirectoryTakesTheReferenceFromTheStore) {
+  const fs::path store = out_dir("store_references");
+  const SweepSpec spec = tiny_spec();
+  const auto run_into = [&](const fs::path& dir) {
+    SweepRunOptions o = options(dir, 2);
+    o.reference_store = ReferenceStore(store);
+    SweepRunSummary summary;
+    run_and_write(spec, o, &summary);
+    return summary;
+  };
+  const fs::path first = out_dir("store_first");
+  const SweepRunSummary rendered = run_into(first);
+  EXPECT_EQ(rendered.references_rendered, 1);
+  EXPECT_EQ(rendered.references_from_store, 0);
+  const fs::path second = out_dir("store_second");
+  const SweepRunSummary reused = run_into(second);
+  EXPECT_EQ(reused.references_rendered, 0);
+  EXPECT_EQ(reused.references_from_store, 1);
+  EXPECT_EQ(read_file(second / "results.csv"), read_file(first / "results.csv"));
+  int compared = 0;
+  for (const fs::directory_entry& e : fs::directory_iterator(first / "refs")) {
+    if (e.path().extension() == ".lock") continue;
+    EXPECT_EQ(read_file(second / "refs" / e.path().filename()), read_file(e.path()))
+        << e.path().filename();
+    ++compared;
+  }
+  EXPECT_EQ(compared, 3);  // the image, its skin mask, the marker
+}
+
 TEST(SweepRun, ResumeComputesOnlyWhatIsMissing) {
   const fs::path dir = out_dir("resume");
   const SweepSpec spec = tiny_spec();

@@ -1,0 +1,131 @@
+#include "driver/reference_store.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <exception>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "driver/reference_cache.h"
+#include "io/atomic_file.h"
+#include "io/read_file.h"
+#include "quality/image.h"
+#include "util/fingerprint.h"
+#include "util/user_error.h"
+
+namespace skinsim::driver {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kCacheVariable = "SKINSIM_CACHE_DIR";
+constexpr const char* kStem = "reference_";
+constexpr const char* kMarkerSuffix = ".json";
+
+std::string environment(const char* name) {
+  const char* value = std::getenv(name);
+  return value ? value : "";
+}
+
+// The cache directory the environment names, or nullopt for none.
+std::optional<fs::path> cache_directory() {
+  const std::string chosen = environment(kCacheVariable);
+  if (chosen == "off") return std::nullopt;
+  if (!chosen.empty()) {
+    std::error_code ec;
+    if (fs::exists(chosen, ec) && !fs::is_directory(chosen, ec)) {
+      throw UserError(std::string("environment variable ") + kCacheVariable + " is '" + chosen +
+                      "', which is not a directory: name a directory for skinsim's cache, or "
+                      "'off' for none");
+    }
+    return fs::path(chosen);
+  }
+  // XDG Base Directory Specification: a relative XDG_CACHE_HOME is to be ignored.
+  const fs::path xdg = environment("XDG_CACHE_HOME");
+  if (xdg.is_absolute()) return xdg / "skinsim";
+  const std::string home = environment("HOME");
+  if (!home.empty()) return fs::path(home) / ".cache" / "skinsim";
+  return std::nullopt;
+}
+
+}  // namespace
+
+ReferenceStore::ReferenceStore(fs::path dir, int capacity)
+    : dir_(std::move(dir)), capacity_(std::max(capacity, 1)) {}
+
+std::optional<ReferenceStore> ReferenceStore::from_environment() {
+  const std::optional<fs::path> cache = cache_directory();
+  if (!cache) return std::nullopt;
+  return ReferenceStore(*cache / "references");
+}
+
+// One file name per marker: the marker's hash, so that two builds, scenes or reference knob
+// settings never share a file. The marker stored beside the images rules out a collision.
+fs::path ReferenceStore::file(const nlohmann::json& marker, const std::string& suffix) const {
+  constexpr std::size_t kPrefix = std::string_view("fnv1a64:").size();
+  return dir_ / (kStem + content_fingerprint(marker.dump()).substr(kPrefix) + suffix);
+}
+
+std::optional<ReferenceImages> ReferenceStore::load(const nlohmann::json& marker) const {
+  const fs::path marker_file = file(marker, kMarkerSuffix);
+  try {
+    std::error_code ec;
+    if (!fs::is_regular_file(marker_file, ec)) return std::nullopt;
+    const nlohmann::json stored =
+        nlohmann::json::parse(io::read_regular_file(marker_file, "reference cache marker"), nullptr,
+                              /*allow_exceptions=*/false);
+    ReferenceImages images;
+    if (stored != marker ||
+        !load_reference(file(marker, ".png"), file(marker, "_skin.png"), images)) {
+      return std::nullopt;
+    }
+    fs::last_write_time(marker_file, fs::file_time_type::clock::now(), ec);  // just used
+    return images;
+  } catch (const std::exception&) {
+    return std::nullopt;  // unreadable or removed meanwhile: render it
+  }
+}
+
+std::string ReferenceStore::keep(const nlohmann::json& marker,
+                                 const ReferenceImages& images) const {
+  try {
+    fs::create_directories(dir_);
+    // Each file is replaced atomically and the marker comes last, so a reader finds either no
+    // marker or a complete copy.
+    quality::save_png(images.image, file(marker, ".png"));
+    quality::save_mask_png(images.skin, file(marker, "_skin.png"));
+    io::write_file_atomically(file(marker, kMarkerSuffix), marker.dump(2) + "\n");
+    evict();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Removes the references whose markers were used least recently, beyond the capacity. Another
+// process may be loading one of them: it then finds it incomplete and renders it.
+void ReferenceStore::evict() const {
+  std::vector<std::pair<fs::file_time_type, fs::path>> markers;
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir_)) {
+    const std::string name = entry.path().filename().string();
+    if (entry.is_regular_file() && name.starts_with(kStem) && name.ends_with(kMarkerSuffix)) {
+      markers.emplace_back(entry.last_write_time(), entry.path());
+    }
+  }
+  if (markers.size() <= static_cast<std::size_t>(capacity_)) return;
+  std::sort(markers.begin(), markers.end(), [](const auto& a, const auto& b) {
+    return a.first != b.first ? a.first > b.first : a.second < b.second;  // newest first
+  });
+  for (std::size_t i = static_cast<std::size_t>(capacity_); i < markers.size(); ++i) {
+    fs::path stem = markers[i].second;
+    stem.replace_extension();
+    std::error_code ec;
+    fs::remove(markers[i].second, ec);  // the marker first: the images are then no copy
+    fs::remove(stem.string() + ".png", ec);
+    fs::remove(stem.string() + "_skin.png", ec);
+  }
+}
+
+}  // namespace skinsim::driver

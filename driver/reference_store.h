@@ -1,0 +1,51 @@
+// References shared by every run and sweep of one user. A reference depends only on its marker
+// (reference_cache.h: the scene with a scan's bytes, the knobs marked `reference`, the build),
+// so one rendering serves every later `skinsim run` or `skinsim sweep` that asks for the same
+// one, whatever its output directory: the store keeps the most recently used references in
+// the user's cache directory. A run's or a sweep's own directory still gets its copy, so an
+// output directory stands alone; the store only saves rendering it again.
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "driver/frame_quality.h"
+
+namespace skinsim::driver {
+
+class ReferenceStore {
+ public:
+  // A 2048x1536 reference and its mask take about 2 MB: sixteen are a few tens of MB.
+  static constexpr int kDefaultCapacity = 16;
+
+  // References are kept in `dir` (created when the first is kept).
+  explicit ReferenceStore(std::filesystem::path dir, int capacity = kDefaultCapacity);
+
+  // The store the environment selects, in its references/ folder: SKINSIM_CACHE_DIR names the
+  // cache directory, or is "off" for none; unset or empty, $XDG_CACHE_HOME/skinsim (an
+  // absolute XDG_CACHE_HOME), else $HOME/.cache/skinsim; none without a home. Throws
+  // UserError naming SKINSIM_CACHE_DIR when it names something that is not a directory.
+  static std::optional<ReferenceStore> from_environment();
+
+  // The reference kept under `marker` (reference_marker), when the store holds a complete
+  // copy of it; it then counts as just used. A missing, damaged or foreign copy is nullopt.
+  std::optional<ReferenceImages> load(const nlohmann::json& marker) const;
+
+  // Keeps `images` under `marker` and removes the least recently used references beyond the
+  // capacity. A reference that cannot be kept (a full disk, a read-only cache) is no error for
+  // the run: the reason is returned, empty when it was kept.
+  std::string keep(const nlohmann::json& marker, const ReferenceImages& images) const;
+
+  const std::filesystem::path& dir() const { return dir_; }
+
+ private:
+  std::filesystem::path file(const nlohmann::json& marker, const std::string& suffix) const;
+  void evict() const;
+
+  std::filesystem::path dir_;
+  int capacity_;
+};
+
+}  // namespace skinsim::driver
