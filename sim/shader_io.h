@@ -3,7 +3,10 @@
 // Count types record it.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <glm/glm.hpp>
+#include <utility>
 
 #include "sim/shader_lang.h"
 #include "sim/texture_unit.h"
@@ -49,7 +52,7 @@ class ExecFragIn {
 
  private:
   template <int N>
-  Varying<N> grad(int slot) const {
+  [[gnu::always_inline]] Varying<N> grad(int slot) const {
     Varying<N> r;
     for (int i = 0; i < N; ++i) {
       const Plane& p = planes_[slot + i];
@@ -206,6 +209,24 @@ struct Count {
   using VertexIn = CountVertexIn;
   using VertexOut = CountVertexOut;
 };
+
+// N independent reads of one texture, coord(i) the coordinates of the i-th (a varying, as
+// tex.sample takes it), in order: in every language what N calls of tex.sample give, served
+// together by a texture unit that can (ExecTexUnit::sample_each).
+namespace sl {
+template <int N, class TexUnit, class Coord>
+auto sample_each(TexUnit& tex, int binding, const Coord& coord) {
+  if constexpr (requires { tex.template sample_each<N>(binding, coord); }) {
+    return tex.template sample_each<N>(binding, coord);
+  } else {
+    return [&]<std::size_t... I>(std::index_sequence<I...>) {
+      using Value = decltype(tex.sample(binding, coord(0)));
+      return std::array<Value, N>{tex.sample(binding, coord(static_cast<int>(I)))...};
+    }
+    (std::make_index_sequence<N>{});  // a braced list: evaluated in order
+  }
+}
+}  // namespace sl
 
 }  // namespace skinsim::sim
 

@@ -21,6 +21,7 @@ class TextureLineLog {
   explicit TextureLineLog(std::uint32_t line_bytes = 64) : line_shift_(line_shift_of(line_bytes)) {}
 
   std::uint64_t line_of(std::uint64_t address) const { return address >> line_shift_; }
+  std::uint32_t line_shift() const { return line_shift_; }
   // Records a request for `line` (line_of an address). A request for the line requested just
   // before is not recorded: the cache holds that line as its set's most recent, so the
   // request hits and changes nothing (consecutive taps of a blur, or the levels of a magnified

@@ -61,6 +61,12 @@ class ExecTexUnit {
   // nearest one compares one texel. Independent from a varying, dependent when computed.
   float sample_shadow(int binding, const Varying<3>& coord);
   float sample_shadow(int binding, const glm::vec3& coord);
+  // Independent reads of one texture at N coordinates, coord(i) for i < N (each a Varying<2>,
+  // as sample() takes them), in order: the values, counters and cache-line records of N
+  // sample() calls. A single-level bilinear texture's footprints are addressed up to eight at
+  // a time (texture_footprints.h), which pays on a blur's taps.
+  template <int N, class Coord>
+  std::array<glm::vec4, N> sample_each(int binding, const Coord& coord);
 
  private:
   // Level of detail as the sampler receives it: an explicit lambda, or the squared footprint
@@ -84,8 +90,14 @@ class ExecTexUnit {
   };
   // Counts the footprint's texels and records its distinct cache lines.
   Footprint fetch_footprint(const Texture2D& tex, std::uint64_t base, int level, glm::vec2 uv);
-  // `blend` false: count and cache the footprint only (its value is not needed).
-  glm::vec4 bilinear(const Texture2D& tex, std::uint64_t base, int level, glm::vec2 uv, bool blend);
+  // A footprint's texels counted and its distinct cache lines recorded in footprint order:
+  // those of texels (x0,y0), (x1,y0), (x0,y1), (x1,y1).
+  void record_footprint(std::uint64_t l00, std::uint64_t l10, std::uint64_t l01, std::uint64_t l11);
+  // The bilinear blend of a footprint's four texels.
+  static glm::vec4 blend(const Footprint& f);
+  // `blend_texels` false: count and cache the footprint only (its value is not needed).
+  glm::vec4 bilinear(const Texture2D& tex, std::uint64_t base, int level, glm::vec2 uv,
+                     bool blend_texels);
   void access_line(std::uint64_t line);  // records one distinct cache line of a sample
   const Texture2D& texture(int binding) const;
   [[noreturn]] static void unbound(int binding, const char* kind);

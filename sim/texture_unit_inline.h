@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "sim/texture_filtering.h"
+#include "sim/texture_footprints.h"
 
 namespace skinsim::sim {
 
@@ -57,24 +58,36 @@ inline ExecTexUnit::Footprint ExecTexUnit::fetch_footprint(const Texture2D& tex,
   const std::uint64_t sy1 = filtering::spread_next(sy0 >> 1, fp.y0, fp.y1) << 1;
   const std::uint64_t a00 = level_base + (sx0 | sy0) * bpp, a10 = level_base + (sx1 | sy0) * bpp;
   const std::uint64_t a01 = level_base + (sx0 | sy1) * bpp, a11 = level_base + (sx1 | sy1) * bpp;
-  const std::uint64_t l00 = lines_->line_of(a00), l10 = lines_->line_of(a10);
-  const std::uint64_t l01 = lines_->line_of(a01), l11 = lines_->line_of(a11);
+  record_footprint(lines_->line_of(a00), lines_->line_of(a10), lines_->line_of(a01),
+                   lines_->line_of(a11));
+  return fp;
+}
+
+inline void ExecTexUnit::record_footprint(std::uint64_t l00, std::uint64_t l10, std::uint64_t l01,
+                                          std::uint64_t l11) {
   counters_->texels_touched += 4;
   access_line(l00);
   if (l10 != l00) access_line(l10);
   if (l01 != l00 && l01 != l10) access_line(l01);
   if (l11 != l00 && l11 != l10 && l11 != l01) access_line(l11);
-  return fp;
+}
+
+// glm::mix(x, y, a) is x * (1 - a) + y * a (glm/detail/func_common.inl); written out so that
+// it is inlined into every sampling path, which GCC does not do for glm's out of the
+// per-sample code, and computes exactly that.
+[[gnu::always_inline]] inline glm::vec4 ExecTexUnit::blend(const Footprint& f) {
+  const auto mix = [](const glm::vec4& x, const glm::vec4& y, float a) {
+    return x * (1.0f - a) + y * a;
+  };
+  const glm::vec4* row0 = f.level->texels + static_cast<size_t>(f.y0) * f.level->width;
+  const glm::vec4* row1 = f.level->texels + static_cast<size_t>(f.y1) * f.level->width;
+  return mix(mix(row0[f.x0], row0[f.x1], f.ax), mix(row1[f.x0], row1[f.x1], f.ax), f.ay);
 }
 
 inline glm::vec4 ExecTexUnit::bilinear(const Texture2D& tex, std::uint64_t base, int level,
-                                       glm::vec2 uv, bool blend) {
+                                       glm::vec2 uv, bool blend_texels) {
   const Footprint f = fetch_footprint(tex, base, level, uv);
-  if (!blend) return glm::vec4(0.0f);
-  const glm::vec4* row0 = f.level->texels + static_cast<size_t>(f.y0) * f.level->width;
-  const glm::vec4* row1 = f.level->texels + static_cast<size_t>(f.y1) * f.level->width;
-  return glm::mix(glm::mix(row0[f.x0], row0[f.x1], f.ax), glm::mix(row1[f.x0], row1[f.x1], f.ax),
-                  f.ay);
+  return blend_texels ? blend(f) : glm::vec4(0.0f);
 }
 
 inline void ExecTexUnit::count_sample(const Texture2D& tex, Filter filter, bool dependent) {
@@ -154,6 +167,40 @@ inline glm::vec4 ExecTexUnit::filtered(const Texture2D& tex, std::uint64_t base,
     rho2 = filtering::footprint_rho2(uv.ddx.x * w, uv.ddx.y * h, uv.ddy.x * w, uv.ddy.y * h);
   }
   return filtered(tex, binding * kBindingAddressStride, uv.value, LodInput::from_rho2(rho2), false);
+}
+
+template <int N, class Coord>
+std::array<glm::vec4, N> ExecTexUnit::sample_each(int binding, const Coord& coord) {
+  std::array<glm::vec4, N> out;
+  const Texture2D& tex = texture(binding);
+  const std::uint64_t base = binding * kBindingAddressStride;
+  // What sample() does for a single-level bilinear texture (no level of detail: level 0,
+  // bilinear), with the addresses in 32-bit lanes, which the binding's region bounds.
+  if (tex.level_count() != 1 || tex.sampler().filter != Filter::kBilinear ||
+      tex.size_bytes() > kBindingAddressStride) {
+    for (int i = 0; i < N; ++i) out[i] = sample(binding, coord(i));
+    return out;
+  }
+  const LevelView& level = tex.level(0);
+  for (int first = 0; first < N; first += FootprintLanes::kMax) {
+    const int n = std::min(FootprintLanes::kMax, N - first);
+    std::array<float, FootprintLanes::kMax> u{}, v{};  // lanes from n on: unused
+    for (int i = 0; i < n; ++i) {
+      const glm::vec2 uv = coord(first + i).value;
+      u[i] = uv.x;
+      v[i] = uv.y;
+    }
+    FootprintLanes f;
+    address_footprints(u.data(), v.data(), n, level, tex.sampler().wrap,
+                       static_cast<std::uint32_t>(base + tex.level_offset(0)),
+                       static_cast<std::uint32_t>(tex.texel_bytes()), lines_->line_shift(), f);
+    for (int i = 0; i < n; ++i) {
+      count_sample(tex, Filter::kBilinear, false);
+      record_footprint(f.lines[0][i], f.lines[1][i], f.lines[2][i], f.lines[3][i]);
+      out[first + i] = blend({&level, f.x0[i], f.x1[i], f.y0[i], f.y1[i], f.ax[i], f.ay[i]});
+    }
+  }
+  return out;
 }
 
 inline glm::vec4 ExecTexUnit::sample_lod(int binding, const glm::vec2& uv, float lod) {

@@ -48,13 +48,13 @@ struct BlurFS {
     using f32 = typename L::f32;
     vec3 sum(0.0f);
     f32 weight_sum(0.0f);
-    vec4 centre(0.0f);
+    const auto taps = sl::sample_each<kBlurTaps>(tex, 0, [&](int i) { return in.texcoord(2 * i); });
     for (int i = 0; i < kBlurTaps; ++i) {
-      const vec4 t = tex.sample(0, in.texcoord(2 * i));
-      if (i == kBlurTaps / 2) centre = t;
+      const vec4& t = taps[i];
       sum = sum + sl::xyz(t) * u.weights[i];              // premultiplied light
       weight_sum = weight_sum + sl::w(t) * u.weights[i];  // skin coverage of the taps
     }
+    const vec4& centre = taps[kBlurTaps / 2];
     // Normalised light where there is skin, premultiplied again by the centre's coverage.
     const vec3 blurred = sum * (sl::w(centre) / sl::max(weight_sum, 1e-4f));
     return vec4(blurred, sl::w(centre));

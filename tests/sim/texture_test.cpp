@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
+#include <optional>
 #include <random>
 #include <utility>
 
@@ -11,6 +14,7 @@
 #include "sim/texture_cache.h"
 #include "sim/texture_filtering.h"
 #include "sim/texture_unit.h"
+#include "util/simd_dispatch.h"
 
 namespace skinsim::sim {
 namespace {
@@ -293,6 +297,69 @@ TEST(TextureUnit, MagnifiedTrilinearReadsBothLevelsAndReturnsLevelZero) {
     EXPECT_EQ(counters.cache_misses, 2u);  // one line in each level
     EXPECT_EQ(trilinear, unit.sample(1, uv));
   }
+}
+
+// sample_each gives what as many sample() calls give, bit for bit: values, every counter and
+// the cache-line log in order. Over single-level bilinear textures of odd and power-of-two
+// sizes, both wraps and both texel sizes, at coordinates inside, across the borders, far
+// outside, negative and NaN; in the eight-lane path and the four-lane baseline. A mip-mapped
+// texture takes sample() itself.
+TEST(TextureUnit, SampleEachIsSampleAfterSample) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> near(-0.3f, 1.3f);
+  constexpr int kTaps = 19;  // two full groups of eight and a partial one
+  std::vector<std::array<Varying<2>, kTaps>> batches(40);
+  for (auto& batch : batches) {
+    for (Varying<2>& uv : batch) uv.value = {near(rng), near(rng)};
+  }
+  batches[0][3].value = {std::nanf(""), 0.5f};
+  batches[0][4].value = {-7.25f, 1e9f};
+  batches[0][5].value = {0.0f, 1.0f};
+  int levels_sampled = 0;
+  for (const glm::ivec2 size : {glm::ivec2(37, 23), glm::ivec2(64, 32), glm::ivec2(1, 5)}) {
+    std::vector<glm::vec4> texels(static_cast<std::size_t>(size.x) * size.y);
+    for (glm::vec4& t : texels) t = glm::vec4(near(rng), near(rng), near(rng), near(rng));
+    for (const TexelFormat format : {TexelFormat::kRGBA8, TexelFormat::kRGBA16F}) {
+      for (const Wrap wrap : {Wrap::kClamp, Wrap::kRepeat}) {
+        for (const bool mipmaps : {false, true}) {
+          const Texture2D t("t", size.x, size.y, texels, format, {Filter::kBilinear, wrap},
+                            mipmaps);
+          TextureBindings b;
+          b.textures[2] = &t;
+          for (const bool baseline : {false, true}) {
+            std::optional<BaselineSimdScope> scope;
+            if (baseline) scope.emplace();
+            TextureLineLog each_lines(64), one_lines(64);
+            TextureCounters each_counters, one_counters;
+            ExecTexUnit each(&each_lines, &each_counters), one(&one_lines, &one_counters);
+            each.bind(&b);
+            one.bind(&b);
+            for (const auto& batch : batches) {
+              const auto values = each.sample_each<kTaps>(2, [&](int i) { return batch[i]; });
+              for (int i = 0; i < kTaps; ++i) {
+                const glm::vec4 expected = one.sample(2, batch[i]);
+                for (int c = 0; c < 4; ++c) {
+                  ASSERT_EQ(std::bit_cast<std::uint32_t>(values[i][c]),
+                            std::bit_cast<std::uint32_t>(expected[c]))
+                      << size.x << "x" << size.y << " tap " << i << " channel " << c;
+                }
+              }
+            }
+            EXPECT_EQ(each_lines.lines(), one_lines.lines());
+            EXPECT_EQ(each_counters.texels_touched, one_counters.texels_touched);
+            EXPECT_EQ(each_counters.cache_line_accesses, one_counters.cache_line_accesses);
+            for (int f = 0; f < kFilterCount; ++f) {
+              EXPECT_EQ(each_counters.samples_by_filter[f], one_counters.samples_by_filter[f]);
+            }
+            EXPECT_EQ(each_counters.samples_wide_format, one_counters.samples_wide_format);
+            EXPECT_EQ(each_counters.samples_dependent, 0u);
+            levels_sampled += mipmaps ? 0 : 1;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_EQ(levels_sampled, 24);
 }
 
 }  // namespace
