@@ -210,8 +210,8 @@ struct Count {
   using VertexOut = CountVertexOut;
 };
 
-// N independent reads of one texture, coord(i) the coordinates of the i-th (a varying, as
-// tex.sample takes it), in order: in every language what N calls of tex.sample give, served
+// N reads of one texture, coord(i) the coordinates of the i-th (a varying, or computed ones, as
+// tex.sample takes them), in order: in every language what N calls of tex.sample give, served
 // together by a texture unit that can (ExecTexUnit::sample_each).
 namespace sl {
 template <int N, class TexUnit, class Coord>

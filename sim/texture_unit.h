@@ -61,10 +61,10 @@ class ExecTexUnit {
   // nearest one compares one texel. Independent from a varying, dependent when computed.
   float sample_shadow(int binding, const Varying<3>& coord);
   float sample_shadow(int binding, const glm::vec3& coord);
-  // Independent reads of one texture at N coordinates, coord(i) for i < N (each a Varying<2>,
-  // as sample() takes them), in order: the values, counters and cache-line records of N
-  // sample() calls. A single-level bilinear texture's footprints are addressed up to eight at
-  // a time (texture_footprints.h), which pays on a blur's taps.
+  // Reads of one texture at N coordinates, coord(i) for i < N, in order: the values, counters
+  // and cache-line records of N sample() calls with them (a Varying<2> an independent read, a
+  // glm::vec2 a dependent one). A single-level bilinear texture's footprints are addressed up
+  // to eight at a time (texture_footprints.h), which pays on a blur's taps.
   template <int N, class Coord>
   std::array<glm::vec4, N> sample_each(int binding, const Coord& coord);
 

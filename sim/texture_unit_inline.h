@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <type_traits>
 
 #include "sim/texture_filtering.h"
 #include "sim/texture_footprints.h"
@@ -171,11 +172,20 @@ inline glm::vec4 ExecTexUnit::filtered(const Texture2D& tex, std::uint64_t base,
 
 template <int N, class Coord>
 std::array<glm::vec4, N> ExecTexUnit::sample_each(int binding, const Coord& coord) {
+  // Computed coordinates (a glm::vec2) make dependent reads, as sample(binding, vec2) does.
+  constexpr bool kDependent = std::is_same_v<std::decay_t<decltype(coord(0))>, glm::vec2>;
+  const auto uv_of = [&](int i) -> glm::vec2 {
+    if constexpr (kDependent) {
+      return coord(i);
+    } else {
+      return coord(i).value;
+    }
+  };
   std::array<glm::vec4, N> out;
   const Texture2D& tex = texture(binding);
   const std::uint64_t base = binding * kBindingAddressStride;
-  // What sample() does for a single-level bilinear texture (no level of detail: level 0,
-  // bilinear), with the addresses in 32-bit lanes, which the binding's region bounds.
+  // What sample() does for a single-level bilinear texture (level 0 whatever the level of
+  // detail, bilinear), with the addresses in 32-bit lanes, which the binding's region bounds.
   if (tex.level_count() != 1 || tex.sampler().filter != Filter::kBilinear ||
       tex.size_bytes() > kBindingAddressStride) {
     for (int i = 0; i < N; ++i) out[i] = sample(binding, coord(i));
@@ -186,7 +196,7 @@ std::array<glm::vec4, N> ExecTexUnit::sample_each(int binding, const Coord& coor
     const int n = std::min(FootprintLanes::kMax, N - first);
     std::array<float, FootprintLanes::kMax> u{}, v{};  // lanes from n on: unused
     for (int i = 0; i < n; ++i) {
-      const glm::vec2 uv = coord(first + i).value;
+      const glm::vec2 uv = uv_of(first + i);
       u[i] = uv.x;
       v[i] = uv.y;
     }
@@ -195,7 +205,7 @@ std::array<glm::vec4, N> ExecTexUnit::sample_each(int binding, const Coord& coor
                        static_cast<std::uint32_t>(base + tex.level_offset(0)),
                        static_cast<std::uint32_t>(tex.texel_bytes()), lines_->line_shift(), f);
     for (int i = 0; i < n; ++i) {
-      count_sample(tex, Filter::kBilinear, false);
+      count_sample(tex, Filter::kBilinear, kDependent);
       record_footprint(f.lines[0][i], f.lines[1][i], f.lines[2][i], f.lines[3][i]);
       out[first + i] = blend({&level, f.x0[i], f.x1[i], f.y0[i], f.y1[i], f.ax[i], f.ay[i]});
     }

@@ -202,9 +202,10 @@ struct SsssBlurFSFor {
     const auto [screen, centre, depth, step] =
         kernel_centre<kOrthographic, L>(in, tex, u.focal_uv * u.axis);
     vec3 sum = sl::xyz(centre) * vec3(u.weights[0]);
+    const auto taps = sl::sample_each<kSsssTaps - 1>(
+        tex, 0, [&](int i) { return screen.value + step * u.offsets_mm[i + 1]; });
     for (int i = 1; i < kSsssTaps; ++i) {
-      const vec4 t = tex.sample(0, screen.value + step * u.offsets_mm[i]);
-      sum = sum + follow_surface<L>(t, centre, depth, u) * vec3(u.weights[i]);
+      sum = sum + follow_surface<L>(taps[i - 1], centre, depth, u) * vec3(u.weights[i]);
     }
     return vec4(sum, depth);
   }
