@@ -2,6 +2,7 @@
 
 #include <exception>
 
+#include "io/read_file.h"
 #include "pipeline/knob.h"
 #include "quality/image.h"
 #include "util/build_identity.h"
@@ -35,6 +36,24 @@ bool load_reference(const std::filesystem::path& image, const std::filesystem::p
     return false;  // damaged or deleted by hand: render again
   }
   return out.image.width == out.skin.width && out.image.height == out.skin.height;
+}
+
+std::optional<ReferenceImages> load_marked_reference(const std::filesystem::path& marker,
+                                                     const nlohmann::json& expected,
+                                                     const std::filesystem::path& image,
+                                                     const std::filesystem::path& mask) {
+  try {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(marker, ec)) return std::nullopt;
+    const nlohmann::json stored =
+        nlohmann::json::parse(io::read_regular_file(marker, "reference cache marker"), nullptr,
+                              /*allow_exceptions=*/false);
+    ReferenceImages images;
+    if (stored != expected || !load_reference(image, mask, images)) return std::nullopt;
+    return images;
+  } catch (const std::exception&) {
+    return std::nullopt;  // unreadable, or removed meanwhile: render it
+  }
 }
 
 }  // namespace skinsim::driver

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "driver/frame_quality.h"
 #include "driver/scene_source.h"
@@ -39,5 +40,13 @@ std::string reference_mask_path(const std::string& reference_image);
 // is the 8-bit one written, so metrics against it are those against the rendered reference.
 bool load_reference(const std::filesystem::path& image, const std::filesystem::path& mask,
                     ReferenceImages& out);
+
+// load_reference of a copy whose marker file (a .json beside it) holds `expected`
+// (reference_marker): nullopt when the marker is missing, unreadable or another, or the
+// images do not load. What a sweep's refs/ and the reference store keep.
+std::optional<ReferenceImages> load_marked_reference(const std::filesystem::path& marker,
+                                                     const nlohmann::json& expected,
+                                                     const std::filesystem::path& image,
+                                                     const std::filesystem::path& mask);
 
 }  // namespace skinsim::driver

@@ -3,13 +3,11 @@
 #include <algorithm>
 #include <cstdlib>
 #include <exception>
-#include <string_view>
 #include <utility>
 #include <vector>
 
 #include "driver/reference_cache.h"
 #include "io/atomic_file.h"
-#include "io/read_file.h"
 #include "quality/image.h"
 #include "util/fingerprint.h"
 #include "util/user_error.h"
@@ -64,28 +62,16 @@ std::optional<ReferenceStore> ReferenceStore::from_environment() {
 // One file name per marker: the marker's hash, so that two builds, scenes or reference knob
 // settings never share a file. The marker stored beside the images rules out a collision.
 fs::path ReferenceStore::file(const nlohmann::json& marker, const std::string& suffix) const {
-  constexpr std::size_t kPrefix = std::string_view("fnv1a64:").size();
-  return dir_ / (kStem + content_fingerprint(marker.dump()).substr(kPrefix) + suffix);
+  return dir_ / (kStem + fnv1a64_hex(marker.dump()) + suffix);
 }
 
 std::optional<ReferenceImages> ReferenceStore::load(const nlohmann::json& marker) const {
   const fs::path marker_file = file(marker, kMarkerSuffix);
-  try {
-    std::error_code ec;
-    if (!fs::is_regular_file(marker_file, ec)) return std::nullopt;
-    const nlohmann::json stored =
-        nlohmann::json::parse(io::read_regular_file(marker_file, "reference cache marker"), nullptr,
-                              /*allow_exceptions=*/false);
-    ReferenceImages images;
-    if (stored != marker ||
-        !load_reference(file(marker, ".png"), file(marker, "_skin.png"), images)) {
-      return std::nullopt;
-    }
-    fs::last_write_time(marker_file, fs::file_time_type::clock::now(), ec);  // just used
-    return images;
-  } catch (const std::exception&) {
-    return std::nullopt;  // unreadable or removed meanwhile: render it
-  }
+  std::optional<ReferenceImages> images =
+      load_marked_reference(marker_file, marker, file(marker, ".png"), file(marker, "_skin.png"));
+  std::error_code ec;
+  if (images) fs::last_write_time(marker_file, fs::file_time_type::clock::now(), ec);  // used
+  return images;
 }
 
 std::string ReferenceStore::keep(const nlohmann::json& marker,

@@ -11,29 +11,15 @@
 #include "driver/sweep_spec.h"
 #include "io/atomic_file.h"
 #include "io/file_lock.h"
-#include "io/read_file.h"
 #include "pipeline/reference/reference.h"
 #include "quality/image.h"
+#include "util/fingerprint.h"
 
 namespace skinsim::driver {
 
-namespace {
-
-// `expected`: the marker (reference_marker) a usable cached copy has.
-bool load_cached(const std::filesystem::path& marker, const nlohmann::json& expected,
-                 const std::filesystem::path& image_path, const std::filesystem::path& mask_path,
-                 ReferenceImages& out) {
-  if (!std::filesystem::exists(marker)) return false;
-  const nlohmann::json stored = nlohmann::json::parse(
-      io::read_regular_file(marker, "reference cache marker"), nullptr, /*allow_exceptions=*/false);
-  return stored == expected && load_reference(image_path, mask_path, out);
-}
-
-}  // namespace
-
 std::string reference_stem(const pipeline::PipelineConfig& resolved, const nlohmann::json& scene) {
   return fmt::format("reference_{}x{}_{}", resolved.width, resolved.height,
-                     short_hash(reference_fingerprint(resolved, scene).dump()).substr(0, 8));
+                     fnv1a64_hex(reference_fingerprint(resolved, scene).dump()).substr(0, 8));
 }
 
 std::string reference_image_path(const std::string& stem) {
@@ -65,9 +51,10 @@ ReferenceImages cached_reference(const pipeline::GpuScene& scene,
     }
   });
   ReferenceImages images;
-  if (load_cached(marker, marker_content, image_path, mask_path, images)) {
+  if (std::optional<ReferenceImages> kept =
+          load_marked_reference(marker, marker_content, image_path, mask_path)) {
     found(ReferenceSource::kKept);
-    return images;
+    return std::move(*kept);
   }
   std::optional<ReferenceImages> stored = store ? store->load(marker_content) : std::nullopt;
   if (stored) {

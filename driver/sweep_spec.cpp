@@ -343,13 +343,4 @@ nlohmann::json config_fingerprint(const SweepConfig& config, const nlohmann::jso
   return {{"knobs", knobs}, {"scene", scene}};
 }
 
-std::string short_hash(const std::string& text) {
-  std::uint64_t h = 14695981039346656037ull;  // FNV-1a offset basis
-  for (const unsigned char c : text) {
-    h ^= c;
-    h *= 1099511628211ull;  // FNV prime
-  }
-  return fmt::format("{:016x}", h);
-}
-
 }  // namespace skinsim::driver

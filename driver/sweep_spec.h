@@ -105,7 +105,4 @@ std::vector<std::pair<std::string, std::string>> all_knobs(const SweepConfig& co
 // frame does not depend on (pipeline::knob_applies): what a results row shows.
 void keep_used_knobs(const SweepConfig& config, std::map<std::string, std::string>& knobs);
 
-// FNV-1a 64-bit hash of `text` as 16 hex digits (file names of cached references).
-std::string short_hash(const std::string& text);
-
 }  // namespace skinsim::driver

@@ -3,7 +3,7 @@
 // paper and its reference implementation (github.com/NVlabs/flip). Convolutions clamp at the
 // image border (the reference's C++ code does the same). Like that code, FLIP here computes in
 // single precision; the per-pixel colour and error work runs on four pixels at once, or eight
-// where the processor has AVX2 (quality/float_lanes.h), with the same bits either way.
+// where the processor has AVX2 (util/float_lanes.h), with the same bits either way.
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -19,15 +19,15 @@
 
 #include "quality/error.h"
 #include "quality/flip_color.h"
-#include "quality/float_lanes.h"
 #include "quality/metric_inputs.h"
 #include "quality/metrics.h"
 #include "quality/separable_stream.h"
+#include "util/float_lanes.h"
 #include "util/simd_dispatch.h"
 #include "util/unorm8.h"
 
 // Eight-lane vectors pass only between always-inlined functions inside target("avx2") code
-// (quality/float_lanes.h), never across a call.
+// (util/float_lanes.h), never across a call.
 #pragma GCC diagnostic ignored "-Wpsabi"
 
 namespace skinsim::quality {

@@ -2,14 +2,14 @@
 // github.com/NVlabs/flip): sRGB -> linear RGB -> XYZ (D65) -> YCxCz opponent space and back,
 // XYZ -> CIELAB, the Hunt adjustment and the HyAB distance. In single precision, as NVIDIA's
 // C++ and CUDA implementations compute them, on four or eight pixels at once, one per lane
-// (quality/float_lanes.h).
+// (util/float_lanes.h).
 #pragma once
 
 #include <cmath>
 
-#include "quality/float_lanes.h"
+#include "util/float_lanes.h"
 
-// Eight-lane vectors pass only between always-inlined functions (quality/float_lanes.h).
+// Eight-lane vectors pass only between always-inlined functions (util/float_lanes.h).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wpsabi"
 

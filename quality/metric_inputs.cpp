@@ -9,7 +9,7 @@
 #include <string>
 
 #include "quality/error.h"
-#include "quality/float_lanes.h"
+#include "util/float_lanes.h"
 
 namespace skinsim::quality {
 namespace {

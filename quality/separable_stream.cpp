@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "quality/float_lanes.h"
+#include "util/float_lanes.h"
 #include "util/simd_dispatch.h"
 
 namespace skinsim::quality {

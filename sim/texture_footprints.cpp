@@ -1,25 +1,17 @@
 #include "sim/texture_footprints.h"
 
-#include <algorithm>
 #include <cstring>
 
 #include "sim/texture_filtering.h"
+#include "util/float_lanes.h"
 #include "util/simd_dispatch.h"
 
-// Eight-lane vectors live only inside the AVX2 function and the always-inlined kernel: none is
-// passed between functions (see quality/float_lanes.h).
+// Eight-lane vectors pass only between always-inlined functions (util/float_lanes.h).
 #pragma GCC diagnostic ignored "-Wpsabi"
 
 namespace skinsim::sim {
 
 namespace {
-
-using Float4 = float __attribute__((vector_size(16)));
-using Int4 = std::int32_t __attribute__((vector_size(16)));
-using Uint4 = std::uint32_t __attribute__((vector_size(16)));
-using Float8 = float __attribute__((vector_size(32)));
-using Int8 = std::int32_t __attribute__((vector_size(32)));
-using Uint8 = std::uint32_t __attribute__((vector_size(32)));
 
 // morton_spread of each lane's low 16 bits: the bits moved to the even positions.
 template <class U>
@@ -34,37 +26,31 @@ template <class U>
 
 // Footprints first .. first + lanes - 1 (those at or beyond count are computed from (0, 0) and
 // not used).
-template <class F, class I, class U>
+template <class V>
 [[gnu::always_inline]] inline void footprints(const float* u, const float* v, int first, int count,
                                               const LevelView& level, Wrap wrap,
                                               std::uint32_t level_base, std::uint32_t texel_bytes,
                                               std::uint32_t line_shift, FootprintLanes& out) {
-  constexpr int kLanes = static_cast<int>(sizeof(F) / sizeof(float));
-  F pu{}, pv{};
-  std::memcpy(&pu, u + first, sizeof(F));
-  std::memcpy(&pv, v + first, sizeof(F));
+  using I = IntLanes<V>;
+  using U = UintLanes<V>;
   // filtering::floor_split of uv * (width, height) - 0.5, lane by lane.
-  F limit{};
-  limit += 1073741824.0f;
-  pu = pu * static_cast<float>(level.width) - 0.5f;
-  pv = pv * static_cast<float>(level.height) - 0.5f;
+  const V limit = splat<V>(1073741824.0f);
+  V pu = load_lanes<V>(u + first, kLanes<V>) * static_cast<float>(level.width) - 0.5f;
+  V pv = load_lanes<V>(v + first, kLanes<V>) * static_cast<float>(level.height) - 0.5f;
   pu = pu > -limit ? (pu < limit ? pu : limit) : -limit;  // NaN fails both: -limit
   pv = pv > -limit ? (pv < limit ? pv : limit) : -limit;
-  I x0 = __builtin_convertvector(pu, I);  // truncates toward zero
-  I y0 = __builtin_convertvector(pv, I);
-  x0 += pu < __builtin_convertvector(x0, F);  // true is -1: one down below zero
-  y0 += pv < __builtin_convertvector(y0, F);
-  const F ax = pu - __builtin_convertvector(x0, F);
-  const F ay = pv - __builtin_convertvector(y0, F);
+  I x0 = floor_lanes(pu), y0 = floor_lanes(pv);
+  const V ax = pu - __builtin_convertvector(x0, V);
+  const V ay = pv - __builtin_convertvector(y0, V);
   I x1 = x0 + 1, y1 = y0 + 1;
 
   // filtering::wrap_coord, needed only where a footprint leaves the level.
   const U inside = (reinterpret_cast<U>(x0) < static_cast<std::uint32_t>(level.width - 1)) &
                    (reinterpret_cast<U>(y0) < static_cast<std::uint32_t>(level.height - 1));
   bool all_inside = true;
-  for (int i = 0; i < kLanes; ++i) all_inside &= first + i >= count || inside[i] != 0;
+  for (int i = 0; i < kLanes<V>; ++i) all_inside &= first + i >= count || inside[i] != 0;
   if (!all_inside) {
-    for (int i = 0; i < kLanes; ++i) {
+    for (int i = 0; i < kLanes<V>; ++i) {
       x0[i] = filtering::wrap_coord(x0[i], level.width, wrap);
       x1[i] = filtering::wrap_coord(x1[i], level.width, wrap);
       y0[i] = filtering::wrap_coord(y0[i], level.height, wrap);
@@ -94,16 +80,14 @@ template <class F, class I, class U>
                                              const LevelView& level, Wrap wrap,
                                              std::uint32_t level_base, std::uint32_t texel_bytes,
                                              std::uint32_t line_shift, FootprintLanes& out) {
-  footprints<Float8, Int8, Uint8>(u, v, 0, count, level, wrap, level_base, texel_bytes, line_shift,
-                                  out);
+  footprints<Float8>(u, v, 0, count, level, wrap, level_base, texel_bytes, line_shift, out);
 }
 
 void footprints_sse2(const float* u, const float* v, int count, const LevelView& level, Wrap wrap,
                      std::uint32_t level_base, std::uint32_t texel_bytes, std::uint32_t line_shift,
                      FootprintLanes& out) {
   for (int first = 0; first < count; first += 4) {
-    footprints<Float4, Int4, Uint4>(u, v, first, count, level, wrap, level_base, texel_bytes,
-                                    line_shift, out);
+    footprints<Float4>(u, v, first, count, level, wrap, level_base, texel_bytes, line_shift, out);
   }
 }
 

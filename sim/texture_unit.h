@@ -81,7 +81,8 @@ class ExecTexUnit {
                      bool dependent);
   glm::vec4 nearest(const Texture2D& tex, std::uint64_t base, int level, glm::vec2 uv);
   float shadow(const Texture2D& tex, std::uint64_t base, glm::vec3 coord, bool dependent);
-  void count_sample(const Texture2D& tex, Filter filter, bool dependent);
+  // Counts n sample instructions of one kind.
+  void count_sample(const Texture2D& tex, Filter filter, bool dependent, std::uint64_t n = 1);
   // A bilinear sample's 2x2 texels (x0/x1, y0/y1 after wrapping) and blend weights.
   struct Footprint {
     const LevelView* level;

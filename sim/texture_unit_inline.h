@@ -91,10 +91,11 @@ inline glm::vec4 ExecTexUnit::bilinear(const Texture2D& tex, std::uint64_t base,
   return blend_texels ? blend(f) : glm::vec4(0.0f);
 }
 
-inline void ExecTexUnit::count_sample(const Texture2D& tex, Filter filter, bool dependent) {
-  ++counters_->samples_by_filter[static_cast<int>(filter)];
-  if (dependent) ++counters_->samples_dependent;
-  if (tex.texel_bytes() > 4) ++counters_->samples_wide_format;
+inline void ExecTexUnit::count_sample(const Texture2D& tex, Filter filter, bool dependent,
+                                      std::uint64_t n) {
+  counters_->samples_by_filter[static_cast<int>(filter)] += n;
+  if (dependent) counters_->samples_dependent += n;
+  if (tex.texel_bytes() > 4) counters_->samples_wide_format += n;
 }
 
 inline float ExecTexUnit::sample_shadow(int binding, const Varying<3>& coord) {
@@ -192,6 +193,7 @@ std::array<glm::vec4, N> ExecTexUnit::sample_each(int binding, const Coord& coor
     return out;
   }
   const LevelView& level = tex.level(0);
+  count_sample(tex, Filter::kBilinear, kDependent, N);
   for (int first = 0; first < N; first += FootprintLanes::kMax) {
     const int n = std::min(FootprintLanes::kMax, N - first);
     std::array<float, FootprintLanes::kMax> u{}, v{};  // lanes from n on: unused
@@ -205,7 +207,6 @@ std::array<glm::vec4, N> ExecTexUnit::sample_each(int binding, const Coord& coor
                        static_cast<std::uint32_t>(base + tex.level_offset(0)),
                        static_cast<std::uint32_t>(tex.texel_bytes()), lines_->line_shift(), f);
     for (int i = 0; i < n; ++i) {
-      count_sample(tex, Filter::kBilinear, kDependent);
       record_footprint(f.lines[0][i], f.lines[1][i], f.lines[2][i], f.lines[3][i]);
       out[first + i] = blend({&level, f.x0[i], f.x1[i], f.y0[i], f.y1[i], f.ax[i], f.ay[i]});
     }

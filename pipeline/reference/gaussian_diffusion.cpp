@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "pipeline/bake/skin_profile.h"
+#include "util/float_lanes.h"
 #include "util/simd_dispatch.h"
 
 namespace skinsim::pipeline {
@@ -66,11 +67,6 @@ class ExpNegTable {
   static constexpr float kScale = kSize / kMax;
   std::vector<float> values_;
 };
-
-// __m128 and __m256 as plain GCC vector types (without their may_alias attribute), for
-// template arguments.
-using Float4 = float __attribute__((vector_size(16)));
-using Float8 = float __attribute__((vector_size(32)));
 
 // Four floats from each of a and b in one AVX register: a's in the low half, b's in the high.
 [[gnu::target("avx")]] inline __m256 load_pair(const float* a, const float* b) {

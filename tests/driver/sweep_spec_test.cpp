@@ -11,6 +11,7 @@
 #include <set>
 
 #include "scene/error.h"
+#include "util/fingerprint.h"
 
 namespace skinsim::driver {
 namespace {
@@ -305,9 +306,10 @@ TEST(SweepSpec, SceneFingerprintCoversTheFilesContent) {
   EXPECT_FALSE(scene_fingerprint(SceneSource{}).contains("content"));  // the code makes it
 }
 
-TEST(SweepSpec, ShortHashIsStable) {
-  EXPECT_EQ(short_hash(""), "cbf29ce484222325");   // FNV-1a 64 offset basis
-  EXPECT_EQ(short_hash("a"), "af63dc4c8601ec8c");  // published FNV-1a test vector
+// Reference file names and content fingerprints hash with FNV-1a 64 (util/fingerprint.h).
+TEST(SweepSpec, FileNameHashIsFnv1a64) {
+  EXPECT_EQ(fnv1a64_hex(""), "cbf29ce484222325");   // FNV-1a 64 offset basis
+  EXPECT_EQ(fnv1a64_hex("a"), "af63dc4c8601ec8c");  // published FNV-1a test vector
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
-// The elementary functions on float lanes FLIP computes with (quality/float_lanes.h), against libm
+// The elementary functions on float lanes FLIP computes with (util/float_lanes.h), against libm
 // in double over the ranges FLIP uses them on.
-#include "quality/float_lanes.h"
+#include "util/float_lanes.h"
 
 #include <gtest/gtest.h>
 

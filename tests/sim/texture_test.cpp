@@ -315,7 +315,6 @@ TEST(TextureUnit, SampleEachIsSampleAfterSample) {
   batches[0][3].value = {std::nanf(""), 0.5f};
   batches[0][4].value = {-7.25f, 1e9f};
   batches[0][5].value = {0.0f, 1.0f};
-  int levels_sampled = 0;
   for (const glm::ivec2 size : {glm::ivec2(37, 23), glm::ivec2(64, 32), glm::ivec2(1, 5)}) {
     std::vector<glm::vec4> texels(static_cast<std::size_t>(size.x) * size.y);
     for (glm::vec4& t : texels) t = glm::vec4(near(rng), near(rng), near(rng), near(rng));
@@ -359,13 +358,11 @@ TEST(TextureUnit, SampleEachIsSampleAfterSample) {
             EXPECT_EQ(each_counters.samples_wide_format, one_counters.samples_wide_format);
             EXPECT_EQ(each_counters.samples_dependent, one_counters.samples_dependent);
             EXPECT_EQ(each_counters.samples_dependent, batches.size() * kTaps);
-            levels_sampled += mipmaps ? 0 : 1;
           }
         }
       }
     }
   }
-  EXPECT_EQ(levels_sampled, 24);
 }
 
 }  // namespace

@@ -1,9 +1,10 @@
 // Float lanes through GCC/Clang vector extensions: four (SSE2, all x86-64 has) or eight (AVX2,
-// where the processor has it; util/simd_dispatch.h), and the elementary functions FLIP needs
-// on them. Every function is a fixed sequence of IEEE single-precision operations on each
-// lane, independent of the other lanes and of the width, so a pixel's result does not depend
-// on which pixels share its register, on the thread count or on the processor (neither SSE2
-// nor the AVX2 target has a fused multiply-add to contract into).
+// where the processor has it; util/simd_dispatch.h), and the elementary functions on them
+// (FLIP's colour work, the texture unit's footprint addressing, the reference's diffusion). Every
+// function is a fixed sequence of IEEE single-precision operations on each lane, independent of the
+// other lanes and of the width, so a pixel's result does not depend on which pixels share its
+// register, on the thread count or on the processor (neither SSE2 nor the AVX2 target has a fused
+// multiply-add to contract into).
 //
 // log2 and exp2 are Cephes's single-precision polynomials (S. L. Moshier, Cephes Math Library
 // 2.2, logf.c and exp2f.c), within 2 ulp of the exact value; pow and cbrt are built on them,
@@ -19,11 +20,12 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wpsabi"
 
-namespace skinsim::quality {
+namespace skinsim {
 
 using Float4 = float __attribute__((vector_size(16)));
 using Int4 = std::int32_t __attribute__((vector_size(16)));
@@ -46,6 +48,12 @@ struct IntLanesOf<Float8> {
 };
 template <class V>
 using IntLanes = typename IntLanesOf<V>::type;
+
+// The unsigned integer lanes of a float vector type (bit fields: shifts, masks).
+using Uint4 = std::uint32_t __attribute__((vector_size(16)));
+using Uint8 = std::uint32_t __attribute__((vector_size(32)));
+template <class V>
+using UintLanes = std::conditional_t<kLanes<V> == 4, Uint4, Uint8>;
 
 template <class V = Float4>
 [[gnu::always_inline]] inline V splat(float v) {
@@ -164,6 +172,6 @@ template <class V>
   return exp2_lanes(log2_lanes(max_lanes(x, splat<V>(1.17549435e-38f))) * (1.0f / 3.0f));
 }
 
-}  // namespace skinsim::quality
+}  // namespace skinsim
 
 #pragma GCC diagnostic pop
