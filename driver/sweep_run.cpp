@@ -18,6 +18,7 @@
 #include "driver/sweep_config_result.h"
 #include "driver/sweep_progress.h"
 #include "driver/sweep_reference.h"
+#include "driver/sweep_thumbnails.h"
 #include "gpu_model/device_profile.h"
 #include "gpu_model/profile_loader.h"
 #include "io/atomic_file.h"
@@ -95,12 +96,17 @@ void compute(const fs::path& dir, const Job& job, int frame_threads, sim::PassMe
   const std::string& id = job.config->id;
   const FrameResult frame =
       run_frame(*job.scene, job.resolved, *job.device, frame_threads, {}, &memo);
-  const FrameQuality measured = evaluate_quality(frame.output.frame, *job.reference);
-  // Each PNG's zlib stream is encoded by one thread (~80 ms at 2048x1536): the two at once.
-  tbb::parallel_invoke([&] { write_png(frame.output.frame, dir / config_frame_path(id)); },
-                       [&] { quality::save_png(measured.error_map, dir / config_error_path(id)); });
+  FrameQuality measured = evaluate_quality(frame.output.frame, *job.reference);
+  // Each PNG's zlib stream is encoded by one thread (~80 ms at 2048x1536): the two at once,
+  // each with its thumbnail for the report while its pixels are at hand.
+  tbb::parallel_invoke(
+      [&] { write_image_and_thumbnail(to_image(frame.output.frame), dir, config_frame_path(id)); },
+      [&] {
+        write_image_and_thumbnail(std::move(measured.error_map), dir, config_error_path(id));
+      });
   StoredConfig stored;
   stored.fingerprint = job.fingerprint;
+  // config_row reads the metrics; the error map went into its PNG above.
   stored.row = config_row(*job.config, frame, measured, config_frame_path(id),
                           config_error_path(id), job.reference_image);
   if (const std::string bad = non_finite_figure(stored.row); !bad.empty()) throw SweepError(bad);

@@ -23,6 +23,13 @@ bool up_to_date(const fs::path& thumb, const fs::path& image) {
   return thumb_time >= fs::last_write_time(image, ec) && !ec;
 }
 
+// `saved`: the pixels load_png reads from `image`'s PNG.
+void write_thumbnail(const quality::Image& saved, const fs::path& sweep_dir,
+                     const std::string& image) {
+  quality::save_png(quality::resized(saved, std::min(kThumbnailWidth, saved.width)),
+                    sweep_dir / reports::thumbnail_path(image));
+}
+
 }  // namespace
 
 void write_thumbnails(const reports::SweepTable& table, const fs::path& sweep_dir) {
@@ -42,10 +49,17 @@ void write_thumbnails(const reports::SweepTable& table, const fs::path& sweep_di
   if (todo.empty()) return;
   fs::create_directories(sweep_dir / "thumbs");
   tbb::parallel_for(std::size_t{0}, todo.size(), [&](std::size_t i) {
-    const quality::Image full = quality::load_png(sweep_dir / todo[i]);
-    quality::save_png(quality::resized(full, std::min(kThumbnailWidth, full.width)),
-                      sweep_dir / reports::thumbnail_path(todo[i]));
+    write_thumbnail(quality::load_png(sweep_dir / todo[i]), sweep_dir, todo[i]);
   });
+}
+
+void write_image_and_thumbnail(quality::Image image, const fs::path& sweep_dir,
+                               const std::string& relative) {
+  quality::save_png(image, sweep_dir / relative);
+  // After the image: write_thumbnails takes a thumbnail older than its image for a stale one.
+  fs::create_directories(sweep_dir / "thumbs");
+  quality::round_to_saved_png(image);
+  write_thumbnail(image, sweep_dir, relative);
 }
 
 }  // namespace skinsim::driver

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 
+#include "quality/image.h"
 #include "reports/sweep_table.h"
 
 namespace skinsim::driver {
@@ -15,5 +16,13 @@ inline constexpr int kThumbnailWidth = 320;  // pixels; the page shows them 160-
 // a thumbnail older than the image. Images that do not exist are skipped (the report then has
 // no thumbnail for them and links nothing that is missing).
 void write_thumbnails(const reports::SweepTable& table, const std::filesystem::path& sweep_dir);
+
+// Writes `image` as the PNG `relative` (a path inside sweep_dir), then its thumbnail, made from
+// the pixels in memory instead of the file read back: the thumbnail write_thumbnails would make
+// from that PNG, byte for byte, without decoding it (a sweep's frames and error maps: 32
+// PNGs of 2048x1536 decoded after the last configuration, otherwise). Takes the image to
+// round it in place: a frame's copy would be 36 MiB more at the sweep's peak.
+void write_image_and_thumbnail(quality::Image image, const std::filesystem::path& sweep_dir,
+                               const std::string& relative);
 
 }  // namespace skinsim::driver

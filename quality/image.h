@@ -44,6 +44,9 @@ struct ScalarMap {
 Image load_png(const std::filesystem::path& path);
 // Writes 8-bit RGB, each value clamped to [0,1] and rounded to the nearest 1/255.
 void save_png(const Image& image, const std::filesystem::path& path);
+// Makes `image` what load_png reads back from the PNG save_png writes of it, bit for bit,
+// without the file: each value becomes its nearest byte's (util/unorm8.h).
+void round_to_saved_png(Image& image);
 
 // Masks as 8-bit grey PNGs: any non-zero value counts.
 Mask load_mask_png(const std::filesystem::path& path);

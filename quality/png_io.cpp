@@ -93,6 +93,12 @@ void save_png(const Image& image, const std::filesystem::path& path) {
   write_png_u8(path, image.width, image.height, 3, to_rgb8(image));
 }
 
+void round_to_saved_png(Image& image) {
+  for_each_pixel(image.rgb.size(), [&](std::size_t i) {
+    for (int c = 0; c < 3; ++c) image.rgb[i][c] = kUnorm8Value[unorm8_nearest(image.rgb[i][c])];
+  });
+}
+
 Mask load_mask_png(const std::filesystem::path& path) {
   Mask mask;
   std::vector<float> pixels;

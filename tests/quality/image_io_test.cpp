@@ -68,6 +68,33 @@ TEST_F(ImageIo, EightBitPngReadsBackBitForBit) {
   }
 }
 
+// round_to_saved_png gives what load_png reads from save_png's file, bit for bit, for values
+// between bytes, on the halves between two, out of range, -0 and NaN: the sweep makes its
+// thumbnails from it instead of decoding the PNG it has just written.
+TEST_F(ImageIo, RoundToSavedPngIsWhatLoadPngReads) {
+  Image image = testing::add_noise(testing::pattern_image(61, 17), 0.3f);
+  const float specials[] = {-0.5f,
+                            -0.0f,
+                            1.5f,
+                            std::numeric_limits<float>::quiet_NaN(),
+                            std::numeric_limits<float>::infinity(),
+                            0.5f / 255.0f,
+                            127.5f / 255.0f,
+                            std::nextafter(127.5f / 255.0f, 0.0f)};
+  for (std::size_t i = 0; i < std::size(specials); ++i) image.rgb[i] = glm::vec3(specials[i]);
+  const auto path = dir_ / "noisy.png";
+  save_png(image, path);
+  const Image loaded = load_png(path);
+  round_to_saved_png(image);
+  for (std::size_t i = 0; i < image.rgb.size(); ++i) {
+    for (int c = 0; c < 3; ++c) {
+      ASSERT_EQ(std::bit_cast<std::uint32_t>(image.rgb[i][c]),
+                std::bit_cast<std::uint32_t>(loaded.rgb[i][c]))
+          << "pixel " << i << " channel " << c;
+    }
+  }
+}
+
 TEST_F(ImageIo, SaveClampsOutOfRangeValues) {
   Image image = Image::filled(2, 1, glm::vec3(0.0f));
   image.rgb[0] = glm::vec3(-0.5f, 1.5f, std::nanf(""));
