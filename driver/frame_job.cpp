@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "driver/images.h"
 #include "driver/reference_cache.h"
 #include "driver/skin_diagnosis.h"
 #include "io/read_file.h"
@@ -60,7 +61,7 @@ FrameJobResult run_frame_job(const FrameJob& job) {
         r.reference_not_stored = job.reference_store->keep(r.reference_marker, *r.reference);
       }
     }
-    r.quality = evaluate_quality(r.frame.output.frame, *r.reference);
+    r.quality = evaluate_quality(to_image(r.frame.output.frame), *r.reference);
     if (!r.quality->has_skin_metrics()) {
       r.no_skin = no_skin_reason(*r.scene, job.scene.skin_materials);
       warn(r.no_skin + " (skin metrics not available)");

@@ -5,7 +5,6 @@
 #include "driver/images.h"
 #include "quality/error_map.h"
 #include "quality/metrics.h"
-#include "util/unorm8.h"
 
 namespace skinsim::driver {
 
@@ -13,20 +12,17 @@ ReferenceImages reference_images(const pipeline::ReferenceFrame& reference) {
   ReferenceImages r;
   // Quantise to 8 bits as a display would: the frames compared against it are RGBA8.
   r.image = to_image(reference.frame);
-  for (glm::vec3& c : r.image.rgb) {
-    for (int i = 0; i < 3; ++i) c[i] = kUnorm8Value[unorm8_nearest(c[i])];
-  }
+  quality::round_to_saved_png(r.image);
   r.skin.width = reference.frame.width;
   r.skin.height = reference.frame.height;
   r.skin.values = reference.skin_mask;
   return r;
 }
 
-FrameQuality evaluate_quality(const sim::RenderTarget& frame, const ReferenceImages& reference) {
-  if (frame.width != reference.image.width || frame.height != reference.image.height) {
+FrameQuality evaluate_quality(const quality::Image& test, const ReferenceImages& reference) {
+  if (test.width != reference.image.width || test.height != reference.image.height) {
     throw std::invalid_argument("frame and reference sizes differ");
   }
-  const quality::Image test = to_image(frame);
   FrameQuality q;
   q.metrics["psnr_frame"] = quality::psnr(test, reference.image);
   // One SSIM map serves the frame's and the skin's mean.

@@ -9,7 +9,6 @@
 #include "pipeline/reference/reference.h"
 #include "quality/image.h"
 #include "quality/metrics.h"
-#include "sim/render_target.h"
 
 namespace skinsim::driver {
 
@@ -34,6 +33,7 @@ struct ReferenceImages {
 };
 ReferenceImages reference_images(const pipeline::ReferenceFrame& reference);
 
-FrameQuality evaluate_quality(const sim::RenderTarget& frame, const ReferenceImages& reference);
+// `test`: the frame as an image (to_image of its render target).
+FrameQuality evaluate_quality(const quality::Image& test, const ReferenceImages& reference);
 
 }  // namespace skinsim::driver

@@ -96,11 +96,12 @@ void compute(const fs::path& dir, const Job& job, int frame_threads, sim::PassMe
   const std::string& id = job.config->id;
   const FrameResult frame =
       run_frame(*job.scene, job.resolved, *job.device, frame_threads, {}, &memo);
-  FrameQuality measured = evaluate_quality(frame.output.frame, *job.reference);
+  quality::Image image = to_image(frame.output.frame);
+  FrameQuality measured = evaluate_quality(image, *job.reference);
   // Each PNG's zlib stream is encoded by one thread (~80 ms at 2048x1536): the two at once,
   // each with its thumbnail for the report while its pixels are at hand.
   tbb::parallel_invoke(
-      [&] { write_image_and_thumbnail(to_image(frame.output.frame), dir, config_frame_path(id)); },
+      [&] { write_image_and_thumbnail(std::move(image), dir, config_frame_path(id)); },
       [&] {
         write_image_and_thumbnail(std::move(measured.error_map), dir, config_error_path(id));
       });

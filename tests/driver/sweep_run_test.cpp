@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "driver/frame_quality.h"
+#include "driver/images.h"
 #include "driver/skin_diagnosis.h"
 #include "driver/sweep_results.h"
 #include "driver/sweep_spec.h"
@@ -317,7 +318,7 @@ TEST(FrameQuality, AReferenceWithoutSkinGivesFrameMetricsOnly) {
   reference.image.rgb.assign(8, glm::vec3(0.5f));
   reference.skin.values.assign(8, 0);  // no skin pixel
   const sim::RenderTarget frame("frame", 4, 2, sim::TexelFormat::kRGBA8);
-  const FrameQuality q = evaluate_quality(frame, reference);
+  const FrameQuality q = evaluate_quality(to_image(frame), reference);
   EXPECT_FALSE(q.has_skin_metrics());
   EXPECT_EQ(q.metrics.count("psnr_skin") + q.metrics.count("ssim_skin"), 0u);
   for (const char* m : {"psnr_frame", "ssim_frame", "flip_frame"}) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "driver/frame_quality.h"
+#include "driver/images.h"
 #include "pipeline/frame.h"
 #include "pipeline/reference/reference.h"
 #include "tests/pipeline/mobile/test_scenes.h"
@@ -54,7 +55,7 @@ TEST(ReferenceAgreement, HeadQualityIsHighButNotPerfect) {
   sim::Gpu gpu(sim::GpuConfig{});
   const FrameOutput f = render_frame(gs, c, gpu);
   const driver::ReferenceImages ref = driver::reference_images(render_reference(gs, c, 0));
-  const driver::FrameQuality q = driver::evaluate_quality(f.frame, ref);
+  const driver::FrameQuality q = driver::evaluate_quality(driver::to_image(f.frame), ref);
   EXPECT_GT(q.metrics.at("ssim_skin"), 0.9);
   EXPECT_LT(q.metrics.at("ssim_skin"), 1.0);
   EXPECT_GT(q.metrics.at("flip_skin"), 0.0);
@@ -75,7 +76,7 @@ TEST(ReferenceAgreement, DipoleTechniqueIsCloserToTheDipoleReference) {
   const auto flip = [&](ReferenceProfile profile) {
     c.reference_profile = profile;
     const driver::ReferenceImages ref = driver::reference_images(render_reference(gs, c, 0));
-    return driver::evaluate_quality(f.frame, ref).metrics.at("flip_skin");
+    return driver::evaluate_quality(driver::to_image(f.frame), ref).metrics.at("flip_skin");
   };
   EXPECT_LT(flip(ReferenceProfile::kDipole), flip(ReferenceProfile::kSixGaussian));
 }
