@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libembree-dev  # ray casting: the reference's shadows and the thickness bake
   libxxhash-dev  # XXH3: keys of the render-pass memo that lets sweeps replay shared passes
+  libdeflate-dev  # deflate for the PNGs skinsim writes (stb_image_write, from libstb-dev, the container)
   libvtk9-dev xvfb xauth
   libglx-dev  # GLX: charts check the X display offers the OpenGL VTK needs (reports/)
   glslang-tools  # glslangValidator checks the exported GLSL ES in the tests

@@ -12,6 +12,7 @@
 #include "quality/error_map.h"
 #include "quality/image.h"
 #include "quality/json_value.h"
+#include "quality/png_encode.h"
 #include "tests/quality/test_image.h"
 #include "util/unorm8.h"
 
@@ -159,6 +160,18 @@ TEST_F(ImageIo, ErrorsNameTheFile) {
   Image broken = Image::filled(2, 2, glm::vec3(0.5f));
   broken.rgb.pop_back();
   EXPECT_THROW(save_png(broken, dir_ / "broken.png"), QualityError);
+}
+
+// stb_image_write counts a PNG's filtered bytes in an int: larger images are refused with
+// the file's name, before any pixel is read.
+TEST(PngEncode, RefusesImagesTooLargeForOnePng) {
+  try {
+    encode_png_u8(40000, 20000, 3, {}, "huge.png");
+    FAIL() << "a 40000x20000 RGB image was encoded";
+  } catch (const QualityError& e) {
+    EXPECT_NE(std::string(e.what()).find("huge.png"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(encode_png_u8(1, 1, 1, std::vector<std::uint8_t>{7}, "one.png").empty());
 }
 
 TEST(ErrorMap, ColourMapsMatchMatplotlibEndpoints) {
