@@ -1,5 +1,5 @@
-// Image and Mask themselves; their PNG input/output is png_io.cpp (OpenImageIO), so code that
-// only measures images links no image library.
+// Image and Mask themselves; their PNG input/output is png_io.cpp (libstb, libdeflate), so code
+// that only measures images links no image library.
 #include "quality/image.h"
 
 #include <algorithm>

@@ -39,8 +39,9 @@ struct ScalarMap {
   std::vector<float> values;
 };
 
-// Reads an 8- or 16-bit image (PNG or any format OpenImageIO reads); grey is replicated to
-// RGB, alpha is dropped. Values are the stored code values / max code, i.e. sRGB-encoded.
+// Reads an 8- or 16-bit image (PNG or any format stb_image reads) of at most 8192x8192
+// pixels; grey is replicated to RGB, alpha is dropped. Values are the stored code values /
+// max code, i.e. sRGB-encoded.
 Image load_png(const std::filesystem::path& path);
 // Writes 8-bit RGB, each value clamped to [0,1] and rounded to the nearest 1/255.
 void save_png(const Image& image, const std::filesystem::path& path);

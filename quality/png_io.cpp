@@ -1,6 +1,7 @@
-#include <OpenImageIO/imageio.h>
+#include <stb/stb_image.h>
 
 #include <algorithm>
+#include <memory>
 #include <string>
 #include <system_error>
 
@@ -27,45 +28,53 @@ std::vector<std::uint8_t> to_rgb8(const Image& image) {
 // An 8K 16-bit RGBA PNG is at most ~256 MiB uncompressed; anything larger is not an image
 // this project wrote or can use.
 constexpr std::uintmax_t kMaxImageFileBytes = std::uintmax_t{256} << 20;
+// The pixels a header may declare: 8K x 8K. A small file can declare far more (a
+// decompression bomb); it is refused before anything is decoded.
+constexpr long long kMaxImagePixels = 8192LL * 8192LL;
 
-// Reads all pixels as normalised floats; returns the channel count.
+// Reads all pixels as normalised floats; returns the channel count. stb_image (libstb, which
+// the glTF loader decodes with too) keeps values as stored: no gamma, no premultiplied alpha.
 int read_floats(const std::filesystem::path& path, int& width, int& height,
                 std::vector<float>& pixels) {
-  // A FIFO would block OpenImageIO's open forever, and /dev/zero would be read without end.
-  io::require_regular_file(path, "image", kMaxImageFileBytes);
-  // Keep colour values as stored: without this OpenImageIO premultiplies them by alpha.
-  OIIO::ImageSpec config;
-  config.attribute("oiio:UnassociatedAlpha", 1);
-  auto input = OIIO::ImageInput::open(path.string(), &config);
-  if (!input) {
-    throw QualityError("cannot open image '" + path.string() + "': " + OIIO::geterror());
+  // A FIFO would block, and /dev/zero would be read without end.
+  const std::string file = io::read_regular_file(path, "image", kMaxImageFileBytes);
+  const auto* bytes = reinterpret_cast<const stbi_uc*>(file.data());
+  const int size = static_cast<int>(file.size());
+  int channels = 0;
+  if (!stbi_info_from_memory(bytes, size, &width, &height, &channels)) {
+    throw QualityError("cannot open image '" + path.string() + "': " + stbi_failure_reason());
   }
-  const OIIO::ImageSpec& spec = input->spec();
-  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
+  if (width <= 0 || height <= 0 || channels <= 0) {
     throw QualityError("image '" + path.string() + "' has no pixels");
   }
-  width = spec.width;
-  height = spec.height;
-  const int channels = spec.nchannels;
+  if (static_cast<long long>(width) * height > kMaxImagePixels) {
+    throw QualityError("image '" + path.string() + "' declares " + std::to_string(width) + "x" +
+                       std::to_string(height) + " pixels, more than the 8192x8192 skinsim reads");
+  }
   const std::size_t count = static_cast<std::size_t>(width) * height * channels;
-  const auto read = [&](OIIO::TypeDesc type, void* data) {
-    if (!input->read_image(0, 0, 0, channels, type, data)) {
-      throw QualityError("cannot read pixels of '" + path.string() + "': " + input->geterror());
+  pixels.resize(count);
+  int w = 0, h = 0, n = 0;
+  const auto check = [&](const void* decoded) {
+    if (!decoded || w != width || h != height || n != channels) {
+      throw QualityError("cannot read pixels of '" + path.string() +
+                         "': " + (decoded ? "header and pixels disagree" : stbi_failure_reason()));
     }
   };
-  pixels.resize(count);
-  if (spec.format == OIIO::TypeDesc::UINT8) {
-    // Byte k becomes k / 255 exactly as the emulator stores it (util/unorm8.h). OpenImageIO 2.4's
-    // own conversion multiplies by 1/255, which is one ulp off for 126 of the 256 bytes, so
-    // a frame read back from its PNG would differ from the frame that was written.
-    std::vector<std::uint8_t> bytes(count);
-    read(OIIO::TypeDesc::UINT8, bytes.data());
-    std::transform(bytes.begin(), bytes.end(), pixels.begin(),
-                   [](std::uint8_t k) { return kUnorm8Value[k]; });
+  if (stbi_is_16_bit_from_memory(bytes, size)) {
+    const std::unique_ptr<stbi_us, decltype(&stbi_image_free)> decoded(
+        stbi_load_16_from_memory(bytes, size, &w, &h, &n, 0), stbi_image_free);
+    check(decoded.get());
+    std::transform(decoded.get(), decoded.get() + count, pixels.begin(),
+                   [](stbi_us k) { return static_cast<float>(k) / 65535.0f; });
   } else {
-    read(OIIO::TypeDesc::FLOAT, pixels.data());
+    // Byte k becomes k / 255 exactly as the emulator stores it (util/unorm8.h), so a frame
+    // read back from its PNG is the frame that was written.
+    const std::unique_ptr<stbi_uc, decltype(&stbi_image_free)> decoded(
+        stbi_load_from_memory(bytes, size, &w, &h, &n, 0), stbi_image_free);
+    check(decoded.get());
+    std::transform(decoded.get(), decoded.get() + count, pixels.begin(),
+                   [](stbi_uc k) { return kUnorm8Value[k]; });
   }
-  input->close();
   return channels;
 }
 

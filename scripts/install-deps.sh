@@ -4,7 +4,7 @@ set -euo pipefail
 
 packages=(
   cmake g++ make pkg-config ccache clang-format
-  libglm-dev libtinygltf-dev libstb-dev libopenimageio-dev libtbb-dev
+  libglm-dev libtinygltf-dev libstb-dev libtbb-dev
   libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libembree-dev  # ray casting: the reference's shadows and the thickness bake
@@ -18,9 +18,7 @@ packages=(
   python3  # the budget CLI test parses JUnit XML with its standard library
   slurmctld slurmd slurm-client munge  # tests/slurm: a throwaway single-node Slurm cluster
   chromium  # tests/reports: report.html checked in a real (headless) browser
-  # Debian's OpenImageIO CMake config references these files (iconvert, PyImath) and
-  # lists /usr/include/opencv4 as an include directory of OpenImageIO::OpenImageIO.
-  openimageio-tools python3-imath libopencv-core-dev
+  openimageio-tools  # oiiotool: tests/reports measures the browser's screenshots with it
 )
 
 missing=()

@@ -62,8 +62,8 @@ for option, names in NUMERIC_OPTIONS.items():
     # "--opt=" must not take the next argument as its value.
     cases.append((["run", option + "=", "--no-reference", "--out", OUT], names))
     cases.append((["run", option + "=nan", "--no-reference", "--out", OUT], names))
-# ~200 processes, each mostly the dynamic loader binding VTK's and OpenImageIO's libraries:
-# run them on every core (failures are collected in order either way).
+# ~200 processes, each mostly the dynamic loader binding VTK's libraries: run them on every
+# core (failures are collected in order either way).
 with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 2) as pool:
     list(pool.map(lambda case: expect_bad_input(*case), cases))
 

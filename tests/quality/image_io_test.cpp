@@ -51,7 +51,7 @@ TEST_F(ImageIo, PngRoundTripKeepsEightBitValues) {
 
 // A frame read back from its PNG is the frame that was written, bit for bit: every byte k
 // decodes to k / 255 as the emulator stores it, so FLIP of a saved frame equals FLIP of the
-// frame in memory (OpenImageIO's own decoding is one ulp off for 126 of the 256 bytes).
+// frame in memory (k * (1/255), OpenImageIO's decoding, is one ulp off for 126 of the 256).
 TEST_F(ImageIo, EightBitPngReadsBackBitForBit) {
   Image image = Image::filled(256, 1, glm::vec3(0.0f));
   for (int k = 0; k < 256; ++k) {
@@ -133,6 +133,49 @@ TEST_F(ImageIo, AlphaDoesNotScaleColour) {
   EXPECT_NEAR(loaded.rgb[0].b, 50.0f / 255.0f, 1e-6);
 }
 
+void write_bytes(const std::filesystem::path& path, const std::vector<unsigned char>& bytes) {
+  std::ofstream(path, std::ios::binary)
+      .write(reinterpret_cast<const char*>(bytes.data()),
+             static_cast<std::streamsize>(bytes.size()));
+}
+
+// A 16-bit PNG (made with Python's zlib: 2x1 RGB, (0, 65535, 32768) and (1, 257, 65534)) reads
+// as its code values over 65535, with no gamma applied.
+TEST_F(ImageIo, SixteenBitPngReadsCodeValues) {
+  const std::vector<unsigned char> png = {
+      0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49,
+      0x48, 0x44, 0x52, 0x00, 0x00, 0x00, 0x02, 0x00, 0x00, 0x00, 0x01, 0x10, 0x02,
+      0x00, 0x00, 0x00, 0x2b, 0xd0, 0x34, 0x9e, 0x00, 0x00, 0x00, 0x15, 0x49, 0x44,
+      0x41, 0x54, 0x78, 0x9c, 0x63, 0x60, 0x60, 0xf8, 0xff, 0xbf, 0x81, 0x81, 0x81,
+      0x91, 0x91, 0xf1, 0xff, 0x3f, 0x00, 0x1a, 0x02, 0x04, 0x7f, 0xa1, 0x62, 0x4b,
+      0x1d, 0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
+  write_bytes(dir_ / "deep.png", png);
+  const Image loaded = load_png(dir_ / "deep.png");
+  ASSERT_EQ(loaded.width, 2);
+  ASSERT_EQ(loaded.height, 1);
+  EXPECT_EQ(loaded.rgb[0], glm::vec3(0.0f, 1.0f, 32768.0f / 65535.0f));
+  EXPECT_EQ(loaded.rgb[1], glm::vec3(1.0f / 65535.0f, 257.0f / 65535.0f, 65534.0f / 65535.0f));
+}
+
+// A 45-byte greyscale PNG whose header declares 10000x10000 pixels (100 MB decoded, 400 MB as
+// floats, and within stb_image's own 1 GB limit) is refused before any decoding, naming the
+// file and the size.
+TEST_F(ImageIo, RefusesAHeaderDeclaringTooManyPixels) {
+  const std::vector<unsigned char> png = {
+      0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48, 0x44,
+      0x52, 0x00, 0x00, 0x27, 0x10, 0x00, 0x00, 0x27, 0x10, 0x08, 0x00, 0x00, 0x00, 0x00, 0x9f,
+      0x25, 0x3d, 0xfb, 0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
+  write_bytes(dir_ / "bomb.png", png);
+  try {
+    load_png(dir_ / "bomb.png");
+    FAIL() << "a 10000x10000 header was accepted";
+  } catch (const QualityError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("bomb.png"), std::string::npos) << message;
+    EXPECT_NE(message.find("10000x10000"), std::string::npos) << message;
+  }
+}
+
 TEST_F(ImageIo, MaskRoundTrip) {
   Mask mask = Mask::filled(5, 4, 0);
   mask.values[3] = 1;
@@ -150,11 +193,16 @@ TEST_F(ImageIo, ErrorsNameTheFile) {
   try {
     load_png(missing);
     FAIL() << "missing file accepted";
-  } catch (const UserError& e) {  // io::InputError: refused before OpenImageIO opens it
+  } catch (const UserError& e) {  // io::InputError: refused before it is read
     EXPECT_NE(std::string(e.what()).find("missing.png"), std::string::npos) << e.what();
   }
   std::ofstream(dir_ / "garbage.png") << "not a png";
-  EXPECT_THROW(load_png(dir_ / "garbage.png"), QualityError);
+  try {
+    load_png(dir_ / "garbage.png");
+    FAIL() << "garbage accepted";
+  } catch (const QualityError& e) {
+    EXPECT_NE(std::string(e.what()).find("garbage.png"), std::string::npos) << e.what();
+  }
   const auto no_dir = dir_ / "no_such_dir" / "out.png";
   EXPECT_THROW(save_png(Image::filled(2, 2, glm::vec3(0.5f)), no_dir), UserError);
   Image broken = Image::filled(2, 2, glm::vec3(0.5f));

@@ -1,12 +1,11 @@
 // Writes the default scene's textures, its environment and Lambert previews of the default
 // scene (and of a glTF file, if given) as PNGs, for looking at them:
 //   scene_preview <out_dir> [file.gltf|file.glb]
-#include <OpenImageIO/imageio.h>
-
 #include <cmath>
 #include <cstdio>
 #include <string>
 
+#include "quality/image.h"
 #include "scene/gltf_loader.h"
 #include "scene/procedural_head.h"
 #include "tests/scene/preview_raster.h"
@@ -15,19 +14,14 @@ namespace {
 
 using skinsim::scene::Image;
 
-bool write_png(const std::string& path, int w, int h, int channels,
+void write_png(const std::string& path, int w, int h, int channels,
                const std::vector<float>& data) {
-  std::vector<unsigned char> bytes(data.size());
+  std::vector<std::uint8_t> bytes(data.size());
   for (std::size_t i = 0; i < data.size(); ++i) {
-    bytes[i] = static_cast<unsigned char>(std::lround(std::clamp(data[i], 0.0f, 1.0f) * 255.0f));
+    bytes[i] = static_cast<std::uint8_t>(std::lround(std::clamp(data[i], 0.0f, 1.0f) * 255.0f));
   }
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) return false;
-  out->open(path, OIIO::ImageSpec(w, h, channels, OIIO::TypeDesc::UINT8));
-  out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
-  out->close();
+  skinsim::quality::write_png_u8(path, w, h, channels, bytes);
   std::printf("wrote %s\n", path.c_str());
-  return true;
 }
 
 void write_image(const std::string& path, const Image& img, bool alpha_only) {
