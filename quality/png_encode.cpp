@@ -46,9 +46,8 @@ unsigned char* deflate_level_1(const unsigned char* data, int size, int* out_siz
 
 namespace skinsim::quality {
 
-std::vector<unsigned char> encode_png_u8(int width, int height, int channels,
-                                         std::span<const std::uint8_t> data,
-                                         const std::string& what) {
+EncodedPng encode_png_u8(int width, int height, int channels, std::span<const std::uint8_t> data,
+                         const std::string& what) {
   // stb_image_write counts the filtered rows (one filter byte each) in an int.
   if ((static_cast<long long>(width) * channels + 1) * height > INT_MAX) {
     throw QualityError("cannot write '" + what + "': " + std::to_string(width) + "x" +
@@ -61,11 +60,12 @@ std::vector<unsigned char> encode_png_u8(int width, int height, int channels,
     return true;
   }();
   int size = 0;
-  const std::unique_ptr<unsigned char, decltype(&std::free)> png(
-      stbi_write_png_to_mem(data.data(), width * channels, width, height, channels, &size),
-      std::free);
-  if (!png) throw QualityError("cannot write '" + what + "': out of memory encoding the PNG");
-  return {png.get(), png.get() + size};
+  EncodedPng png;
+  png.data.reset(
+      stbi_write_png_to_mem(data.data(), width * channels, width, height, channels, &size));
+  if (!png.data) throw QualityError("cannot write '" + what + "': out of memory encoding the PNG");
+  png.size = static_cast<std::size_t>(size);
+  return png;
 }
 
 }  // namespace skinsim::quality

@@ -32,64 +32,68 @@ constexpr std::uintmax_t kMaxImageFileBytes = std::uintmax_t{256} << 20;
 // decompression bomb); it is refused before anything is decoded.
 constexpr long long kMaxImagePixels = 8192LL * 8192LL;
 
-// Reads all pixels as normalised floats; returns the channel count. stb_image (libstb, which
-// the glTF loader decodes with too) keeps values as stored: no gamma, no premultiplied alpha.
-int read_floats(const std::filesystem::path& path, int& width, int& height,
-                std::vector<float>& pixels) {
-  // A FIFO would block, and /dev/zero would be read without end.
-  const std::string file = io::read_regular_file(path, "image", kMaxImageFileBytes);
-  const auto* bytes = reinterpret_cast<const stbi_uc*>(file.data());
-  const int size = static_cast<int>(file.size());
-  int channels = 0;
-  if (!stbi_info_from_memory(bytes, size, &width, &height, &channels)) {
-    throw QualityError("cannot open image '" + path.string() + "': " + stbi_failure_reason());
-  }
-  if (width <= 0 || height <= 0 || channels <= 0) {
-    throw QualityError("image '" + path.string() + "' has no pixels");
-  }
-  if (static_cast<long long>(width) * height > kMaxImagePixels) {
-    throw QualityError("image '" + path.string() + "' declares " + std::to_string(width) + "x" +
-                       std::to_string(height) + " pixels, more than the 8192x8192 skinsim reads");
-  }
-  const std::size_t count = static_cast<std::size_t>(width) * height * channels;
-  pixels.resize(count);
-  int w = 0, h = 0, n = 0;
-  const auto check = [&](const void* decoded) {
-    if (!decoded || w != width || h != height || n != channels) {
-      throw QualityError("cannot read pixels of '" + path.string() +
-                         "': " + (decoded ? "header and pixels disagree" : stbi_failure_reason()));
+// An image as stb_image (libstb, which the glTF loader decodes with too) decodes it: the
+// samples as stored, 8 or 16 bits, with no gamma and no premultiplied alpha.
+class DecodedImage {
+ public:
+  explicit DecodedImage(const std::filesystem::path& path) {
+    // A FIFO would block, and /dev/zero would be read without end.
+    const std::string file = io::read_regular_file(path, "image", kMaxImageFileBytes);
+    const auto* bytes = reinterpret_cast<const stbi_uc*>(file.data());
+    const int size = static_cast<int>(file.size());
+    if (!stbi_info_from_memory(bytes, size, &width, &height, &channels)) {
+      throw QualityError("cannot open image '" + path.string() + "': " + stbi_failure_reason());
     }
-  };
-  if (stbi_is_16_bit_from_memory(bytes, size)) {
-    const std::unique_ptr<stbi_us, decltype(&stbi_image_free)> decoded(
-        stbi_load_16_from_memory(bytes, size, &w, &h, &n, 0), stbi_image_free);
-    check(decoded.get());
-    std::transform(decoded.get(), decoded.get() + count, pixels.begin(),
-                   [](stbi_us k) { return static_cast<float>(k) / 65535.0f; });
-  } else {
-    // Byte k becomes k / 255 exactly as the emulator stores it (util/unorm8.h), so a frame
-    // read back from its PNG is the frame that was written.
-    const std::unique_ptr<stbi_uc, decltype(&stbi_image_free)> decoded(
-        stbi_load_from_memory(bytes, size, &w, &h, &n, 0), stbi_image_free);
-    check(decoded.get());
-    std::transform(decoded.get(), decoded.get() + count, pixels.begin(),
-                   [](stbi_uc k) { return kUnorm8Value[k]; });
+    if (width <= 0 || height <= 0 || channels <= 0) {
+      throw QualityError("image '" + path.string() + "' has no pixels");
+    }
+    if (static_cast<long long>(width) * height > kMaxImagePixels) {
+      throw QualityError("image '" + path.string() + "' declares " + std::to_string(width) + "x" +
+                         std::to_string(height) + " pixels, more than the 8192x8192 skinsim reads");
+    }
+    int w = 0, h = 0, n = 0;
+    deep_ = stbi_is_16_bit_from_memory(bytes, size);
+    samples_.reset(deep_ ? static_cast<void*>(stbi_load_16_from_memory(bytes, size, &w, &h, &n, 0))
+                         : static_cast<void*>(stbi_load_from_memory(bytes, size, &w, &h, &n, 0)));
+    if (!samples_ || w != width || h != height || n != channels) {
+      throw QualityError("cannot read pixels of '" + path.string() +
+                         "': " + (samples_ ? "header and pixels disagree" : stbi_failure_reason()));
+    }
   }
-  return channels;
-}
+
+  // Channel `c` of pixel `i` normalised: code value / max code. Byte k is k / 255 exactly as
+  // the emulator stores it (util/unorm8.h), so a frame read back from its PNG is the frame
+  // that was written.
+  float value(std::size_t i, int c) const {
+    const std::size_t at = i * static_cast<std::size_t>(channels) + static_cast<std::size_t>(c);
+    return deep_ ? static_cast<float>(static_cast<const stbi_us*>(samples_.get())[at]) / 65535.0f
+                 : kUnorm8Value[static_cast<const stbi_uc*>(samples_.get())[at]];
+  }
+  std::size_t pixel_count() const { return static_cast<std::size_t>(width) * height; }
+
+  int width = 0;
+  int height = 0;
+  int channels = 0;
+
+ private:
+  bool deep_ = false;  // 16 bits a sample
+  std::unique_ptr<void, decltype(&stbi_image_free)> samples_{nullptr, stbi_image_free};
+};
 
 }  // namespace
 
 Image load_png(const std::filesystem::path& path) {
+  const DecodedImage decoded(path);
   Image image;
-  std::vector<float> pixels;
-  const int channels = read_floats(path, image.width, image.height, pixels);
-  image.rgb.resize(image.pixel_count());
-  for (std::size_t i = 0; i < image.rgb.size(); ++i) {
-    const float* p = &pixels[i * channels];
-    // 1 = grey, 2 = grey + alpha: replicate grey; 3 or more: the first three are RGB.
-    image.rgb[i] = channels < 3 ? glm::vec3(p[0]) : glm::vec3(p[0], p[1], p[2]);
-  }
+  image.width = decoded.width;
+  image.height = decoded.height;
+  image.rgb.resize(decoded.pixel_count());
+  // 1 = grey, 2 = grey + alpha: replicate grey; 3 or more: the first three are RGB.
+  const bool grey = decoded.channels < 3;
+  for_each_pixel(image.rgb.size(), [&](std::size_t i) {
+    image.rgb[i] = grey ? glm::vec3(decoded.value(i, 0))
+                        : glm::vec3(decoded.value(i, 0), decoded.value(i, 1), decoded.value(i, 2));
+  });
   return image;
 }
 
@@ -109,12 +113,13 @@ void round_to_saved_png(Image& image) {
 }
 
 Mask load_mask_png(const std::filesystem::path& path) {
+  const DecodedImage decoded(path);
   Mask mask;
-  std::vector<float> pixels;
-  const int channels = read_floats(path, mask.width, mask.height, pixels);
-  mask.values.resize(static_cast<std::size_t>(mask.width) * mask.height);
+  mask.width = decoded.width;
+  mask.height = decoded.height;
+  mask.values.resize(decoded.pixel_count());
   for (std::size_t i = 0; i < mask.values.size(); ++i) {
-    mask.values[i] = pixels[i * channels] != 0.0f ? 1 : 0;
+    mask.values[i] = decoded.value(i, 0) != 0.0f ? 1 : 0;
   }
   return mask;
 }
@@ -140,10 +145,8 @@ void write_png_u8(const std::filesystem::path& path, int width, int height, int 
   }
   // Encoded in memory, then written by the checked atomic writer: a full disk is reported
   // and a truncated PNG never replaces a good one.
-  const std::vector<unsigned char> png =
-      encode_png_u8(width, height, channels, data, path.string());
-  io::write_file_atomically(
-      path, std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
+  io::write_file_atomically(path,
+                            encode_png_u8(width, height, channels, data, path.string()).bytes());
 }
 
 }  // namespace skinsim::quality
