@@ -55,10 +55,9 @@ void write_thumbnails(const reports::SweepTable& table, const fs::path& sweep_di
 
 void write_image_and_thumbnail(quality::Image image, const fs::path& sweep_dir,
                                const std::string& relative) {
-  quality::save_png(image, sweep_dir / relative);
+  quality::save_png_and_round(image, sweep_dir / relative);
   // After the image: write_thumbnails takes a thumbnail older than its image for a stale one.
   fs::create_directories(sweep_dir / "thumbs");
-  quality::round_to_saved_png(image);
   write_thumbnail(image, sweep_dir, relative);
 }
 

@@ -48,6 +48,8 @@ void save_png(const Image& image, const std::filesystem::path& path);
 // Makes `image` what load_png reads back from the PNG save_png writes of it, bit for bit,
 // without the file: each value becomes its nearest byte's (util/unorm8.h).
 void round_to_saved_png(Image& image);
+// save_png, then round_to_saved_png, with each value rounded once for both.
+void save_png_and_round(Image& image, const std::filesystem::path& path);
 
 // Masks as 8-bit grey PNGs: any non-zero value counts.
 Mask load_mask_png(const std::filesystem::path& path);

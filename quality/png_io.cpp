@@ -25,6 +25,14 @@ std::vector<std::uint8_t> to_rgb8(const Image& image) {
   return bytes;
 }
 
+void check_pixel_count(const Image& image, const std::filesystem::path& path) {
+  if (image.rgb.size() != image.pixel_count()) {
+    throw QualityError("cannot write '" + path.string() + "': image holds " +
+                       std::to_string(image.rgb.size()) + " pixels, expected " +
+                       std::to_string(image.width) + "x" + std::to_string(image.height));
+  }
+}
+
 // An 8K 16-bit RGBA PNG is at most ~256 MiB uncompressed; anything larger is not an image
 // this project wrote or can use.
 constexpr std::uintmax_t kMaxImageFileBytes = std::uintmax_t{256} << 20;
@@ -98,12 +106,21 @@ Image load_png(const std::filesystem::path& path) {
 }
 
 void save_png(const Image& image, const std::filesystem::path& path) {
-  if (image.rgb.size() != image.pixel_count()) {
-    throw QualityError("cannot write '" + path.string() + "': image holds " +
-                       std::to_string(image.rgb.size()) + " pixels, expected " +
-                       std::to_string(image.width) + "x" + std::to_string(image.height));
-  }
+  check_pixel_count(image, path);
   write_png_u8(path, image.width, image.height, 3, to_rgb8(image));
+}
+
+void save_png_and_round(Image& image, const std::filesystem::path& path) {
+  check_pixel_count(image, path);
+  std::vector<std::uint8_t> bytes(image.rgb.size() * 3);
+  for_each_pixel(image.rgb.size(), [&](std::size_t i) {
+    for (int c = 0; c < 3; ++c) {
+      const std::uint8_t byte = unorm8_nearest(image.rgb[i][c]);
+      bytes[i * 3 + c] = byte;
+      image.rgb[i][c] = kUnorm8Value[byte];
+    }
+  });
+  write_png_u8(path, image.width, image.height, 3, bytes);
 }
 
 void round_to_saved_png(Image& image) {

@@ -6,7 +6,10 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include "quality/error.h"
 #include "quality/error_map.h"
@@ -31,6 +34,11 @@ class TempDir : public ::testing::Test {
 };
 
 using ImageIo = TempDir;
+
+std::string read_bytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
 
 TEST_F(ImageIo, PngRoundTripKeepsEightBitValues) {
   Image image = testing::pattern_image(37, 23);
@@ -86,12 +94,19 @@ TEST_F(ImageIo, RoundToSavedPngIsWhatLoadPngReads) {
   const auto path = dir_ / "noisy.png";
   save_png(image, path);
   const Image loaded = load_png(path);
+  // save_png_and_round does both at once: the same file, the same rounded values.
+  Image saved_and_rounded = image;
+  save_png_and_round(saved_and_rounded, dir_ / "noisy_rounded.png");
+  EXPECT_EQ(read_bytes(dir_ / "noisy_rounded.png"), read_bytes(path));
   round_to_saved_png(image);
   for (std::size_t i = 0; i < image.rgb.size(); ++i) {
     for (int c = 0; c < 3; ++c) {
       ASSERT_EQ(std::bit_cast<std::uint32_t>(image.rgb[i][c]),
                 std::bit_cast<std::uint32_t>(loaded.rgb[i][c]))
           << "pixel " << i << " channel " << c;
+      ASSERT_EQ(std::bit_cast<std::uint32_t>(saved_and_rounded.rgb[i][c]),
+                std::bit_cast<std::uint32_t>(loaded.rgb[i][c]))
+          << "pixel " << i << " channel " << c << " (save_png_and_round)";
     }
   }
 }
@@ -253,6 +268,33 @@ TEST(ErrorMap, FalseColourKeepsSizeAndClamps) {
   EXPECT_EQ(image.rgb[0], color_map(ColorMap::kViridis, 0.0f));
   EXPECT_EQ(image.rgb[2], color_map(ColorMap::kViridis, 1.0f));
   EXPECT_THROW(false_colour(ScalarMap{3, 2, {0.0f}}), QualityError);
+}
+
+TEST(ErrorMap, FalseColourIsColorMapBitForBit) {
+  // false_colour maps four values at a time: every pixel must be color_map's own colour, for
+  // values across [0,1] at a fine step, the ends, out of range, -0 and NaN, and a last quad cut
+  // short (4099 values).
+  std::vector<float> values;
+  for (int i = 0; i <= 4000; ++i) values.push_back(static_cast<float>(i) / 4000.0f * 1.2f - 0.1f);
+  for (const float v :
+       {-0.0f, 0.0f, 1.0f, std::nextafter(1.0f, 2.0f), 1e-40f,
+        std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(),
+        -std::numeric_limits<float>::infinity()}) {
+    values.push_back(v);
+  }
+  while (values.size() < 4099) values.push_back(0.3f);
+  const ScalarMap map{static_cast<int>(values.size()), 1, values};
+  for (ColorMap colors : {ColorMap::kMagma, ColorMap::kViridis}) {
+    const Image image = false_colour(map, colors);
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      const glm::vec3 expected = color_map(colors, values[i]);
+      for (int c = 0; c < 3; ++c) {
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(image.rgb[i][c]),
+                  std::bit_cast<std::uint32_t>(expected[c]))
+            << "value " << values[i] << " channel " << c;
+      }
+    }
+  }
 }
 
 TEST(JsonValue, InfinityRoundTripsAsString) {
