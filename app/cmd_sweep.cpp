@@ -4,6 +4,7 @@
 // of the sweep for a cluster job array, `--merge` writes the report from the parts.
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <malloc.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -182,6 +183,10 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
   const driver::SweepRunSummary summary = driver::run_sweep(spec, configs, run_options);
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);
+  // The configurations' scenes, references, frames and pass memo are freed, but glibc keeps
+  // their pages in its arenas, where the report's work on other threads does not reuse them:
+  // its comparisons, panels and charts would add their own on top. Hand them back first.
+  malloc_trim(0);
   if (run_options.shard) return finish_shard(*run_options.shard, summary, o.out);
   if (!summary.left_by_shards.empty()) {
     fmt::print(stderr, "skinsim sweep: {} configurations {}:\n", summary.left_by_shards.size(),
@@ -226,11 +231,12 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
                "configurations\n",
                summary.foreign_ignored, o.out);
   }
-  const reports::SweepTable table =
+  reports::SweepTable table =
       driver::assemble_sweep_table(spec, configs, summary.fingerprints, o.out);
-  driver::write_sweep_data(table, o.out);
   std::vector<std::string> written = {"results.json", "results.csv", "configs/"};
   if (summary.cancelled) {
+    driver::add_comparison_panels(table, o.out);
+    driver::write_sweep_data(table, o.out);
     fmt::print(
         "interrupted: {} of {} configurations finished; wrote {}/{{{}}}; run the same "
         "command again to resume\n",

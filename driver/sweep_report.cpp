@@ -7,10 +7,11 @@
 
 namespace skinsim::driver {
 
-SweepReportOutcome write_sweep_report(const reports::SweepTable& table, const std::string& out_dir,
+SweepReportOutcome write_sweep_report(reports::SweepTable& table, const std::string& out_dir,
                                       bool charts) {
   SweepReportOutcome outcome;
   if (table.rows.empty()) {
+    write_sweep_data(table, out_dir);
     outcome.note = "no finished configuration: no report";
     return outcome;
   }
@@ -28,7 +29,15 @@ SweepReportOutcome write_sweep_report(const reports::SweepTable& table, const st
   options.higher_is_better = false;
   options.draw_charts = charts;
   options.write_data_files = false;  // write_sweep_data writes results.json / results.csv
-  options.alongside_charts = [&] { write_thumbnails(table, out_dir); };
+  // VTK draws the charts on this thread, on one core, for a second or two; the comparison
+  // panels (two FLIP maps and their crops) and the thumbnails take the other cores meanwhile.
+  // The charts read the rows, the panels only add table.panels, which the page shows and
+  // results.json keeps: both are written once the panels are in.
+  options.alongside_charts = [&] {
+    add_comparison_panels(table, out_dir);
+    write_sweep_data(table, out_dir);
+    write_thumbnails(table, out_dir);
+  };
   outcome.report_path = reports::write_report(table, out_dir, options);
   outcome.charts_drawn = charts;
   outcome.display_attempt_pending = reports::abandoned_display_attempts() > 0;

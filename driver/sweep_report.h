@@ -17,11 +17,12 @@ struct SweepReportOutcome {
   bool display_attempt_pending = false;
 };
 
-// Writes out_dir/report.html, with the charts when `charts` is set and an X display is
-// available; without a display the report is written without charts and `note` says how to
-// get them (run under `xvfb-run -a` or pass --no-charts). Throws reports::ReportError on
-// write failures.
-SweepReportOutcome write_sweep_report(const reports::SweepTable& table, const std::string& out_dir,
+// Adds the comparison panels to `table` (add_comparison_panels), writes results.json and
+// results.csv (write_sweep_data), the thumbnails and out_dir/report.html, with the charts when
+// `charts` is set and an X display is available; without a display the report is written
+// without charts and `note` says how to get them (run under `xvfb-run -a` or pass
+// --no-charts). Throws reports::ReportError on write failures.
+SweepReportOutcome write_sweep_report(reports::SweepTable& table, const std::string& out_dir,
                                       bool charts);
 
 }  // namespace skinsim::driver

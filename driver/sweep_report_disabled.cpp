@@ -1,9 +1,13 @@
 // write_sweep_report for builds configured with -DSKINSIM_BUILD_REPORTS=OFF (no VTK).
 #include "driver/sweep_report.h"
+#include "driver/sweep_results.h"
 
 namespace skinsim::driver {
 
-SweepReportOutcome write_sweep_report(const reports::SweepTable&, const std::string&, bool) {
+SweepReportOutcome write_sweep_report(reports::SweepTable& table, const std::string& out_dir,
+                                      bool) {
+  add_comparison_panels(table, out_dir);
+  write_sweep_data(table, out_dir);
   SweepReportOutcome outcome;
   outcome.note =
       "this build has no charts or report.html (configured with -DSKINSIM_BUILD_REPORTS=OFF); "

@@ -69,7 +69,6 @@ reports::SweepTable assemble_sweep_table(const SweepSpec& spec,
   const std::string metric = recommend_metric(table.rows);
   add_comparisons(spec, table, out_dir, metric);
   const std::vector<reports::Recommendation> recommendations = reports::recommend(table, metric);
-  table.panels = write_comparison_panels(table, recommendations, out_dir, metric == "flip_skin");
   const std::optional<std::size_t> first = recommendations.front().chosen;
   const StoredConfig& chosen = stored[first.value_or(0)];
   table.heatmap = chosen.heatmap;
@@ -82,6 +81,13 @@ reports::SweepTable assemble_sweep_table(const SweepSpec& spec,
   table.assumptions.insert(table.assumptions.end(), chosen.assumptions.begin(),
                            chosen.assumptions.end());
   return table;
+}
+
+void add_comparison_panels(reports::SweepTable& table, const std::string& out_dir) {
+  if (table.rows.empty()) return;
+  const std::string metric = recommend_metric(table.rows);
+  table.panels = write_comparison_panels(table, reports::recommend(table, metric), out_dir,
+                                         metric == "flip_skin");
 }
 
 void write_sweep_data(const reports::SweepTable& table, const std::string& out_dir) {

@@ -28,8 +28,9 @@ struct ReportOptions {
   ChartOptions chart;
   bool write_data_files = true;  // also write results.json and sweep.csv beside the page
   // Work run on another thread while the charts draw (VTK draws on this thread, on one core),
-  // and finished before the page is assembled: the sweep writes its thumbnails there, which
-  // the page then links. Its exception, if any, is the report's.
+  // and finished before the page is assembled: the sweep makes its comparison panels (which
+  // the page shows) and thumbnails (which it links) there. Its exception, if any, is the
+  // report's.
   std::function<void()> alongside_charts;
 };
 
