@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <tbb/parallel_invoke.h>
 #include <tbb/task_arena.h>
+#include <tbb/task_group.h>
 
 #include <algorithm>
 #include <chrono>
@@ -89,17 +90,14 @@ std::string non_finite_figure(const reports::ConfigResult& row) {
   return "";
 }
 
-// Renders, times and measures one configuration and writes its files; the JSON goes last, so
-// a configuration counts as finished only once all its files are in place. Throws SweepError
-// when a figure is not a finite number.
-void compute(const fs::path& dir, const Job& job, int frame_threads, sim::PassMemo& memo) {
+// Measures a rendered configuration and writes its files; the JSON goes last, so a
+// configuration counts as finished only once all its files are in place. Throws SweepError when
+// a figure is not a finite number.
+void finish(const fs::path& dir, const Job& job, const FrameResult& frame, quality::Image image) {
   const std::string& id = job.config->id;
-  const FrameResult frame =
-      run_frame(*job.scene, job.resolved, *job.device, frame_threads, {}, &memo);
-  quality::Image image = to_image(frame.output.frame);
   FrameQuality measured = evaluate_quality(image, *job.reference);
-  // Each PNG's zlib stream is encoded by one thread (~80 ms at 2048x1536): the two at once,
-  // each with its thumbnail for the report while its pixels are at hand.
+  // Each PNG's deflate stream is encoded by one thread: the two at once, each with its
+  // thumbnail for the report while its pixels are at hand.
   tbb::parallel_invoke(
       [&] { write_image_and_thumbnail(std::move(image), dir, config_frame_path(id)); },
       [&] {
@@ -115,6 +113,16 @@ void compute(const fs::path& dir, const Job& job, int frame_threads, sim::PassMe
   add_sensitivity(frame, *job.device, stored);
   io::write_file_atomically((dir / config_json_path(id)).string(), to_json(stored).dump(1) + "\n");
 }
+
+// A configuration whose frame is rendered and whose measuring and files (finish) run while the
+// next configuration's frame renders.
+struct Finishing {
+  const Job* job = nullptr;
+  Clock::time_point start;
+  FrameResult frame;     // its counters and timing; its render targets are let go
+  quality::Image image;  // its frame, converted
+  std::string failure;   // why it could not be measured, if it could not
+};
 
 // What a configuration is expected to cost the host, for balancing shards: its output pixels
 // times its technique's measured host time per pixel (TechniqueSpec::host_ns_per_pixel).
@@ -252,26 +260,65 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
   // passes, went to different lanes. The memo replays passes of earlier frames:
   // configurations come in expansion order, the last axis fastest, so consecutive ones share
   // the passes that axis leaves be.
+  //
+  // A configuration's measuring and files (finish) run as a task beside the next
+  // configuration's frame, so that the frame's serial stretches (binning, the cost model, the
+  // memo's hashing) and those of the metrics fill each other's idle cores. One is in flight at
+  // a time, for memory; it is done, and counted, before the next is started, and a sweep
+  // cancelled meanwhile drops the frame just rendered rather than start its files.
   arena.execute([&] {
     sim::PassMemo memo(kPassMemoBytes);
+    std::unique_ptr<Finishing> finishing;
+    tbb::task_group finishing_task;  // destroyed (waited for) before what it finishes
+    const auto complete = [&] {
+      finishing_task.wait();
+      if (!finishing) return;
+      const std::string& id = finishing->job->config->id;
+      if (!finishing->failure.empty()) {
+        // One configuration that cannot be measured (a figure that is not a finite number) is
+        // reported with its reason; the others still run.
+        summary.failed.push_back({id, finishing->failure});
+      } else {
+        progress.finished(id, seconds_since(finishing->start));
+        summary.computed.push_back(id);
+        if (options.on_finished) options.on_finished(id);
+      }
+      finishing.reset();
+    };
     for (const Job& job : jobs) {
       if (cancelled(options) || !job.reference) {
         ++summary.not_run;
         continue;
       }
-      const Clock::time_point t0 = Clock::now();
+      auto next = std::make_unique<Finishing>();
+      next->job = &job;
+      next->start = Clock::now();
       try {
-        compute(dir, job, arena.max_concurrency(), memo);
+        next->frame =
+            run_frame(*job.scene, job.resolved, *job.device, arena.max_concurrency(), {}, &memo);
       } catch (const UserError& e) {
-        // One configuration that cannot be measured (a figure that is not a finite number) is
-        // reported with its reason; the others still run.
+        complete();
         summary.failed.push_back({job.config->id, e.what()});
         continue;
       }
-      progress.finished(job.config->id, seconds_since(t0));
-      summary.computed.push_back(job.config->id);
-      if (options.on_finished) options.on_finished(job.config->id);
+      next->image = to_image(next->frame.output.frame);
+      next->frame.output.frame = {};
+      next->frame.output.intermediates.clear();
+      complete();
+      if (cancelled(options)) {
+        ++summary.not_run;
+        continue;
+      }
+      finishing = std::move(next);
+      finishing_task.run([&dir, f = finishing.get()] {
+        try {
+          finish(dir, *f->job, f->frame, std::move(f->image));
+        } catch (const UserError& e) {
+          f->failure = e.what();
+        }
+      });
     }
+    complete();
     summary.passes_replayed = memo.stats().replayed;
     summary.passes_rendered = memo.stats().rendered;
   });
