@@ -105,9 +105,17 @@ void filter_row(const float* source, int width, const std::vector<float>& kernel
                 Columns out_columns, float* padded, const float** taps, float* out) {
   const int radius = radius_of(kernel);
   const int begin = out_columns.begin, end = out_columns.end;
-  for (int i = begin; i < end + 2 * radius; ++i) {
-    padded[i] = source[std::clamp(i - radius, 0, width - 1)];
+  // padded[i] = source[clamp(i - radius, 0, width - 1)] for i in [begin, end + 2r): the
+  // border's copies of the first and last pixel, and one copy of the row between them.
+  int i = begin;
+  for (; i < end + 2 * radius && i < radius; ++i) padded[i] = source[0];
+  const int inside_end = std::min(end + 2 * radius, width + radius);
+  if (i < inside_end) {
+    std::memcpy(padded + i, source + (i - radius),
+                static_cast<std::size_t>(inside_end - i) * sizeof(float));
+    i = inside_end;
   }
+  for (; i < end + 2 * radius; ++i) padded[i] = source[width - 1];
   for (std::size_t k = 0; k < kernel.size(); ++k) taps[k] = padded + k;  // out[x]'s tap k
   weighted_sum({taps, kernel.size()}, kernel, begin, end, out);
 }
