@@ -118,10 +118,11 @@ void finish(const fs::path& dir, const Job& job, const FrameResult& frame, quali
 // next configuration's frame renders.
 struct Finishing {
   const Job* job = nullptr;
-  Clock::time_point start;
-  FrameResult frame;     // its counters and timing; its render targets are let go
-  quality::Image image;  // its frame, converted
-  std::string failure;   // why it could not be measured, if it could not
+  Clock::time_point start;  // of its frame
+  Clock::time_point done;   // of its files
+  FrameResult frame;        // its counters and timing; its render targets are let go
+  quality::Image image;     // its frame, converted
+  std::string failure;      // why it could not be measured, if it could not
 };
 
 // What a configuration is expected to cost the host, for balancing shards: its output pixels
@@ -279,7 +280,9 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
         // reported with its reason; the others still run.
         summary.failed.push_back({id, finishing->failure});
       } else {
-        progress.finished(id, seconds_since(finishing->start));
+        // Its frame and its files, not the wait for the next frame that finish() ran beside.
+        progress.finished(
+            id, std::chrono::duration<double>(finishing->done - finishing->start).count());
         summary.computed.push_back(id);
         if (options.on_finished) options.on_finished(id);
       }
@@ -316,6 +319,7 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
         } catch (const UserError& e) {
           f->failure = e.what();
         }
+        f->done = Clock::now();
       });
     }
     complete();
