@@ -235,8 +235,7 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
       driver::assemble_sweep_table(spec, configs, summary.fingerprints, o.out);
   std::vector<std::string> written = {"results.json", "results.csv", "configs/"};
   if (summary.cancelled) {
-    driver::add_comparison_panels(table, o.out);
-    driver::write_sweep_data(table, o.out);
+    driver::finish_sweep_data(table, o.out);
     fmt::print(
         "interrupted: {} of {} configurations finished; wrote {}/{{{}}}; run the same "
         "command again to resume\n",

@@ -11,7 +11,7 @@ SweepReportOutcome write_sweep_report(reports::SweepTable& table, const std::str
                                       bool charts) {
   SweepReportOutcome outcome;
   if (table.rows.empty()) {
-    write_sweep_data(table, out_dir);
+    finish_sweep_data(table, out_dir);
     outcome.note = "no finished configuration: no report";
     return outcome;
   }
@@ -34,8 +34,7 @@ SweepReportOutcome write_sweep_report(reports::SweepTable& table, const std::str
   // The charts read the rows, the panels only add table.panels, which the page shows and
   // results.json keeps: both are written once the panels are in.
   options.alongside_charts = [&] {
-    add_comparison_panels(table, out_dir);
-    write_sweep_data(table, out_dir);
+    finish_sweep_data(table, out_dir);
     write_thumbnails(table, out_dir);
   };
   outcome.report_path = reports::write_report(table, out_dir, options);

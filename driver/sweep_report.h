@@ -17,8 +17,8 @@ struct SweepReportOutcome {
   bool display_attempt_pending = false;
 };
 
-// Adds the comparison panels to `table` (add_comparison_panels), writes results.json and
-// results.csv (write_sweep_data), the thumbnails and out_dir/report.html, with the charts when
+// Adds the comparison panels to `table` and writes results.json and results.csv
+// (finish_sweep_data), the thumbnails and out_dir/report.html, with the charts when
 // `charts` is set and an X display is available; without a display the report is written
 // without charts and `note` says how to get them (run under `xvfb-run -a` or pass
 // --no-charts). Throws reports::ReportError on write failures.

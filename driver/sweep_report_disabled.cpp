@@ -6,8 +6,7 @@ namespace skinsim::driver {
 
 SweepReportOutcome write_sweep_report(reports::SweepTable& table, const std::string& out_dir,
                                       bool) {
-  add_comparison_panels(table, out_dir);
-  write_sweep_data(table, out_dir);
+  finish_sweep_data(table, out_dir);
   SweepReportOutcome outcome;
   outcome.note =
       "this build has no charts or report.html (configured with -DSKINSIM_BUILD_REPORTS=OFF); "

@@ -83,11 +83,13 @@ reports::SweepTable assemble_sweep_table(const SweepSpec& spec,
   return table;
 }
 
-void add_comparison_panels(reports::SweepTable& table, const std::string& out_dir) {
-  if (table.rows.empty()) return;
-  const std::string metric = recommend_metric(table.rows);
-  table.panels = write_comparison_panels(table, reports::recommend(table, metric), out_dir,
-                                         metric == "flip_skin");
+void finish_sweep_data(reports::SweepTable& table, const std::string& out_dir) {
+  if (!table.rows.empty()) {
+    const std::string metric = recommend_metric(table.rows);
+    table.panels = write_comparison_panels(table, reports::recommend(table, metric), out_dir,
+                                           metric == "flip_skin");
+  }
+  write_sweep_data(table, out_dir);
 }
 
 void write_sweep_data(const reports::SweepTable& table, const std::string& out_dir) {

@@ -23,16 +23,17 @@ std::string recommend_metric(const std::vector<reports::ConfigResult>& rows);
 // unfinished ones and another sweep's results stored under the same ids are left out. Each row
 // is compared with its group's best configurations (sweep_comparisons.h). The heat map,
 // sensitivity and assumptions come from the first group's recommended row
-// (reports::recommend), else the first row. The comparison panels are a step of their own
-// (add_comparison_panels), which the report makes while its charts draw.
+// (reports::recommend), else the first row. The comparison panels come with the data files
+// (finish_sweep_data), which the report makes while its charts draw.
 reports::SweepTable assemble_sweep_table(const SweepSpec& spec,
                                          const std::vector<SweepConfig>& configs,
                                          const std::map<std::string, nlohmann::json>& fingerprints,
                                          const std::string& out_dir);
 
-// What each group's recommended configuration looks like beside the reference and the best
-// (sweep_crops.h): the crops and their images in out_dir/compare/, listed in table.panels.
-void add_comparison_panels(reports::SweepTable& table, const std::string& out_dir);
+// Adds what each group's recommended configuration looks like beside the reference and the
+// best (sweep_crops.h: the crops and their images in out_dir/compare/, listed in
+// table.panels), then writes the table (write_sweep_data).
+void finish_sweep_data(reports::SweepTable& table, const std::string& out_dir);
 
 // out_dir/results.json and out_dir/results.csv, atomically.
 void write_sweep_data(const reports::SweepTable& table, const std::string& out_dir);

@@ -1,13 +1,9 @@
 #include "quality/error_map.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
-#include <algorithm>
 #include <array>
-#include <cmath>
 
 #include "quality/error.h"
+#include "util/parallel_pixels.h"
 
 namespace skinsim::quality {
 namespace {
@@ -36,35 +32,38 @@ constexpr Polynomial kViridis{{
     {-5.435455855934631, 4.645852612178535, 26.3124352495832},
 }};
 
-// Four map values' colours at once (GCC/Clang vector extensions): in each lane and channel
-// the very double operations color_map does on one value (the baseline x86-64 target has no
-// fused multiply-add to contract them into), so an error map's image is color_map's pixel by
-// pixel, in a fifth of the time of one value at a time.
+// The colours of four map values at once (GCC/Clang vector extensions), each value's in its
+// own lane: clamped to [0,1] in double (NaN to 0), the polynomial by Horner's rule, then the
+// float colour clamped to [0,1] (the fits overshoot it by a few 1e-3 at the ends). No lane
+// depends on another, and the baseline x86-64 target has no fused multiply-add to contract
+// into, so a value's colour is the same in any lane and on any processor.
 using Double4 = double __attribute__((vector_size(32)));
 using Float4 = float __attribute__((vector_size(16)));
 
-void color_map_4(const Polynomial& c, const float* t, glm::vec3* out) {
+void colours_of_4(const Polynomial& c, const float* t, glm::vec3* out) {
   const Float4 v = {t[0], t[1], t[2], t[3]};
   Double4 x = __builtin_convertvector(v, Double4);
-  x = x > 0.0 ? (x < 1.0 ? x : 1.0) : 0.0;  // NaN fails both: 0, as color_map
+  x = x > 0.0 ? (x < 1.0 ? x : 1.0) : 0.0;  // NaN fails both: 0
   for (int channel = 0; channel < 3; ++channel) {
     Double4 value = Double4{} + c[6][channel];
     for (int i = 5; i >= 0; --i) value = c[i][channel] + x * value;
     Float4 f = __builtin_convertvector(value, Float4);
-    f = f < 0.0f ? 0.0f : (1.0f < f ? 1.0f : f);  // glm::clamp: min(max(f, 0), 1)
+    f = f < 0.0f ? 0.0f : (1.0f < f ? 1.0f : f);
     for (int lane = 0; lane < 4; ++lane) out[lane][channel] = f[lane];
   }
+}
+
+const Polynomial& polynomial(ColorMap map) {
+  return map == ColorMap::kMagma ? kMagma : kViridis;
 }
 
 }  // namespace
 
 glm::vec3 color_map(ColorMap map, float t) {
-  const Polynomial& c = map == ColorMap::kMagma ? kMagma : kViridis;
-  const double x = std::isnan(t) ? 0.0 : std::clamp(static_cast<double>(t), 0.0, 1.0);
-  glm::dvec3 value = c[6];
-  for (int i = 5; i >= 0; --i) value = c[i] + x * value;  // Horner
-  // The fits overshoot [0,1] by a few 1e-3 at the ends.
-  return glm::clamp(glm::vec3(value), glm::vec3(0.0f), glm::vec3(1.0f));
+  const float values[4] = {t, 0.0f, 0.0f, 0.0f};
+  glm::vec3 colours[4];
+  colours_of_4(polynomial(map), values, colours);
+  return colours[0];
 }
 
 Image false_colour(const ScalarMap& map, ColorMap colors) {
@@ -78,14 +77,10 @@ Image false_colour(const ScalarMap& map, ColorMap colors) {
   image.width = map.width;
   image.height = map.height;
   image.rgb.resize(map.values.size());
-  const Polynomial& c = colors == ColorMap::kMagma ? kMagma : kViridis;
   const std::size_t quads = map.values.size() / 4;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, quads, std::size_t{1} << 14),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-                      for (std::size_t q = r.begin(); q < r.end(); ++q) {
-                        color_map_4(c, &map.values[q * 4], &image.rgb[q * 4]);
-                      }
-                    });
+  for_each_pixel(quads, [&](std::size_t q) {
+    colours_of_4(polynomial(colors), &map.values[q * 4], &image.rgb[q * 4]);
+  });
   for (std::size_t i = quads * 4; i < map.values.size(); ++i) {
     image.rgb[i] = color_map(colors, map.values[i]);
   }

@@ -16,11 +16,16 @@
 namespace skinsim::quality {
 namespace {
 
-// The bytes save_png writes, RGB interleaved.
-std::vector<std::uint8_t> to_rgb8(const Image& image) {
+// The bytes save_png writes, RGB interleaved. With `rounded` (which may be `image` itself:
+// each value is read before it is written), also the values load_png reads back from them.
+std::vector<std::uint8_t> to_rgb8(const Image& image, Image* rounded = nullptr) {
   std::vector<std::uint8_t> bytes(image.rgb.size() * 3);
   for_each_pixel(image.rgb.size(), [&](std::size_t i) {
-    for (int c = 0; c < 3; ++c) bytes[i * 3 + c] = unorm8_nearest(image.rgb[i][c]);
+    for (int c = 0; c < 3; ++c) {
+      const std::uint8_t byte = unorm8_nearest(image.rgb[i][c]);
+      bytes[i * 3 + c] = byte;
+      if (rounded) rounded->rgb[i][c] = kUnorm8Value[byte];
+    }
   });
   return bytes;
 }
@@ -112,21 +117,11 @@ void save_png(const Image& image, const std::filesystem::path& path) {
 
 void save_png_and_round(Image& image, const std::filesystem::path& path) {
   check_pixel_count(image, path);
-  std::vector<std::uint8_t> bytes(image.rgb.size() * 3);
-  for_each_pixel(image.rgb.size(), [&](std::size_t i) {
-    for (int c = 0; c < 3; ++c) {
-      const std::uint8_t byte = unorm8_nearest(image.rgb[i][c]);
-      bytes[i * 3 + c] = byte;
-      image.rgb[i][c] = kUnorm8Value[byte];
-    }
-  });
-  write_png_u8(path, image.width, image.height, 3, bytes);
+  write_png_u8(path, image.width, image.height, 3, to_rgb8(image, &image));
 }
 
 void round_to_saved_png(Image& image) {
-  for_each_pixel(image.rgb.size(), [&](std::size_t i) {
-    for (int c = 0; c < 3; ++c) image.rgb[i][c] = kUnorm8Value[unorm8_nearest(image.rgb[i][c])];
-  });
+  to_rgb8(image, &image);
 }
 
 Mask load_mask_png(const std::filesystem::path& path) {

@@ -162,8 +162,8 @@ void write_png(vtkRenderWindow* window, const std::string& path) {
     throw ReportError("cannot write chart " + path + ": the window's pixels could not be read");
   }
   // OpenGL's rows run bottom-up, a PNG's top-down. Encoded by skinsim's PNG writer
-  // (libdeflate, quality/png_encode.h): a quarter of the time of VTK's libpng writer, and
-  // written checked and atomically.
+  // (libdeflate, quality/png_encode.h), faster than VTK's libpng writer on the one core the
+  // charts draw on (docs/performance.md), and written checked and atomically.
   const std::size_t row = static_cast<std::size_t>(size[0]) * 3;
   std::vector<std::uint8_t> top_down(row * static_cast<std::size_t>(size[1]));
   const unsigned char* bottom_up = pixels->GetPointer(0);

@@ -6,11 +6,11 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <limits>
 #include <string>
 #include <vector>
 
+#include "io/read_file.h"
 #include "quality/error.h"
 #include "quality/error_map.h"
 #include "quality/image.h"
@@ -34,11 +34,6 @@ class TempDir : public ::testing::Test {
 };
 
 using ImageIo = TempDir;
-
-std::string read_bytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 TEST_F(ImageIo, PngRoundTripKeepsEightBitValues) {
   Image image = testing::pattern_image(37, 23);
@@ -97,7 +92,8 @@ TEST_F(ImageIo, RoundToSavedPngIsWhatLoadPngReads) {
   // save_png_and_round does both at once: the same file, the same rounded values.
   Image saved_and_rounded = image;
   save_png_and_round(saved_and_rounded, dir_ / "noisy_rounded.png");
-  EXPECT_EQ(read_bytes(dir_ / "noisy_rounded.png"), read_bytes(path));
+  EXPECT_EQ(io::read_regular_file(dir_ / "noisy_rounded.png", "png"),
+            io::read_regular_file(path, "png"));
   round_to_saved_png(image);
   for (std::size_t i = 0; i < image.rgb.size(); ++i) {
     for (int c = 0; c < 3; ++c) {
@@ -271,9 +267,9 @@ TEST(ErrorMap, FalseColourKeepsSizeAndClamps) {
 }
 
 TEST(ErrorMap, FalseColourIsColorMapBitForBit) {
-  // false_colour maps four values at a time: every pixel must be color_map's own colour, for
-  // values across [0,1] at a fine step, the ends, out of range, -0 and NaN, and a last quad cut
-  // short (4099 values).
+  // false_colour maps four values at a time: every pixel must be the colour color_map gives
+  // its value alone, whatever shares its register, for values across [0,1] at a fine step, the
+  // ends, out of range, -0 and NaN, and a last quad cut short (4099 values).
   std::vector<float> values;
   for (int i = 0; i <= 4000; ++i) values.push_back(static_cast<float>(i) / 4000.0f * 1.2f - 0.1f);
   for (const float v :
