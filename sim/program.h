@@ -42,6 +42,9 @@ class FragmentProgram {
   const std::string& name() const { return name_; }
   const OpProfile& profile() const { return profile_; }
   virtual glm::vec4 shade(const ExecFragIn& in, ExecTexUnit& tex) const = 0;
+  // Four fragments of one draw at once (the lanes of `in`; those past tex.fragments() are
+  // padding): per lane exactly what shade() gives.
+  virtual sl::Lanes<4> shade4(const Exec4FragIn& in, Exec4TexUnit& tex) const = 0;
   virtual GlslShader glsl(sl::GlslDialect dialect) const = 0;
 
  protected:
@@ -109,6 +112,15 @@ class FragmentProgramOf final : public FragmentProgram {
       MediumpFragIn mediump_in(in);
       MediumpTexUnit mediump_tex(tex);
       return Shader::template fragment<ExecMediump>(mediump_in, mediump_tex, uniforms_).v;
+    }
+  }
+  sl::Lanes<4> shade4(const Exec4FragIn& in, Exec4TexUnit& tex) const override {
+    if constexpr (kPrecision == Precision::kHighp) {
+      return Shader::template fragment<Exec4>(in, tex, uniforms_);
+    } else {
+      sl::Lanes<4> r;
+      for (int l = 0; l < tex.fragments(); ++l) r.set_lane(l, shade(in.lane(l), tex.lane(l)));
+      return r;
     }
   }
   GlslShader glsl(sl::GlslDialect dialect) const override {

@@ -231,6 +231,7 @@ auto sample_each(TexUnit& tex, int binding, const Coord& coord) {
 }  // namespace skinsim::sim
 
 // The third language, Emit, beside Exec and Count: every shader is written against all three;
-// and Exec at mediump, which runs them over Count's values in FP16.
+// Exec at mediump, which runs them over Count's values in FP16; and Exec over four fragments.
 #include "sim/shader_emit_io.h"     // IWYU pragma: export
+#include "sim/shader_exec4_io.h"    // IWYU pragma: export
 #include "sim/shader_mediump_io.h"  // IWYU pragma: export

@@ -449,33 +449,35 @@ SKINSIM_SL_BINARY_ALU(step, detail::vstep)
 #undef SKINSIM_SL_BINARY_ALU
 
 // Derived functions, written once for both modes so their cost follows from their code.
+// Always inlined: over Exec4's lanes GCC left normalize an out-of-line call, its 48-byte
+// operands passed through memory.
 template <typename T, typename S>
-inline T clamp(const T& v, const S& lo, const S& hi) {
+[[gnu::always_inline]] inline T clamp(const T& v, const S& lo, const S& hi) {
   return min(max(v, lo), hi);
 }
 template <typename T, typename U, typename S>
-inline T mix(const T& a, const U& b, const S& t) {
+[[gnu::always_inline]] inline T mix(const T& a, const U& b, const S& t) {
   return a + (b - a) * t;  // SUB + MAD
 }
 template <typename T>
-inline auto length(const T& v) {
+[[gnu::always_inline]] inline auto length(const T& v) {
   return sqrt(dot(v, v));
 }
 template <typename T>
-inline T normalize(const T& v) {
+[[gnu::always_inline]] inline T normalize(const T& v) {
   return v * rsqrt(dot(v, v));
 }
 template <typename T, typename E>
-inline auto pow(const T& base, const E& e) {
+[[gnu::always_inline]] inline auto pow(const T& base, const E& e) {
   return exp2(log2(base) * e);
 }
 inline constexpr float kLog2e = 1.4426950408889634f;
 template <typename T>
-inline T exp(const T& v) {
+[[gnu::always_inline]] inline T exp(const T& v) {
   return exp2(v * kLog2e);
 }
 template <typename T>
-inline T reflect(const T& i, const T& n) {
+[[gnu::always_inline]] inline T reflect(const T& i, const T& n) {
   return i - n * (dot(n, i) * 2.0f);
 }
 inline glm::vec3 cross(const glm::vec3& a, const glm::vec3& b) {
@@ -526,3 +528,5 @@ inline CVec<3> operator*(const glm::mat3& m, const CVec<3>& v) {
 // wherever shaders are defined: they call the language qualified (`sl::max`), and a
 // qualified call in a template finds only what is declared before the template.
 #include "sim/shader_emit.h"  // IWYU pragma: export
+// Likewise the four-fragment Exec4 instantiation's (shader_exec4_io.h).
+#include "sim/shader_lanes.h"  // IWYU pragma: export

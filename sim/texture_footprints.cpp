@@ -26,17 +26,18 @@ template <class U>
 
 // Footprints first .. first + lanes - 1 (those at or beyond count are computed from (0, 0) and
 // not used).
+// Each lane samples a level `width` x `height` texels laid out from `level_base`.
 template <class V>
-[[gnu::always_inline]] inline void footprints(const float* u, const float* v, int first, int count,
-                                              const LevelView& level, Wrap wrap,
-                                              std::uint32_t level_base, std::uint32_t texel_bytes,
+[[gnu::always_inline]] inline void footprints(V u, V v, int first, int count, IntLanes<V> width,
+                                              IntLanes<V> height, Wrap wrap,
+                                              UintLanes<V> level_base, std::uint32_t texel_bytes,
                                               std::uint32_t line_shift, FootprintLanes& out) {
   using I = IntLanes<V>;
   using U = UintLanes<V>;
   // filtering::floor_split of uv * (width, height) - 0.5, lane by lane.
   const V limit = splat<V>(1073741824.0f);
-  V pu = load_lanes<V>(u + first, kLanes<V>) * static_cast<float>(level.width) - 0.5f;
-  V pv = load_lanes<V>(v + first, kLanes<V>) * static_cast<float>(level.height) - 0.5f;
+  V pu = u * __builtin_convertvector(width, V) - 0.5f;
+  V pv = v * __builtin_convertvector(height, V) - 0.5f;
   pu = pu > -limit ? (pu < limit ? pu : limit) : -limit;  // NaN fails both: -limit
   pv = pv > -limit ? (pv < limit ? pv : limit) : -limit;
   I x0 = floor_lanes(pu), y0 = floor_lanes(pv);
@@ -45,16 +46,16 @@ template <class V>
   I x1 = x0 + 1, y1 = y0 + 1;
 
   // filtering::wrap_coord, needed only where a footprint leaves the level.
-  const U inside = (reinterpret_cast<U>(x0) < static_cast<std::uint32_t>(level.width - 1)) &
-                   (reinterpret_cast<U>(y0) < static_cast<std::uint32_t>(level.height - 1));
+  const U inside = (reinterpret_cast<U>(x0) < reinterpret_cast<U>(width - 1)) &
+                   (reinterpret_cast<U>(y0) < reinterpret_cast<U>(height - 1));
   bool all_inside = true;
   for (int i = 0; i < kLanes<V>; ++i) all_inside &= first + i >= count || inside[i] != 0;
   if (!all_inside) {
     for (int i = 0; i < kLanes<V>; ++i) {
-      x0[i] = filtering::wrap_coord(x0[i], level.width, wrap);
-      x1[i] = filtering::wrap_coord(x1[i], level.width, wrap);
-      y0[i] = filtering::wrap_coord(y0[i], level.height, wrap);
-      y1[i] = filtering::wrap_coord(y1[i], level.height, wrap);
+      x0[i] = filtering::wrap_coord(x0[i], width[i], wrap);
+      x1[i] = filtering::wrap_coord(x1[i], width[i], wrap);
+      y0[i] = filtering::wrap_coord(y0[i], height[i], wrap);
+      y1[i] = filtering::wrap_coord(y1[i], height[i], wrap);
     }
   }
   const U sx0 = spread_lanes(reinterpret_cast<U>(x0)), sx1 = spread_lanes(reinterpret_cast<U>(x1));
@@ -80,15 +81,43 @@ template <class V>
                                              const LevelView& level, Wrap wrap,
                                              std::uint32_t level_base, std::uint32_t texel_bytes,
                                              std::uint32_t line_shift, FootprintLanes& out) {
-  footprints<Float8>(u, v, 0, count, level, wrap, level_base, texel_bytes, line_shift, out);
+  using I = IntLanes<Float8>;
+  footprints<Float8>(load_lanes<Float8>(u, 8), load_lanes<Float8>(v, 8), 0, count,
+                     I{} + level.width, I{} + level.height, wrap, UintLanes<Float8>{} + level_base,
+                     texel_bytes, line_shift, out);
 }
 
 void footprints_sse2(const float* u, const float* v, int count, const LevelView& level, Wrap wrap,
                      std::uint32_t level_base, std::uint32_t texel_bytes, std::uint32_t line_shift,
                      FootprintLanes& out) {
   for (int first = 0; first < count; first += 4) {
-    footprints<Float4>(u, v, first, count, level, wrap, level_base, texel_bytes, line_shift, out);
+    footprints<Float4>(load_lanes<Float4>(u + first, 4), load_lanes<Float4>(v + first, 4), first,
+                       count, Int4{} + level.width, Int4{} + level.height, wrap,
+                       Uint4{} + level_base, texel_bytes, line_shift, out);
   }
+}
+
+// Lanes first .. first + kLanes<V> - 1, each at its own level.
+template <class V>
+[[gnu::always_inline]] inline void footprints_at_levels(
+    const float* u, const float* v, int first,
+    const std::array<FootprintLevel, FootprintLanes::kMax>& levels, Wrap wrap,
+    std::uint32_t texel_bytes, std::uint32_t line_shift, FootprintLanes& out) {
+  IntLanes<V> width, height;
+  UintLanes<V> base;
+  for (int i = 0; i < kLanes<V>; ++i) {
+    width[i] = levels[first + i].width;
+    height[i] = levels[first + i].height;
+    base[i] = levels[first + i].base;
+  }
+  footprints<V>(load_lanes<V>(u + first, kLanes<V>), load_lanes<V>(v + first, kLanes<V>), first,
+                FootprintLanes::kMax, width, height, wrap, base, texel_bytes, line_shift, out);
+}
+
+[[gnu::target("avx2")]] void footprints_at_levels_avx2(
+    const float* u, const float* v, const std::array<FootprintLevel, FootprintLanes::kMax>& levels,
+    Wrap wrap, std::uint32_t texel_bytes, std::uint32_t line_shift, FootprintLanes& out) {
+  footprints_at_levels<Float8>(u, v, 0, levels, wrap, texel_bytes, line_shift, out);
 }
 
 }  // namespace
@@ -100,6 +129,17 @@ void address_footprints(const float* u, const float* v, int count, const LevelVi
     footprints_avx2(u, v, count, level, wrap, level_base, texel_bytes, line_shift, out);
   } else {
     footprints_sse2(u, v, count, level, wrap, level_base, texel_bytes, line_shift, out);
+  }
+}
+
+void address_footprints(const float* u, const float* v,
+                        const std::array<FootprintLevel, FootprintLanes::kMax>& levels, Wrap wrap,
+                        std::uint32_t texel_bytes, std::uint32_t line_shift, FootprintLanes& out) {
+  if (use_avx2()) {
+    footprints_at_levels_avx2(u, v, levels, wrap, texel_bytes, line_shift, out);
+  } else {
+    footprints_at_levels<Float4>(u, v, 0, levels, wrap, texel_bytes, line_shift, out);
+    footprints_at_levels<Float4>(u, v, 4, levels, wrap, texel_bytes, line_shift, out);
   }
 }
 

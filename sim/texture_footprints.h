@@ -32,4 +32,16 @@ void address_footprints(const float* u, const float* v, int count, const LevelVi
                         Wrap wrap, std::uint32_t level_base, std::uint32_t texel_bytes,
                         std::uint32_t line_shift, FootprintLanes& out);
 
+// A level as one lane samples it: its size, and its address in the emulated memory.
+struct FootprintLevel {
+  int width, height;
+  std::uint32_t base;
+};
+// Footprints of eight samples, sample i at (u[i], v[i]) of levels[i] (levels of one texture):
+// the four fragments of a batch (shader_exec4_io.h), each at the levels its own derivatives
+// select, both levels of a trilinear sample at once.
+void address_footprints(const float* u, const float* v,
+                        const std::array<FootprintLevel, FootprintLanes::kMax>& levels, Wrap wrap,
+                        std::uint32_t texel_bytes, std::uint32_t line_shift, FootprintLanes& out);
+
 }  // namespace skinsim::sim

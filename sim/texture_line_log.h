@@ -31,6 +31,14 @@ class TextureLineLog {
     const auto l = static_cast<std::uint32_t>(line);
     if (lines_.empty() || lines_.back() != l) lines_.push_back(l);
   }
+  // What add() of each of `other`'s requests gives: other holds no repeat, so only its first
+  // can repeat this log's last.
+  void append(const TextureLineLog& other) {
+    const std::vector<std::uint32_t>& more = other.lines_;
+    if (more.empty()) return;
+    const bool repeat = !lines_.empty() && lines_.back() == more.front();
+    lines_.insert(lines_.end(), more.begin() + (repeat ? 1 : 0), more.end());
+  }
   // The requests to replay, in order: all but the repeats of the line just before.
   const std::vector<std::uint32_t>& lines() const { return lines_; }
   void clear() { lines_.clear(); }  // keeps the capacity for the next tile

@@ -47,6 +47,8 @@ class ExecTexUnit {
     counters_ = counters;
     lines_ = lines;
   }
+  // Where the next samples record their cache lines (one fragment's of a batch: Exec4TexUnit).
+  void set_lines(TextureLineLog* lines) { lines_ = lines; }
 
   // Independent read: coordinates straight from a varying; LOD from its derivatives.
   glm::vec4 sample(int binding, const Varying<2>& uv);
@@ -67,6 +69,15 @@ class ExecTexUnit {
   // to eight at a time (texture_footprints.h), which pays on a blur's taps.
   template <int N, class Coord>
   std::array<glm::vec4, N> sample_each(int binding, const Coord& coord);
+  // Reads of one 2D texture by the first n (1 to 4) fragments of a batch (Exec4TexUnit),
+  // fragment l's cache lines recorded in lines[l]: what sample(binding, uv[l]) and
+  // sample_lod(binding, uv[l], lod[l]) give for each alone, the footprints addressed four at
+  // a time (texture_footprints.h).
+  void sample_lanes(int binding, const std::array<Varying<2>, 4>& uv, int n,
+                    TextureLineLog* const* lines, glm::vec4* out);
+  void sample_lod_lanes(int binding, const std::array<glm::vec2, 4>& uv,
+                        const std::array<float, 4>& lod, int n, TextureLineLog* const* lines,
+                        glm::vec4* out);
 
  private:
   // Level of detail as the sampler receives it: an explicit lambda, or the squared footprint
@@ -79,6 +90,18 @@ class ExecTexUnit {
   };
   glm::vec4 filtered(const Texture2D& tex, std::uint64_t base, glm::vec2 uv, const LodInput& lod,
                      bool dependent);
+  // filtered() for the first n of four fragments, each recording in its own lines[l].
+  void filtered_lanes(const Texture2D& tex, std::uint64_t base, const std::array<glm::vec2, 4>& uv,
+                      const std::array<LodInput, 4>& lod, bool dependent, int n,
+                      TextureLineLog* const* lines, glm::vec4* out);
+  // The squared footprint of a varying's derivatives on `tex` (0 for a single level).
+  static float rho2_of(const Texture2D& tex, const Varying<2>& uv);
+  // The levels filtered() blends for `lod`, and the weight of the second.
+  struct LevelChoice {
+    int first = 0, second = 0;
+    float weight = 0.0f;
+  };
+  static LevelChoice choose_levels(const Texture2D& tex, const LodInput& lod);
   glm::vec4 nearest(const Texture2D& tex, std::uint64_t base, int level, glm::vec2 uv);
   float shadow(const Texture2D& tex, std::uint64_t base, glm::vec3 coord, bool dependent);
   // Counts n sample instructions of one kind.

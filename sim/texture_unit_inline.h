@@ -121,23 +121,17 @@ inline float ExecTexUnit::shadow(const Texture2D& tex, std::uint64_t base, glm::
   return top + (bottom - top) * f.ay;
 }
 
-inline glm::vec4 ExecTexUnit::filtered(const Texture2D& tex, std::uint64_t base, glm::vec2 uv,
-                                       const LodInput& lod, bool dependent) {
-  const Filter filter = tex.sampler().filter;
-  count_sample(tex, filter, dependent);
-
+inline ExecTexUnit::LevelChoice ExecTexUnit::choose_levels(const Texture2D& tex,
+                                                           const LodInput& lod) {
   const int max_level = tex.level_count() - 1;
-  if (filter != Filter::kTrilinear) {
-    // round(lambda) clamped to the chain; single-level textures skip the LOD entirely.
-    int level = 0;
-    if (max_level > 0) {
-      level =
-          lod.is_rho2
-              ? filtering::nearest_level(lod.value, max_level)
-              : static_cast<int>(std::clamp(lod.value, 0.0f, static_cast<float>(max_level)) + 0.5f);
-    }
-    return filter == Filter::kNearest ? nearest(tex, base, level, uv)
-                                      : bilinear(tex, base, level, uv, true);
+  if (max_level == 0) return {};  // single-level textures skip the LOD entirely
+  if (tex.sampler().filter != Filter::kTrilinear) {
+    // round(lambda) clamped to the chain.
+    const int level =
+        lod.is_rho2
+            ? filtering::nearest_level(lod.value, max_level)
+            : static_cast<int>(std::clamp(lod.value, 0.0f, static_cast<float>(max_level)) + 0.5f);
+    return {level, level, 0.0f};
   }
   // Magnification (rho^2 <= 1, lambda <= 0) clamps to level 0 whatever lambda is, so the
   // common close-up case needs no logarithm.
@@ -146,16 +140,110 @@ inline glm::vec4 ExecTexUnit::filtered(const Texture2D& tex, std::uint64_t base,
                                            : filtering::lod_from_rho2(lod.value);
   const float clamped = std::clamp(lambda, 0.0f, static_cast<float>(max_level));
   const int l0 = static_cast<int>(clamped);
-  const int l1 = std::min(l0 + 1, max_level);
-  const float t = clamped - static_cast<float>(l0);
-  // The TMU fetches both levels even when the blend weight is 0 (the cost model charges a
-  // trilinear sample as two bilinear ones), so both footprints go through the cache. The
-  // host skips blending the second when its weight is 0 and the result is exactly the
-  // first: RGBA8 texels are finite and >= +0, so a * 1 + b * 0 == a bit for bit.
-  const glm::vec4 a = bilinear(tex, base, l0, uv, true);
-  const bool second_unused = t == 0.0f && tex.format() == TexelFormat::kRGBA8;
-  const glm::vec4 b = bilinear(tex, base, l1, uv, !second_unused);
-  return second_unused ? a : glm::mix(a, b, t);
+  return {l0, std::min(l0 + 1, max_level), clamped - static_cast<float>(l0)};
+}
+
+// The TMU fetches both levels of a trilinear sample even when the blend weight is 0 (the cost
+// model charges a trilinear sample as two bilinear ones), so both footprints go through the
+// cache. The host skips blending the second when its weight is 0 and the result is exactly
+// the first: RGBA8 texels are finite and >= +0, so a * 1 + b * 0 == a bit for bit.
+inline bool second_level_unused(const Texture2D& tex, float weight) {
+  return weight == 0.0f && tex.format() == TexelFormat::kRGBA8;
+}
+
+inline glm::vec4 ExecTexUnit::filtered(const Texture2D& tex, std::uint64_t base, glm::vec2 uv,
+                                       const LodInput& lod, bool dependent) {
+  const Filter filter = tex.sampler().filter;
+  count_sample(tex, filter, dependent);
+  const LevelChoice levels = choose_levels(tex, lod);
+  if (filter != Filter::kTrilinear) {
+    return filter == Filter::kNearest ? nearest(tex, base, levels.first, uv)
+                                      : bilinear(tex, base, levels.first, uv, true);
+  }
+  const glm::vec4 a = bilinear(tex, base, levels.first, uv, true);
+  const bool second_unused = second_level_unused(tex, levels.weight);
+  const glm::vec4 b = bilinear(tex, base, levels.second, uv, !second_unused);
+  return second_unused ? a : glm::mix(a, b, levels.weight);
+}
+
+inline void ExecTexUnit::filtered_lanes(const Texture2D& tex, std::uint64_t base,
+                                        const std::array<glm::vec2, 4>& uv,
+                                        const std::array<LodInput, 4>& lod, bool dependent, int n,
+                                        TextureLineLog* const* lines, glm::vec4* out) {
+  const Filter filter = tex.sampler().filter;
+  // Nearest samples, and textures whose addresses leave 32 bits: one by one.
+  if (filter == Filter::kNearest || tex.size_bytes() > kBindingAddressStride) {
+    for (int l = 0; l < n; ++l) {
+      lines_ = lines[l];
+      out[l] = filtered(tex, base, uv[l], lod[l], dependent);
+    }
+    return;
+  }
+  count_sample(tex, filter, dependent, n);
+  // Lane l addresses fragment l's first level, lane 4 + l its second (a trilinear sample's);
+  // the lanes of fragments past n repeat fragment 0's.
+  std::array<LevelChoice, 4> choice{};
+  for (int l = 0; l < n; ++l) choice[l] = choose_levels(tex, lod[l]);
+  std::array<float, FootprintLanes::kMax> u, v;
+  std::array<FootprintLevel, FootprintLanes::kMax> levels;
+  const auto level_at = [&](int level) {
+    const LevelView& view = tex.level(level);
+    return FootprintLevel{view.width, view.height,
+                          static_cast<std::uint32_t>(base + tex.level_offset(level))};
+  };
+  for (int l = 0; l < 4; ++l) {
+    const int from = l < n ? l : 0;
+    u[l] = u[4 + l] = uv[from].x;
+    v[l] = v[4 + l] = uv[from].y;
+    levels[l] = level_at(choice[from].first);
+    levels[4 + l] = level_at(choice[from].second);
+  }
+  FootprintLanes f;
+  address_footprints(u.data(), v.data(), levels, tex.sampler().wrap,
+                     static_cast<std::uint32_t>(tex.texel_bytes()), lines[0]->line_shift(), f);
+  const auto texels = [&](int lane, int level) {
+    record_footprint(f.lines[0][lane], f.lines[1][lane], f.lines[2][lane], f.lines[3][lane]);
+    return Footprint{&tex.level(level), f.x0[lane], f.x1[lane], f.y0[lane],
+                     f.y1[lane],        f.ax[lane], f.ay[lane]};
+  };
+  for (int l = 0; l < n; ++l) {
+    lines_ = lines[l];
+    const glm::vec4 first = blend(texels(l, choice[l].first));
+    if (filter != Filter::kTrilinear) {
+      out[l] = first;
+      continue;
+    }
+    const Footprint second = texels(4 + l, choice[l].second);
+    out[l] = second_level_unused(tex, choice[l].weight)
+                 ? first
+                 : glm::mix(first, blend(second), choice[l].weight);
+  }
+}
+
+inline float ExecTexUnit::rho2_of(const Texture2D& tex, const Varying<2>& uv) {
+  if (tex.level_count() == 1) return 0.0f;  // a single-level texture needs no footprint
+  const float w = static_cast<float>(tex.width()), h = static_cast<float>(tex.height());
+  return filtering::footprint_rho2(uv.ddx.x * w, uv.ddx.y * h, uv.ddy.x * w, uv.ddy.y * h);
+}
+
+inline void ExecTexUnit::sample_lanes(int binding, const std::array<Varying<2>, 4>& uv, int n,
+                                      TextureLineLog* const* lines, glm::vec4* out) {
+  const Texture2D& tex = texture(binding);
+  std::array<glm::vec2, 4> at;
+  std::array<LodInput, 4> lod;
+  for (int l = 0; l < 4; ++l) {
+    at[l] = uv[l].value;
+    lod[l] = LodInput::from_rho2(rho2_of(tex, uv[l]));
+  }
+  filtered_lanes(tex, binding * kBindingAddressStride, at, lod, false, n, lines, out);
+}
+
+inline void ExecTexUnit::sample_lod_lanes(int binding, const std::array<glm::vec2, 4>& uv,
+                                          const std::array<float, 4>& lod, int n,
+                                          TextureLineLog* const* lines, glm::vec4* out) {
+  std::array<LodInput, 4> lods;
+  for (int l = 0; l < 4; ++l) lods[l] = LodInput::explicit_lod(lod[l]);
+  filtered_lanes(texture(binding), binding * kBindingAddressStride, uv, lods, true, n, lines, out);
 }
 
 // Always inlined into the shader, so that the derivative arithmetic of the coordinates
@@ -163,12 +251,8 @@ inline glm::vec4 ExecTexUnit::filtered(const Texture2D& tex, std::uint64_t base,
 // a single-level render target skip it (-2 to -3% of a default frame on 2 threads).
 [[gnu::always_inline]] inline glm::vec4 ExecTexUnit::sample(int binding, const Varying<2>& uv) {
   const Texture2D& tex = texture(binding);
-  float rho2 = 0.0f;  // a single-level texture needs no footprint
-  if (tex.level_count() > 1) {
-    const float w = static_cast<float>(tex.width()), h = static_cast<float>(tex.height());
-    rho2 = filtering::footprint_rho2(uv.ddx.x * w, uv.ddx.y * h, uv.ddy.x * w, uv.ddy.y * h);
-  }
-  return filtered(tex, binding * kBindingAddressStride, uv.value, LodInput::from_rho2(rho2), false);
+  return filtered(tex, binding * kBindingAddressStride, uv.value,
+                  LodInput::from_rho2(rho2_of(tex, uv)), false);
 }
 
 template <int N, class Coord>

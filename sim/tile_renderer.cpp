@@ -1,6 +1,7 @@
 #include "sim/tile_renderer.h"
 
 #include <algorithm>
+#include <array>
 
 namespace skinsim::sim {
 
@@ -67,31 +68,56 @@ TileRenderer::TileRenderer(const RenderPassDesc& pass, const SetupTriangles& set
   tag_.resize(n);
 }
 
-glm::vec4 TileRenderer::shade(std::uint32_t triangle, int px, int py) {
-  const TriangleSetup& t = setup_.triangles[triangle];
-  const DrawCall& draw = pass_.draws[t.draw];
+void TileRenderer::shade_batch(std::vector<Waiting>& batch) {
+  if (batch.empty()) return;
+  const int n = static_cast<int>(batch.size());
+  // Padding lanes repeat the last fragment's inputs.
+  std::array<Exec4FragIn::Fragment, sl::kLanes> fragments;
+  for (int l = 0; l < sl::kLanes; ++l) {
+    const Waiting& w = batch[std::min(l, n - 1)];
+    const TriangleSetup& t = setup_.triangles[w.triangle];
+    const float cx = static_cast<float>(w.px) + 0.5f, cy = static_cast<float>(w.py) + 0.5f;
+    fragments[l] = {setup_.varying_planes.data() + t.varying_offset,
+                    &t.inv_w,
+                    cx - t.origin_x,
+                    cy - t.origin_y,
+                    {cx, cy}};
+  }
+  const DrawCall& draw = pass_.draws[setup_.triangles[batch[0].triangle].draw];
   tex_.bind(&draw.textures);
-  const float cx = static_cast<float>(px) + 0.5f, cy = static_cast<float>(py) + 0.5f;
-  const ExecFragIn in(setup_.varying_planes.data() + t.varying_offset, t.inv_w, cx - t.origin_x,
-                      cy - t.origin_y, {cx, cy}, inv_size_);
-  return draw.fragment_program->shade(in, tex_);
+  tex4_.begin(n, *lines_);
+  const sl::Lanes<4> colour =
+      draw.fragment_program->shade4(Exec4FragIn(fragments, inv_size_), tex4_);
+  tex4_.end();
+  for (int l = 0; l < n; ++l) {
+    glm::vec4& dst = color_[batch[l].index];
+    dst = blend(draw.blend, colour.lane(l), dst);
+  }
+  batch.clear();
 }
 
 bool TileRenderer::flush_tags(TileCounters& counters, std::vector<std::uint64_t>& shaded) {
   const int ts = grid_.tile_size;
   bool any = false;
+  // Visible fragments are shaded four at a time, in the order they are met, a batch
+  // holding fragments of one draw (one program and its textures).
+  std::vector<Waiting>& batch = batch_;
   for (int py = rect_.y0; py < rect_.y1; ++py) {
     for (int px = rect_.x0; px < rect_.x1; ++px) {
       const size_t i = static_cast<size_t>(py - rect_.y0) * ts + (px - rect_.x0);
       if (tag_[i] == 0) continue;
       const std::uint32_t tri = tag_[i] - 1;
       tag_[i] = 0;
-      color_[i] = shade(tri, px, py);
+      const std::uint32_t draw = setup_.triangles[tri].draw;
+      if (!batch.empty() && setup_.triangles[batch[0].triangle].draw != draw) shade_batch(batch);
+      batch.push_back({tri, px, py, i});
+      if (batch.size() == sl::kLanes) shade_batch(batch);
       ++counters.fragments_shaded;
-      ++shaded[setup_.triangles[tri].draw];
+      ++shaded[draw];
       any = true;
     }
   }
+  shade_batch(batch);
   return any;
 }
 
@@ -102,6 +128,7 @@ void TileRenderer::render(int tx, int ty, const std::vector<std::uint32_t>& tria
   const std::uint64_t pixels = static_cast<std::uint64_t>(rect_.x1 - rect_.x0) *
                                static_cast<std::uint64_t>(rect_.y1 - rect_.y0);
   lines.clear();
+  lines_ = &lines;
   tex_.set_tile(&counters.texture, &lines);
 
   // Tile start: colour from a clear, or loaded from the target (costs DRAM reads).
@@ -137,12 +164,16 @@ void TileRenderer::render(int tx, int ty, const std::vector<std::uint32_t>& tria
         tag_[i] = tri + 1;
         return;
       }
-      const glm::vec4 src = shade(tri, px, py);
-      color_[i] = blend(draw.blend, src, color_[i]);
+      // Shaded in batches too: a triangle covers a pixel once, so shading its fragments
+      // (and blending them over what the earlier triangles left) four at a time is shading
+      // them one by one.
+      batch_.push_back({tri, px, py, i});
+      if (batch_.size() == sl::kLanes) shade_batch(batch_);
       ++counters.fragments_shaded;
       ++shaded[t.draw];
       if (draw.blend != BlendMode::kOpaque) ++counters.fragments_blended;
     });
+    shade_batch(batch_);
   }
   flush_tags(counters, shaded);
 

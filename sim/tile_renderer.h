@@ -11,6 +11,7 @@
 #include "sim/counters.h"
 #include "sim/geometry.h"
 #include "sim/render_pass.h"
+#include "sim/shader_io.h"
 #include "sim/texture_unit.h"
 
 namespace skinsim::sim {
@@ -28,18 +29,29 @@ class TileRenderer {
  private:
   // Shades every tagged pixel; returns whether there was any.
   bool flush_tags(TileCounters& counters, std::vector<std::uint64_t>& shaded_by_draw);
-  glm::vec4 shade(std::uint32_t triangle, int px, int py);
+  // A visible fragment waiting in a batch: its triangle, pixel and index in the tile.
+  struct Waiting {
+    std::uint32_t triangle;
+    int px, py;
+    std::size_t index;
+  };
+  // Shades the batch's fragments (1 to 4, of one draw) together, blending them into the
+  // tile by the draw's blend mode, and empties it.
+  void shade_batch(std::vector<Waiting>& batch);
 
   const RenderPassDesc& pass_;
   const SetupTriangles& setup_;
   const TileGrid& grid_;
   const GpuConfig& config_;
   ExecTexUnit tex_;
+  Exec4TexUnit tex4_{tex_};
+  TextureLineLog* lines_ = nullptr;  // the tile's
   glm::vec2 inv_size_;
   PixelRect rect_{};
   std::vector<glm::vec4> color_;
   std::vector<float> depth_;
   std::vector<std::uint32_t> tag_;  // visible triangle + 1 per pixel, 0 = none
+  std::vector<Waiting> batch_;      // flush_tags' fragments waiting to be shaded
 };
 
 }  // namespace skinsim::sim
