@@ -176,11 +176,9 @@ class Exec4TexUnit {
     return each<4>([&](int l) { return lane(l).sample_cube_lod(b, d.lane(l), lod.lane(l)); });
   }
   sl::LFloat sample_shadow(int b, const Varying4<3>& coord) {
-    return each<1>([&](int l) { return lane(l).sample_shadow(b, coord.lane(l)); });
+    return shadow(b, coord.value, false);
   }
-  sl::LFloat sample_shadow(int b, const sl::Lanes<3>& coord) {
-    return each<1>([&](int l) { return lane(l).sample_shadow(b, coord.lane(l)); });
-  }
+  sl::LFloat sample_shadow(int b, const sl::Lanes<3>& coord) { return shadow(b, coord, true); }
   // N reads per fragment (ExecTexUnit::sample_each), the coordinates computed once for all
   // four lanes.
   template <int N, class Coord>
@@ -198,6 +196,15 @@ class Exec4TexUnit {
   }
 
  private:
+  sl::LFloat shadow(int b, const sl::Lanes<3>& coord, bool dependent) {
+    std::array<glm::vec3, sl::kLanes> at;
+    for (int l = 0; l < sl::kLanes; ++l) at[l] = coord.lane(l);
+    std::array<float, sl::kLanes> v{};
+    tex_.sample_shadow_lanes(b, at, dependent, active_, lane_lines_.data(), v.data());
+    sl::LFloat r;
+    r.c[0] = Float4{v[0], v[1], v[2], v[3]};
+    return r;
+  }
   // The values `read` writes for the batch's fragments, in lanes.
   template <class Read>
   sl::Lanes<4> packed(Read read) {

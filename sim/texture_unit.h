@@ -75,6 +75,10 @@ class ExecTexUnit {
   // a time (texture_footprints.h).
   void sample_lanes(int binding, const std::array<Varying<2>, 4>& uv, int n,
                     TextureLineLog* const* lines, glm::vec4* out);
+  // sample_shadow(binding, coord[l]) for the first n (1 to 4) fragments of a batch, a
+  // dependent read or not, each recording in lines[l].
+  void sample_shadow_lanes(int binding, const std::array<glm::vec3, 4>& coord, bool dependent,
+                           int n, TextureLineLog* const* lines, float* out);
   void sample_lod_lanes(int binding, const std::array<glm::vec2, 4>& uv,
                         const std::array<float, 4>& lod, int n, TextureLineLog* const* lines,
                         glm::vec4* out);
@@ -104,6 +108,9 @@ class ExecTexUnit {
   static LevelChoice choose_levels(const Texture2D& tex, const LodInput& lod);
   glm::vec4 nearest(const Texture2D& tex, std::uint64_t base, int level, glm::vec2 uv);
   float shadow(const Texture2D& tex, std::uint64_t base, glm::vec3 coord, bool dependent);
+  // The PCF of a bilinear footprint: its four texels compared with `depth`, then filtered.
+  struct Footprint;
+  static float percentage_closer(const Footprint& f, float depth);
   // Counts n sample instructions of one kind.
   void count_sample(const Texture2D& tex, Filter filter, bool dependent, std::uint64_t n = 1);
   // A bilinear sample's 2x2 texels (x0/x1, y0/y1 after wrapping) and blend weights.

@@ -114,11 +114,46 @@ inline float ExecTexUnit::shadow(const Texture2D& tex, std::uint64_t base, glm::
     return coord.z <= nearest(tex, base, 0, uv).x ? 1.0f : 0.0f;
   }
   count_sample(tex, Filter::kBilinear, dependent);
-  const Footprint f = fetch_footprint(tex, base, 0, uv);
-  const auto lit = [&](int x, int y) { return coord.z <= f.level->at(x, y).x ? 1.0f : 0.0f; };
+  return percentage_closer(fetch_footprint(tex, base, 0, uv), coord.z);
+}
+
+inline float ExecTexUnit::percentage_closer(const Footprint& f, float depth) {
+  const auto lit = [&](int x, int y) { return depth <= f.level->at(x, y).x ? 1.0f : 0.0f; };
   const float top = lit(f.x0, f.y0) + (lit(f.x1, f.y0) - lit(f.x0, f.y0)) * f.ax;
   const float bottom = lit(f.x0, f.y1) + (lit(f.x1, f.y1) - lit(f.x0, f.y1)) * f.ax;
   return top + (bottom - top) * f.ay;
+}
+
+inline void ExecTexUnit::sample_shadow_lanes(int binding, const std::array<glm::vec3, 4>& coord,
+                                             bool dependent, int n, TextureLineLog* const* lines,
+                                             float* out) {
+  const Texture2D& tex = texture(binding);
+  const std::uint64_t base = binding * kBindingAddressStride;
+  // Nearest comparisons, and maps whose addresses leave 32 bits: one by one.
+  if (tex.sampler().filter == Filter::kNearest || tex.size_bytes() > kBindingAddressStride) {
+    for (int l = 0; l < n; ++l) {
+      lines_ = lines[l];
+      out[l] = shadow(tex, base, coord[l], dependent);
+    }
+    return;
+  }
+  count_sample(tex, Filter::kBilinear, dependent, n);
+  std::array<float, FootprintLanes::kMax> u{}, v{};
+  for (int l = 0; l < n; ++l) {
+    u[l] = coord[l].x;
+    v[l] = coord[l].y;
+  }
+  const LevelView& level = tex.level(0);
+  FootprintLanes f;
+  address_footprints(u.data(), v.data(), n, level, tex.sampler().wrap,
+                     static_cast<std::uint32_t>(base + tex.level_offset(0)),
+                     static_cast<std::uint32_t>(tex.texel_bytes()), lines[0]->line_shift(), f);
+  for (int l = 0; l < n; ++l) {
+    lines_ = lines[l];
+    record_footprint(f.lines[0][l], f.lines[1][l], f.lines[2][l], f.lines[3][l]);
+    out[l] = percentage_closer({&level, f.x0[l], f.x1[l], f.y0[l], f.y1[l], f.ax[l], f.ay[l]},
+                               coord[l].z);
+  }
 }
 
 inline ExecTexUnit::LevelChoice ExecTexUnit::choose_levels(const Texture2D& tex,

@@ -116,11 +116,12 @@ TEST(Exec4, ArithmeticAndFunctionsAreExecLaneByLane) {
   });
 }
 
-// Batches of one to four fragments read through Exec4TexUnit give each fragment what
-// ExecTexUnit gives it alone, and the tile's log holds their requests in fragment order.
-// Over nearest, bilinear and trilinear textures, with and without mip chains, both texel
-// sizes and both wraps; at coordinates inside, across the borders and far outside; with
-// derivatives from magnification to several levels down; in the AVX2 path and the baseline.
+// Batches of one to four fragments read through Exec4TexUnit (2D reads, independent and
+// dependent, and shadow-map comparisons) give each fragment what ExecTexUnit gives it alone, and
+// the tile's log holds their requests in fragment order. Over nearest, bilinear and trilinear
+// textures, with and without mip chains, both texel sizes and both wraps; at coordinates inside,
+// across the borders and far outside; with derivatives from magnification to several levels down;
+// in the AVX2 path and the baseline.
 TEST(Exec4, TextureReadsAreExecFragmentByFragment) {
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> near(-0.3f, 1.3f);
@@ -164,17 +165,28 @@ TEST(Exec4, TextureReadsAreExecFragmentByFragment) {
                 uv.ddy.set_lane(l, batch[l].ddy);
                 lod.set_lane(l, log_scale(rng) + 9.0f);
               }
+              // Shadow-map coordinates: (u, v) and a depth to compare with.
+              Varying4<3> shadow;
+              shadow.value = Lanes<3>(sl::x(uv.value), sl::y(uv.value), lod * (1.0f / 9.0f));
               unit4.begin(n, lanes_lines);
               const Lanes<4> independent = unit4.sample(3, uv);
               const Lanes<4> dependent = unit4.sample_lod(3, uv.value, lod);
+              const Lanes<1> lit = unit4.sample_shadow(3, shadow);
+              const Lanes<1> lit_dependent = unit4.sample_shadow(3, shadow.value);
               unit4.end();
               for (int l = 0; l < n; ++l) {
                 const glm::vec4 a = one.sample(3, batch[l]);
                 const glm::vec4 d = one.sample_lod(3, batch[l].value, lod.lane(l));
+                Varying<3> shadow_at;
+                shadow_at.value = shadow.value.lane(l);
+                const float s = one.sample_shadow(3, shadow_at);
+                const float sd = one.sample_shadow(3, shadow_at.value);
                 for (int c = 0; c < 4; ++c) {
                   ASSERT_EQ(bits(independent.lane(l)[c]), bits(a[c])) << "lane " << l;
                   ASSERT_EQ(bits(dependent.lane(l)[c]), bits(d[c])) << "lane " << l;
                 }
+                ASSERT_EQ(bits(lit.lane(l)), bits(s)) << "lane " << l;
+                ASSERT_EQ(bits(lit_dependent.lane(l)), bits(sd)) << "lane " << l;
               }
             }
             EXPECT_EQ(lanes_lines.lines(), one_lines.lines());
