@@ -97,27 +97,18 @@ void footprints_sse2(const float* u, const float* v, int count, const LevelView&
   }
 }
 
-// Lanes first .. first + kLanes<V> - 1, each at its own level.
-template <class V>
-[[gnu::always_inline]] inline void footprints_at_levels(
-    const float* u, const float* v, int first,
-    const std::array<FootprintLevel, FootprintLanes::kMax>& levels, Wrap wrap,
-    std::uint32_t texel_bytes, std::uint32_t line_shift, FootprintLanes& out) {
-  IntLanes<V> width, height;
-  UintLanes<V> base;
-  for (int i = 0; i < kLanes<V>; ++i) {
-    width[i] = levels[first + i].width;
-    height[i] = levels[first + i].height;
-    base[i] = levels[first + i].base;
-  }
-  footprints<V>(load_lanes<V>(u + first, kLanes<V>), load_lanes<V>(v + first, kLanes<V>), first,
-                FootprintLanes::kMax, width, height, wrap, base, texel_bytes, line_shift, out);
+// The two halves of a LevelSamples field as eight lanes.
+template <class Half>
+[[gnu::always_inline]] inline auto joined(const std::array<Half, 2>& halves) {
+  return __builtin_shufflevector(halves[0], halves[1], 0, 1, 2, 3, 4, 5, 6, 7);
 }
 
-[[gnu::target("avx2")]] void footprints_at_levels_avx2(
-    const float* u, const float* v, const std::array<FootprintLevel, FootprintLanes::kMax>& levels,
-    Wrap wrap, std::uint32_t texel_bytes, std::uint32_t line_shift, FootprintLanes& out) {
-  footprints_at_levels<Float8>(u, v, 0, levels, wrap, texel_bytes, line_shift, out);
+[[gnu::target("avx2")]] void footprints_at_levels_avx2(const LevelSamples& s, Wrap wrap,
+                                                       std::uint32_t texel_bytes,
+                                                       std::uint32_t line_shift,
+                                                       FootprintLanes& out) {
+  footprints<Float8>(joined(s.u), joined(s.v), 0, FootprintLanes::kMax, joined(s.width),
+                     joined(s.height), wrap, joined(s.base), texel_bytes, line_shift, out);
 }
 
 }  // namespace
@@ -132,14 +123,15 @@ void address_footprints(const float* u, const float* v, int count, const LevelVi
   }
 }
 
-void address_footprints(const float* u, const float* v,
-                        const std::array<FootprintLevel, FootprintLanes::kMax>& levels, Wrap wrap,
-                        std::uint32_t texel_bytes, std::uint32_t line_shift, FootprintLanes& out) {
+void address_footprints(const LevelSamples& s, Wrap wrap, std::uint32_t texel_bytes,
+                        std::uint32_t line_shift, FootprintLanes& out) {
   if (use_avx2()) {
-    footprints_at_levels_avx2(u, v, levels, wrap, texel_bytes, line_shift, out);
+    footprints_at_levels_avx2(s, wrap, texel_bytes, line_shift, out);
   } else {
-    footprints_at_levels<Float4>(u, v, 0, levels, wrap, texel_bytes, line_shift, out);
-    footprints_at_levels<Float4>(u, v, 4, levels, wrap, texel_bytes, line_shift, out);
+    for (int half = 0; half < 2; ++half) {
+      footprints<Float4>(s.u[half], s.v[half], 4 * half, FootprintLanes::kMax, s.width[half],
+                         s.height[half], wrap, s.base[half], texel_bytes, line_shift, out);
+    }
   }
 }
 

@@ -12,6 +12,7 @@
 #include <cstdint>
 
 #include "sim/texture.h"
+#include "util/float_lanes.h"
 
 namespace skinsim::sim {
 
@@ -32,16 +33,19 @@ void address_footprints(const float* u, const float* v, int count, const LevelVi
                         Wrap wrap, std::uint32_t level_base, std::uint32_t texel_bytes,
                         std::uint32_t line_shift, FootprintLanes& out);
 
-// A level as one lane samples it: its size, and its address in the emulated memory.
-struct FootprintLevel {
-  int width, height;
-  std::uint32_t base;
+// Eight samples of one texture, each at its own level: sample i at (u, v) of a level width x
+// height texels laid out from `base` (its address in the emulated memory), in lane i % 4 of
+// half i / 4: the four fragments of a batch (shader_exec4_io.h), each at the levels its own
+// derivatives select, both levels of a trilinear sample at once. In whole four-lane vectors,
+// which a caller builds in registers: the eight-lane path loads each as written, where loading
+// lanes written one by one waited for the stores (perf annotate: the loads of the
+// per-lane-level array held 15% of the function's samples).
+struct LevelSamples {
+  std::array<Float4, 2> u, v;
+  std::array<Int4, 2> width, height;
+  std::array<Uint4, 2> base;
 };
-// Footprints of eight samples, sample i at (u[i], v[i]) of levels[i] (levels of one texture):
-// the four fragments of a batch (shader_exec4_io.h), each at the levels its own derivatives
-// select, both levels of a trilinear sample at once.
-void address_footprints(const float* u, const float* v,
-                        const std::array<FootprintLevel, FootprintLanes::kMax>& levels, Wrap wrap,
-                        std::uint32_t texel_bytes, std::uint32_t line_shift, FootprintLanes& out);
+void address_footprints(const LevelSamples& samples, Wrap wrap, std::uint32_t texel_bytes,
+                        std::uint32_t line_shift, FootprintLanes& out);
 
 }  // namespace skinsim::sim

@@ -216,26 +216,27 @@ inline void ExecTexUnit::filtered_lanes(const Texture2D& tex, std::uint64_t base
   }
   count_sample(tex, filter, dependent, n);
   // Lane l addresses fragment l's first level, lane 4 + l its second (a trilinear sample's);
-  // the lanes of fragments past n repeat fragment 0's.
+  // the lanes of fragments past n repeat fragment 0's (f1 to f3: the fragments in lanes 1-3).
   std::array<LevelChoice, 4> choice{};
   for (int l = 0; l < n; ++l) choice[l] = choose_levels(tex, lod[l]);
-  std::array<float, FootprintLanes::kMax> u, v;
-  std::array<FootprintLevel, FootprintLanes::kMax> levels;
-  const auto level_at = [&](int level) {
-    const LevelView& view = tex.level(level);
-    return FootprintLevel{view.width, view.height,
-                          static_cast<std::uint32_t>(base + tex.level_offset(level))};
-  };
-  for (int l = 0; l < 4; ++l) {
-    const int from = l < n ? l : 0;
-    u[l] = u[4 + l] = uv[from].x;
-    v[l] = v[4 + l] = uv[from].y;
-    levels[l] = level_at(choice[from].first);
-    levels[4 + l] = level_at(choice[from].second);
+  const int f1 = n > 1 ? 1 : 0, f2 = n > 2 ? 2 : 0, f3 = n > 3 ? 3 : 0;
+  LevelSamples samples;
+  samples.u[0] = samples.u[1] = Float4{uv[0].x, uv[f1].x, uv[f2].x, uv[f3].x};
+  samples.v[0] = samples.v[1] = Float4{uv[0].y, uv[f1].y, uv[f2].y, uv[f3].y};
+  for (int half = 0; half < 2; ++half) {
+    const auto level = [&](int l) { return half == 0 ? choice[l].first : choice[l].second; };
+    const LevelView *l0 = &tex.level(level(0)), *l1 = &tex.level(level(f1)),
+                    *l2 = &tex.level(level(f2)), *l3 = &tex.level(level(f3));
+    samples.width[half] = Int4{l0->width, l1->width, l2->width, l3->width};
+    samples.height[half] = Int4{l0->height, l1->height, l2->height, l3->height};
+    const auto at = [&](int l) {
+      return static_cast<std::uint32_t>(base + tex.level_offset(level(l)));
+    };
+    samples.base[half] = Uint4{at(0), at(f1), at(f2), at(f3)};
   }
   FootprintLanes f;
-  address_footprints(u.data(), v.data(), levels, tex.sampler().wrap,
-                     static_cast<std::uint32_t>(tex.texel_bytes()), lines[0]->line_shift(), f);
+  address_footprints(samples, tex.sampler().wrap, static_cast<std::uint32_t>(tex.texel_bytes()),
+                     lines[0]->line_shift(), f);
   const auto texels = [&](int lane, int level) {
     record_footprint(f.lines[0][lane], f.lines[1][lane], f.lines[2][lane], f.lines[3][lane]);
     return Footprint{&tex.level(level), f.x0[lane], f.x1[lane], f.y0[lane],
