@@ -4,6 +4,7 @@
 // and cache-line requests for batches of one to four fragments.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
@@ -116,9 +117,9 @@ TEST(Exec4, ArithmeticAndFunctionsAreExecLaneByLane) {
   });
 }
 
-// Batches of one to four fragments read through Exec4TexUnit (2D reads, independent and
-// dependent, and shadow-map comparisons) give each fragment what ExecTexUnit gives it alone, and
-// the tile's log holds their requests in fragment order. Over nearest, bilinear and trilinear
+// Batches of one to four fragments read through Exec4TexUnit (2D and cube reads, independent
+// and dependent, and shadow-map comparisons) give each fragment what ExecTexUnit gives it alone,
+// and the tile's log holds their requests in fragment order. Over nearest, bilinear and trilinear
 // textures, with and without mip chains, both texel sizes and both wraps; at coordinates inside,
 // across the borders and far outside; with derivatives from magnification to several levels down;
 // in the AVX2 path and the baseline.
@@ -138,13 +139,21 @@ TEST(Exec4, TextureReadsAreExecFragmentByFragment) {
   batches[0][2].value = {-7.25f, 1e9f};
   std::vector<glm::vec4> texels(48 * 32);
   for (glm::vec4& t : texels) t = glm::vec4(near(rng), near(rng), near(rng), near(rng));
+  std::array<std::vector<glm::vec4>, 6> faces;
+  for (std::vector<glm::vec4>& face : faces) {
+    face.assign(texels.begin(), texels.begin() + 16 * 16);
+    std::shuffle(face.begin(), face.end(), rng);
+  }
+  std::uniform_real_distribution<float> signed_unit(-1.0f, 1.0f);
   for (const Filter filter : {Filter::kNearest, Filter::kBilinear, Filter::kTrilinear}) {
     for (const TexelFormat format : {TexelFormat::kRGBA8, TexelFormat::kRGBA16F}) {
       for (const Wrap wrap : {Wrap::kClamp, Wrap::kRepeat}) {
         for (const bool mipmaps : {false, true}) {
           const Texture2D t("t", 48, 32, texels, format, {filter, wrap}, mipmaps);
+          const TextureCube cube("c", 16, faces, format, {filter, wrap}, mipmaps);
           TextureBindings b;
           b.textures[3] = &t;
+          b.cubes[5] = &cube;
           for (const bool baseline : {false, true}) {
             std::optional<BaselineSimdScope> scope;
             if (baseline) scope.emplace();
@@ -168,11 +177,21 @@ TEST(Exec4, TextureReadsAreExecFragmentByFragment) {
               // Shadow-map coordinates: (u, v) and a depth to compare with.
               Varying4<3> shadow;
               shadow.value = Lanes<3>(sl::x(uv.value), sl::y(uv.value), lod * (1.0f / 9.0f));
+              // Directions into the cube, with derivatives from the same scales.
+              Varying4<3> direction;
+              for (int l = 0; l < 4; ++l) {
+                direction.value.set_lane(
+                    l, glm::vec3(signed_unit(rng), signed_unit(rng), signed_unit(rng)));
+                direction.ddx.set_lane(l, glm::vec3(batch[l].ddx, 0.0f));
+                direction.ddy.set_lane(l, glm::vec3(0.0f, batch[l].ddy));
+              }
               unit4.begin(n, lanes_lines);
               const Lanes<4> independent = unit4.sample(3, uv);
               const Lanes<4> dependent = unit4.sample_lod(3, uv.value, lod);
               const Lanes<1> lit = unit4.sample_shadow(3, shadow);
               const Lanes<1> lit_dependent = unit4.sample_shadow(3, shadow.value);
+              const Lanes<4> env = unit4.sample_cube(5, direction);
+              const Lanes<4> env_lod = unit4.sample_cube_lod(5, direction.value, lod);
               unit4.end();
               for (int l = 0; l < n; ++l) {
                 const glm::vec4 a = one.sample(3, batch[l]);
@@ -181,9 +200,13 @@ TEST(Exec4, TextureReadsAreExecFragmentByFragment) {
                 shadow_at.value = shadow.value.lane(l);
                 const float s = one.sample_shadow(3, shadow_at);
                 const float sd = one.sample_shadow(3, shadow_at.value);
+                const glm::vec4 e = one.sample_cube(5, direction.lane(l));
+                const glm::vec4 el = one.sample_cube_lod(5, direction.value.lane(l), lod.lane(l));
                 for (int c = 0; c < 4; ++c) {
                   ASSERT_EQ(bits(independent.lane(l)[c]), bits(a[c])) << "lane " << l;
                   ASSERT_EQ(bits(dependent.lane(l)[c]), bits(d[c])) << "lane " << l;
+                  ASSERT_EQ(bits(env.lane(l)[c]), bits(e[c])) << "lane " << l;
+                  ASSERT_EQ(bits(env_lod.lane(l)[c]), bits(el[c])) << "lane " << l;
                 }
                 ASSERT_EQ(bits(lit.lane(l)), bits(s)) << "lane " << l;
                 ASSERT_EQ(bits(lit_dependent.lane(l)), bits(sd)) << "lane " << l;
