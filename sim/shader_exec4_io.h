@@ -1,10 +1,13 @@
 // Exec4: the Exec language over four fragments at once (values: shader_lanes.h), what the
 // tile renderer shades a tile's visible fragments in, four consecutive ones of a draw at a
 // time. Per lane it computes what Exec computes for that fragment alone, bit for bit:
-//   - inputs are each fragment's own ExecFragIn values, packed into lanes;
-//   - texture reads are the Exec texture unit's, lane by lane, each lane's cache-line requests
-//     kept apart and appended to the tile's log lane 0 first (end()): the order of shading the
-//     four fragments one after the other, which the texture cache replays (texture_line_log.h);
+//   - inputs are ExecFragIn's interpolation, done in lanes with the same operations;
+//   - texture reads are the Exec texture unit's for each fragment: 2D reads and shadow-map
+//     comparisons have their footprints addressed four fragments at a time
+//     (ExecTexUnit::sample_lanes), cube reads go one by one; each fragment's cache-line
+//     requests are kept apart and appended to the tile's log lane 0 first (end()): the order of
+//     shading the four one after the other, which the texture cache replays
+//     (texture_line_log.h);
 //   - lanes past the batch's last fragment are padding: they repeat an input and read nothing.
 #pragma once
 
