@@ -126,10 +126,7 @@ class Exec4FragIn {
 
 class Exec4TexUnit {
  public:
-  explicit Exec4TexUnit(ExecTexUnit& tex)
-      : tex_(tex), lane_lines_{&lines_[0], &lines_[1], &lines_[2], &lines_[3]} {}
-  Exec4TexUnit(const Exec4TexUnit&) = delete;  // lane_lines_ points into itself
-  Exec4TexUnit& operator=(const Exec4TexUnit&) = delete;
+  explicit Exec4TexUnit(ExecTexUnit& tex) : tex_(tex) {}
 
   // A batch of `fragments` (1 to 4) whose requests go, at end(), to `tile_lines`.
   void begin(int fragments, TextureLineLog& tile_lines) {
@@ -157,8 +154,7 @@ class Exec4TexUnit {
   sl::Lanes<4> sample(int b, const Varying4<2>& uv) {
     std::array<Varying<2>, sl::kLanes> at;
     for (int l = 0; l < sl::kLanes; ++l) at[l] = uv.lane(l);
-    return packed(
-        [&](glm::vec4* out) { tex_.sample_lanes(b, at, active_, lane_lines_.data(), out); });
+    return packed([&](glm::vec4* out) { tex_.sample_lanes(b, at, active_, lines_.data(), out); });
   }
   sl::Lanes<4> sample(int b, const sl::Lanes<2>& uv) { return sample_lod(b, uv, 0.0f); }
   sl::Lanes<4> sample_lod(int b, const sl::Lanes<2>& uv, const sl::LFloat& lod) {
@@ -168,9 +164,8 @@ class Exec4TexUnit {
       at[l] = uv.lane(l);
       lods[l] = lod.lane(l);
     }
-    return packed([&](glm::vec4* out) {
-      tex_.sample_lod_lanes(b, at, lods, active_, lane_lines_.data(), out);
-    });
+    return packed(
+        [&](glm::vec4* out) { tex_.sample_lod_lanes(b, at, lods, active_, lines_.data(), out); });
   }
   sl::Lanes<4> sample_cube(int b, const Varying4<3>& d) {
     return each<4>([&](int l) { return lane(l).sample_cube(b, d.lane(l)); });
@@ -203,7 +198,7 @@ class Exec4TexUnit {
     std::array<glm::vec3, sl::kLanes> at;
     for (int l = 0; l < sl::kLanes; ++l) at[l] = coord.lane(l);
     std::array<float, sl::kLanes> v{};
-    tex_.sample_shadow_lanes(b, at, dependent, active_, lane_lines_.data(), v.data());
+    tex_.sample_shadow_lanes(b, at, dependent, active_, lines_.data(), v.data());
     sl::LFloat r;
     r.c[0] = Float4{v[0], v[1], v[2], v[3]};
     return r;
@@ -229,7 +224,6 @@ class Exec4TexUnit {
   int active_ = 0;
   TextureLineLog* tile_lines_ = nullptr;
   std::array<TextureLineLog, sl::kLanes> lines_;  // each fragment's requests
-  std::array<TextureLineLog*, sl::kLanes> lane_lines_;
 };
 
 // Fragment programs only; a mediump program runs lane by lane in ExecMediump.

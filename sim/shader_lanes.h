@@ -99,7 +99,7 @@ namespace lanes_detail {
 constexpr int result_width(int n, int m) {
   return n > m ? n : m;
 }
-template <int R, int N>
+template <int N>
 [[gnu::always_inline]] inline const F4& part(const Lanes<N>& v, int i) {
   return v.c[N == 1 ? 0 : i];
 }
@@ -112,7 +112,7 @@ template <int R, int N>
     constexpr int R = lanes_detail::result_width(N, M);                                   \
     Lanes<R> r;                                                                           \
     for (int i = 0; i < R; ++i) {                                                         \
-      r.c[i] = lanes_detail::part<R>(a, i) op lanes_detail::part<R>(b, i);                \
+      r.c[i] = lanes_detail::part(a, i) op lanes_detail::part(b, i);                      \
     }                                                                                     \
     return r;                                                                             \
   }                                                                                       \
@@ -281,8 +281,8 @@ template <int N>
     constexpr int R = lanes_detail::result_width(N, M);                                      \
     Lanes<R> r;                                                                              \
     for (int i = 0; i < R; ++i) {                                                            \
-      const F4& p = lanes_detail::part<R>(a, i);                                             \
-      const F4& q = lanes_detail::part<R>(b, i);                                             \
+      const F4& p = lanes_detail::part(a, i);                                                \
+      const F4& q = lanes_detail::part(b, i);                                                \
       r.c[i] = expr;                                                                         \
     }                                                                                        \
     return r;                                                                                \

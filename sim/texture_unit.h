@@ -70,17 +70,17 @@ class ExecTexUnit {
   template <int N, class Coord>
   std::array<glm::vec4, N> sample_each(int binding, const Coord& coord);
   // Reads of one 2D texture by the first n (1 to 4) fragments of a batch (Exec4TexUnit),
-  // fragment l's cache lines recorded in lines[l]: what sample(binding, uv[l]) and
-  // sample_lod(binding, uv[l], lod[l]) give for each alone, the footprints addressed four at
-  // a time (texture_footprints.h).
-  void sample_lanes(int binding, const std::array<Varying<2>, 4>& uv, int n,
-                    TextureLineLog* const* lines, glm::vec4* out);
+  // fragment l's cache lines recorded in lines[l] (an array of four): what sample(binding, uv[l])
+  // and sample_lod(binding, uv[l], lod[l]) give for each alone, the footprints addressed four at a
+  // time (texture_footprints.h).
+  void sample_lanes(int binding, const std::array<Varying<2>, 4>& uv, int n, TextureLineLog* lines,
+                    glm::vec4* out);
   // sample_shadow(binding, coord[l]) for the first n (1 to 4) fragments of a batch, a
   // dependent read or not, each recording in lines[l].
   void sample_shadow_lanes(int binding, const std::array<glm::vec3, 4>& coord, bool dependent,
-                           int n, TextureLineLog* const* lines, float* out);
+                           int n, TextureLineLog* lines, float* out);
   void sample_lod_lanes(int binding, const std::array<glm::vec2, 4>& uv,
-                        const std::array<float, 4>& lod, int n, TextureLineLog* const* lines,
+                        const std::array<float, 4>& lod, int n, TextureLineLog* lines,
                         glm::vec4* out);
 
  private:
@@ -97,7 +97,7 @@ class ExecTexUnit {
   // filtered() for the first n of four fragments, each recording in its own lines[l].
   void filtered_lanes(const Texture2D& tex, std::uint64_t base, const std::array<glm::vec2, 4>& uv,
                       const std::array<LodInput, 4>& lod, bool dependent, int n,
-                      TextureLineLog* const* lines, glm::vec4* out);
+                      TextureLineLog* lines, glm::vec4* out);
   // The squared footprint of a varying's derivatives on `tex` (0 for a single level).
   static float rho2_of(const Texture2D& tex, const Varying<2>& uv);
   // The levels filtered() blends for `lod`, and the weight of the second.

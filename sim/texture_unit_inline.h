@@ -125,14 +125,14 @@ inline float ExecTexUnit::percentage_closer(const Footprint& f, float depth) {
 }
 
 inline void ExecTexUnit::sample_shadow_lanes(int binding, const std::array<glm::vec3, 4>& coord,
-                                             bool dependent, int n, TextureLineLog* const* lines,
+                                             bool dependent, int n, TextureLineLog* lines,
                                              float* out) {
   const Texture2D& tex = texture(binding);
   const std::uint64_t base = binding * kBindingAddressStride;
   // Nearest comparisons, and maps whose addresses leave 32 bits: one by one.
   if (tex.sampler().filter == Filter::kNearest || tex.size_bytes() > kBindingAddressStride) {
     for (int l = 0; l < n; ++l) {
-      lines_ = lines[l];
+      lines_ = &lines[l];
       out[l] = shadow(tex, base, coord[l], dependent);
     }
     return;
@@ -147,9 +147,9 @@ inline void ExecTexUnit::sample_shadow_lanes(int binding, const std::array<glm::
   FootprintLanes f;
   address_footprints(u.data(), v.data(), n, level, tex.sampler().wrap,
                      static_cast<std::uint32_t>(base + tex.level_offset(0)),
-                     static_cast<std::uint32_t>(tex.texel_bytes()), lines[0]->line_shift(), f);
+                     static_cast<std::uint32_t>(tex.texel_bytes()), lines[0].line_shift(), f);
   for (int l = 0; l < n; ++l) {
-    lines_ = lines[l];
+    lines_ = &lines[l];
     record_footprint(f.lines[0][l], f.lines[1][l], f.lines[2][l], f.lines[3][l]);
     out[l] = percentage_closer({&level, f.x0[l], f.x1[l], f.y0[l], f.y1[l], f.ax[l], f.ay[l]},
                                coord[l].z);
@@ -204,12 +204,12 @@ inline glm::vec4 ExecTexUnit::filtered(const Texture2D& tex, std::uint64_t base,
 inline void ExecTexUnit::filtered_lanes(const Texture2D& tex, std::uint64_t base,
                                         const std::array<glm::vec2, 4>& uv,
                                         const std::array<LodInput, 4>& lod, bool dependent, int n,
-                                        TextureLineLog* const* lines, glm::vec4* out) {
+                                        TextureLineLog* lines, glm::vec4* out) {
   const Filter filter = tex.sampler().filter;
   // Nearest samples, and textures whose addresses leave 32 bits: one by one.
   if (filter == Filter::kNearest || tex.size_bytes() > kBindingAddressStride) {
     for (int l = 0; l < n; ++l) {
-      lines_ = lines[l];
+      lines_ = &lines[l];
       out[l] = filtered(tex, base, uv[l], lod[l], dependent);
     }
     return;
@@ -236,14 +236,14 @@ inline void ExecTexUnit::filtered_lanes(const Texture2D& tex, std::uint64_t base
   }
   FootprintLanes f;
   address_footprints(samples, tex.sampler().wrap, static_cast<std::uint32_t>(tex.texel_bytes()),
-                     lines[0]->line_shift(), f);
+                     lines[0].line_shift(), f);
   const auto texels = [&](int lane, int level) {
     record_footprint(f.lines[0][lane], f.lines[1][lane], f.lines[2][lane], f.lines[3][lane]);
     return Footprint{&tex.level(level), f.x0[lane], f.x1[lane], f.y0[lane],
                      f.y1[lane],        f.ax[lane], f.ay[lane]};
   };
   for (int l = 0; l < n; ++l) {
-    lines_ = lines[l];
+    lines_ = &lines[l];
     const glm::vec4 first = blend(texels(l, choice[l].first));
     if (filter != Filter::kTrilinear) {
       out[l] = first;
@@ -263,7 +263,7 @@ inline float ExecTexUnit::rho2_of(const Texture2D& tex, const Varying<2>& uv) {
 }
 
 inline void ExecTexUnit::sample_lanes(int binding, const std::array<Varying<2>, 4>& uv, int n,
-                                      TextureLineLog* const* lines, glm::vec4* out) {
+                                      TextureLineLog* lines, glm::vec4* out) {
   const Texture2D& tex = texture(binding);
   std::array<glm::vec2, 4> at;
   std::array<LodInput, 4> lod;
@@ -276,7 +276,7 @@ inline void ExecTexUnit::sample_lanes(int binding, const std::array<Varying<2>, 
 
 inline void ExecTexUnit::sample_lod_lanes(int binding, const std::array<glm::vec2, 4>& uv,
                                           const std::array<float, 4>& lod, int n,
-                                          TextureLineLog* const* lines, glm::vec4* out) {
+                                          TextureLineLog* lines, glm::vec4* out) {
   std::array<LodInput, 4> lods;
   for (int l = 0; l < 4; ++l) lods[l] = LodInput::explicit_lod(lod[l]);
   filtered_lanes(texture(binding), binding * kBindingAddressStride, uv, lods, true, n, lines, out);

@@ -68,13 +68,13 @@ TileRenderer::TileRenderer(const RenderPassDesc& pass, const SetupTriangles& set
   tag_.resize(n);
 }
 
-void TileRenderer::shade_batch(std::vector<Waiting>& batch) {
-  if (batch.empty()) return;
-  const int n = static_cast<int>(batch.size());
+void TileRenderer::shade_batch() {
+  if (batch_.empty()) return;
+  const int n = static_cast<int>(batch_.size());
   // Padding lanes repeat the last fragment's inputs.
   std::array<Exec4FragIn::Fragment, sl::kLanes> fragments;
   for (int l = 0; l < sl::kLanes; ++l) {
-    const Waiting& w = batch[std::min(l, n - 1)];
+    const Waiting& w = batch_[std::min(l, n - 1)];
     const TriangleSetup& t = setup_.triangles[w.triangle];
     const float cx = static_cast<float>(w.px) + 0.5f, cy = static_cast<float>(w.py) + 0.5f;
     fragments[l] = {setup_.varying_planes.data() + t.varying_offset,
@@ -83,17 +83,17 @@ void TileRenderer::shade_batch(std::vector<Waiting>& batch) {
                     cy - t.origin_y,
                     {cx, cy}};
   }
-  const DrawCall& draw = pass_.draws[setup_.triangles[batch[0].triangle].draw];
+  const DrawCall& draw = pass_.draws[setup_.triangles[batch_[0].triangle].draw];
   tex_.bind(&draw.textures);
   tex4_.begin(n, *lines_);
   const sl::Lanes<4> colour =
       draw.fragment_program->shade4(Exec4FragIn(fragments, inv_size_), tex4_);
   tex4_.end();
   for (int l = 0; l < n; ++l) {
-    glm::vec4& dst = color_[batch[l].index];
+    glm::vec4& dst = color_[batch_[l].index];
     dst = blend(draw.blend, colour.lane(l), dst);
   }
-  batch.clear();
+  batch_.clear();
 }
 
 bool TileRenderer::flush_tags(TileCounters& counters, std::vector<std::uint64_t>& shaded) {
@@ -101,7 +101,6 @@ bool TileRenderer::flush_tags(TileCounters& counters, std::vector<std::uint64_t>
   bool any = false;
   // Visible fragments are shaded four at a time, in the order they are met, a batch
   // holding fragments of one draw (one program and its textures).
-  std::vector<Waiting>& batch = batch_;
   for (int py = rect_.y0; py < rect_.y1; ++py) {
     for (int px = rect_.x0; px < rect_.x1; ++px) {
       const size_t i = static_cast<size_t>(py - rect_.y0) * ts + (px - rect_.x0);
@@ -109,15 +108,15 @@ bool TileRenderer::flush_tags(TileCounters& counters, std::vector<std::uint64_t>
       const std::uint32_t tri = tag_[i] - 1;
       tag_[i] = 0;
       const std::uint32_t draw = setup_.triangles[tri].draw;
-      if (!batch.empty() && setup_.triangles[batch[0].triangle].draw != draw) shade_batch(batch);
-      batch.push_back({tri, px, py, i});
-      if (batch.size() == sl::kLanes) shade_batch(batch);
+      if (!batch_.empty() && setup_.triangles[batch_[0].triangle].draw != draw) shade_batch();
+      batch_.push_back({tri, px, py, i});
+      if (batch_.size() == sl::kLanes) shade_batch();
       ++counters.fragments_shaded;
       ++shaded[draw];
       any = true;
     }
   }
-  shade_batch(batch);
+  shade_batch();
   return any;
 }
 
@@ -168,12 +167,12 @@ void TileRenderer::render(int tx, int ty, const std::vector<std::uint32_t>& tria
       // (and blending them over what the earlier triangles left) four at a time is shading
       // them one by one.
       batch_.push_back({tri, px, py, i});
-      if (batch_.size() == sl::kLanes) shade_batch(batch_);
+      if (batch_.size() == sl::kLanes) shade_batch();
       ++counters.fragments_shaded;
       ++shaded[t.draw];
       if (draw.blend != BlendMode::kOpaque) ++counters.fragments_blended;
     });
-    shade_batch(batch_);
+    shade_batch();
   }
   flush_tags(counters, shaded);
 

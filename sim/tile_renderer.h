@@ -35,9 +35,9 @@ class TileRenderer {
     int px, py;
     std::size_t index;
   };
-  // Shades the batch's fragments (1 to 4, of one draw) together, blending them into the
+  // Shades batch_'s fragments (1 to 4, of one draw) together, blending them into the
   // tile by the draw's blend mode, and empties it.
-  void shade_batch(std::vector<Waiting>& batch);
+  void shade_batch();
 
   const RenderPassDesc& pass_;
   const SetupTriangles& setup_;
