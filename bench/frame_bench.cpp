@@ -5,13 +5,19 @@
 #include <benchmark/benchmark.h>
 #include <tbb/task_arena.h>
 
+#include <filesystem>
+#include <memory>
+
 #include "driver/frame_job.h"
+#include "driver/frame_quality.h"
 #include "driver/host_memory.h"
 #include "driver/images.h"
 #include "driver/scene_source.h"
+#include "driver/sweep_thumbnails.h"
 #include "gpu_model/profile_loader.h"
 #include "pipeline/bake/brdf_lut.h"
 #include "pipeline/reference/reference.h"
+#include "quality/image.h"
 #include "quality/metrics.h"
 
 namespace {
@@ -80,6 +86,70 @@ void BM_FlipAgainstPrepared(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_FlipAgainstPrepared)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// What a sweep does with each configuration's frame beside the next frame (driver/sweep_run.cpp,
+// finish): PSNR, SSIM and FLIP against the reference, prepared once; the frame's and its FLIP
+// map's PNGs with their thumbnails; and, after the sweep, each frame decoded again for its
+// comparison with its group's best.
+const quality::Image& scale_eighth_frame() {
+  static const quality::Image frame = [] {
+    Fixture& f = fixture();
+    pipeline::PipelineConfig config = f.config;
+    config.scale = 0.125f;
+    return driver::to_image(driver::run_frame(f.gpu_scene, config, f.device, 0).output.frame);
+  }();
+  return frame;
+}
+
+const driver::ReferenceImages& prepared_reference() {
+  static const driver::ReferenceImages reference = [] {
+    Fixture& f = fixture();
+    driver::ReferenceImages r =
+        driver::reference_images(pipeline::render_reference(f.gpu_scene, f.config, 0));
+    r.flip_features = std::make_shared<const quality::FlipFeatures>(r.image);
+    return r;
+  }();
+  return reference;
+}
+
+void BM_FrameQuality(benchmark::State& state) {
+  const quality::Image& frame = scale_eighth_frame();
+  const driver::ReferenceImages& reference = prepared_reference();
+  tbb::task_arena arena(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    arena.execute([&] { benchmark::DoNotOptimize(driver::evaluate_quality(frame, reference)); });
+  }
+}
+BENCHMARK(BM_FrameQuality)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+std::filesystem::path bench_directory() {
+  static const std::filesystem::path dir = [] {
+    std::filesystem::path d = std::filesystem::temp_directory_path() / "skinsim_bench_images";
+    std::filesystem::create_directories(d);
+    return d;
+  }();
+  return dir;
+}
+
+void BM_FramePngAndThumbnail(benchmark::State& state) {
+  const quality::Image& frame = scale_eighth_frame();
+  tbb::task_arena arena(1);
+  for (auto _ : state) {
+    arena.execute(
+        [&] { driver::write_image_and_thumbnail(frame, bench_directory(), "frame.png"); });
+  }
+}
+BENCHMARK(BM_FramePngAndThumbnail)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_FramePngDecode(benchmark::State& state) {
+  const std::filesystem::path png = bench_directory() / "decoded.png";
+  quality::save_png(scale_eighth_frame(), png);
+  tbb::task_arena arena(1);
+  for (auto _ : state) {
+    arena.execute([&] { benchmark::DoNotOptimize(quality::load_png(png).rgb.data()); });
+  }
+}
+BENCHMARK(BM_FramePngDecode)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_DefaultSceneBuild(benchmark::State& state) {
   for (auto _ : state) {
