@@ -1,4 +1,6 @@
 #include <stb/stb_image.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <memory>
@@ -19,14 +21,15 @@ namespace {
 // The bytes save_png writes, RGB interleaved. With `rounded` (which may be `image` itself:
 // each value is read before it is written), also the values load_png reads back from them.
 std::vector<std::uint8_t> to_rgb8(const Image& image, Image* rounded = nullptr) {
-  std::vector<std::uint8_t> bytes(image.rgb.size() * 3);
-  for_each_pixel(image.rgb.size(), [&](std::size_t i) {
-    for (int c = 0; c < 3; ++c) {
-      const std::uint8_t byte = unorm8_nearest(image.rgb[i][c]);
-      bytes[i * 3 + c] = byte;
-      if (rounded) rounded->rgb[i][c] = kUnorm8Value[byte];
-    }
-  });
+  const std::size_t count = image.rgb.size() * 3;
+  std::vector<std::uint8_t> bytes(count);
+  const float* values = &image.rgb.data()->x;  // glm::vec3 is three packed floats
+  float* rounded_values = rounded ? &rounded->rgb.data()->x : nullptr;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, std::size_t{1} << 16),
+                    [&](const tbb::blocked_range<std::size_t>& block) {
+                      unorm8_nearest(values + block.begin(), block.size(), &bytes[block.begin()],
+                                     rounded_values ? rounded_values + block.begin() : nullptr);
+                    });
   return bytes;
 }
 
