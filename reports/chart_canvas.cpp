@@ -1,13 +1,11 @@
 #include "reports/chart_canvas.h"
 
-#include <unistd.h>
 #include <vtkAxis.h>
 #include <vtkChartLegend.h>
 #include <vtkChartXY.h>
 #include <vtkContextScene.h>
 #include <vtkContextView.h>
 #include <vtkDoubleArray.h>
-#include <vtkGL2PSExporter.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPen.h>
@@ -21,16 +19,14 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
-#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <vector>
 
 #include "io/atomic_file.h"
-#include "io/read_file.h"
-#include "io/temp_files.h"
 #include "quality/error.h"
 #include "quality/image.h"
+#include "reports/chart_svg.h"
 #include "reports/display_check.h"
 #include "reports/error.h"
 
@@ -115,38 +111,6 @@ void place_legend_outside(vtkChartXY* chart, const ChartOptions& options) {
 
 namespace {
 
-// Debian's libgl2ps prints "GL2PS warning: GL2PS must be compiled with PNG support ..." on
-// stderr for every SVG (the background image it cannot embed, see write_svg). It is expected
-// and harmless, so while GL2PS runs stderr goes to a temporary file, and everything in it but
-// that warning is printed again afterwards (another thread's message is delayed, not lost).
-class Gl2psWarningFilter {
- public:
-  Gl2psWarningFilter() : file_(std::tmpfile()) {
-    std::fflush(stderr);
-    saved_ = file_ ? dup(STDERR_FILENO) : -1;
-    if (saved_ >= 0) dup2(fileno(file_), STDERR_FILENO);
-  }
-  ~Gl2psWarningFilter() {
-    if (saved_ >= 0) {
-      std::fflush(stderr);
-      dup2(saved_, STDERR_FILENO);
-      close(saved_);
-      std::rewind(file_);
-      char line[4096];
-      while (std::fgets(line, sizeof line, file_)) {
-        if (!std::strstr(line, "must be compiled with PNG support")) std::fputs(line, stderr);
-      }
-    }
-    if (file_) std::fclose(file_);
-  }
-  Gl2psWarningFilter(const Gl2psWarningFilter&) = delete;
-  Gl2psWarningFilter& operator=(const Gl2psWarningFilter&) = delete;
-
- private:
-  std::FILE* file_;
-  int saved_ = -1;
-};
-
 void write_png(vtkRenderWindow* window, const std::string& path) {
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);
@@ -178,37 +142,6 @@ void write_png(vtkRenderWindow* window, const std::string& path) {
   }
 }
 
-void write_svg(vtkRenderWindow* window, const std::string& path) {
-  // GL2PS writes only to a file named PREFIX.svg and does not report write errors: export to a
-  // temporary, read it back whole (an SVG ends with its closing tag), then write it checked.
-  const fs::path tmp_prefix = io::temporary_path_beside(path);
-  const fs::path tmp = tmp_prefix.string() + ".svg";
-  vtkNew<vtkGL2PSExporter> exporter;
-  exporter->SetRenderWindow(window);
-  exporter->SetFileFormatToSVG();
-  exporter->SetFilePrefix(tmp_prefix.c_str());
-  exporter->CompressOff();
-  // The OpenGL2 backend always hands GL2PS the background as an image, which Debian's libgl2ps
-  // (built without PNG) cannot embed: it warns once and the SVG background stays transparent.
-  exporter->UsePainterSettings();  // chart items are painted back to front: no depth sort
-  {
-    const Gl2psWarningFilter quiet;
-    exporter->Write();
-  }
-  std::string svg;
-  try {
-    svg = io::read_regular_file(tmp, "exported chart");
-  } catch (const io::InputError&) {
-    svg.clear();
-  }
-  std::error_code ec;
-  fs::remove(tmp, ec);
-  if (svg.find("</svg>") == std::string::npos) {
-    throw ReportError("cannot write chart " + path + " (GL2PS export failed or was cut short)");
-  }
-  io::write_file_atomically(path, svg);
-}
-
 }  // namespace
 
 ChartFiles save_chart(vtkContextView* view, const std::string& path_stem,
@@ -224,8 +157,8 @@ ChartFiles save_chart(vtkContextView* view, const std::string& path_stem,
   write_png(window, files.png);
   if (options.write_svg) {
     files.svg = path_stem + ".svg";
-    // GL2PS re-renders in feedback mode and leaves the window so: every chart saves last.
-    write_svg(window, files.svg);
+    // GL2PS's vector pass leaves the window so: every chart saves last.
+    write_chart_svg(window, files.svg);
   }
   return files;
 }
