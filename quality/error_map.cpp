@@ -1,9 +1,12 @@
 #include "quality/error_map.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <array>
 
 #include "quality/error.h"
-#include "util/parallel_pixels.h"
+#include "util/simd_dispatch.h"
 
 namespace skinsim::quality {
 namespace {
@@ -40,7 +43,8 @@ constexpr Polynomial kViridis{{
 using Double4 = double __attribute__((vector_size(32)));
 using Float4 = float __attribute__((vector_size(16)));
 
-void colours_of_4(const Polynomial& c, const float* t, glm::vec3* out) {
+[[gnu::always_inline]] inline void colours_of_4(const Polynomial& c, const float* t,
+                                                glm::vec3* out) {
   const Float4 v = {t[0], t[1], t[2], t[3]};
   Double4 x = __builtin_convertvector(v, Double4);
   x = x > 0.0 ? (x < 1.0 ? x : 1.0) : 0.0;  // NaN fails both: 0
@@ -51,6 +55,17 @@ void colours_of_4(const Polynomial& c, const float* t, glm::vec3* out) {
     f = f < 0.0f ? 0.0f : (1.0f < f ? 1.0f : f);
     for (int lane = 0; lane < 4; ++lane) out[lane][channel] = f[lane];
   }
+}
+
+void colour_quads(const Polynomial& c, const float* t, glm::vec3* out, std::size_t quads) {
+  for (std::size_t q = 0; q < quads; ++q) colours_of_4(c, t + 4 * q, out + 4 * q);
+}
+
+// The same operations with a Double4 in one register instead of two (no FMA in target "avx"):
+// the false colour of a frame's FLIP map took 7% of measuring a sweep's frame.
+[[gnu::target("avx")]] void colour_quads_avx(const Polynomial& c, const float* t, glm::vec3* out,
+                                             std::size_t quads) {
+  for (std::size_t q = 0; q < quads; ++q) colours_of_4(c, t + 4 * q, out + 4 * q);
 }
 
 const Polynomial& polynomial(ColorMap map) {
@@ -78,9 +93,17 @@ Image false_colour(const ScalarMap& map, ColorMap colors) {
   image.height = map.height;
   image.rgb.resize(map.values.size());
   const std::size_t quads = map.values.size() / 4;
-  for_each_pixel(quads, [&](std::size_t q) {
-    colours_of_4(polynomial(colors), &map.values[q * 4], &image.rgb[q * 4]);
-  });
+  const bool avx = use_avx();
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, quads, std::size_t{1} << 14),
+                    [&](const tbb::blocked_range<std::size_t>& block) {
+                      const float* t = &map.values[block.begin() * 4];
+                      glm::vec3* out = &image.rgb[block.begin() * 4];
+                      if (avx) {
+                        colour_quads_avx(polynomial(colors), t, out, block.size());
+                      } else {
+                        colour_quads(polynomial(colors), t, out, block.size());
+                      }
+                    });
   for (std::size_t i = quads * 4; i < map.values.size(); ++i) {
     image.rgb[i] = color_map(colors, map.values[i]);
   }

@@ -267,9 +267,10 @@ TEST(ErrorMap, FalseColourKeepsSizeAndClamps) {
 }
 
 TEST(ErrorMap, FalseColourIsColorMapBitForBit) {
-  // false_colour maps four values at a time: every pixel must be the colour color_map gives
-  // its value alone, whatever shares its register, for values across [0,1] at a fine step, the
-  // ends, out of range, -0 and NaN, and a last quad cut short (4099 values).
+  // false_colour maps four values at a time, in AVX where the processor has it: every pixel
+  // must be the colour color_map gives its value alone in the SSE2 baseline, whatever shares
+  // its register, for values across [0,1] at a fine step, the ends, out of range, -0 and NaN,
+  // and a last quad cut short (4099 values).
   std::vector<float> values;
   for (int i = 0; i <= 4000; ++i) values.push_back(static_cast<float>(i) / 4000.0f * 1.2f - 0.1f);
   for (const float v :
