@@ -1,10 +1,10 @@
 #include "reports/chart_svg.h"
 
+#include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkOpenGLGL2PSExporter.h>
 #include <vtkOpenGLGL2PSHelper.h>
 #include <vtkRenderWindow.h>
-#include <vtkSmartPointer.h>
 #include <vtk_gl2ps.h>
 
 #include <cstdio>
@@ -42,16 +42,12 @@ class HelperSetters : vtkOpenGLGL2PSHelper {
 // libgl2ps, built without PNG, cannot embed in an SVG: it drops it with a warning on stderr.
 // And it renders the window again at the end, which nothing reads after the export. Both took
 // about 0.4 s of a sweep's 2.2 s of charts, on the one thread VTK draws on (docs/performance.md).
-// GL2PS receives the vector pass alone, as from VTK's exporter: with text as text, the SVGs
-// were the same but for GL2PS's CreationDate line.
+// GL2PS receives the vector pass alone, as from VTK's exporter: with the same settings the
+// SVGs were the same below their header (title, creator, creation date).
 class VectorOnlyExporter : public vtkOpenGLGL2PSExporter {
  public:
   static VectorOnlyExporter* New();
-  vtkTypeMacro(VectorOnlyExporter, vtkOpenGLGL2PSExporter)
-
-      bool succeeded() const {
-    return succeeded_;
-  }
+  bool succeeded() const { return succeeded_; }
 
  protected:
   void WriteData() override {
@@ -81,6 +77,10 @@ class VectorOnlyExporter : public vtkOpenGLGL2PSExporter {
 
  private:
   bool succeeded_ = false;
+
+ public:
+  // Last: it takes no semicolon, which clang-format would read as continuing onto the next line.
+  vtkTypeMacro(VectorOnlyExporter, vtkOpenGLGL2PSExporter)
 };
 vtkStandardNewMacro(VectorOnlyExporter);
 

@@ -58,17 +58,14 @@ inline void unorm8_nearest(const float* values, std::size_t count, std::uint8_t*
   };
   std::size_t i = 0;
   for (; i + 16 <= count; i += 16) {
-    const __m128i low = _mm_packs_epi32(nearest4(values + i), nearest4(values + i + 4));
-    const __m128i high = _mm_packs_epi32(nearest4(values + i + 8), nearest4(values + i + 12));
-    const __m128i sixteen = _mm_packus_epi16(low, high);
+    const __m128i k[4] = {nearest4(values + i), nearest4(values + i + 4), nearest4(values + i + 8),
+                          nearest4(values + i + 12)};
+    const __m128i sixteen =
+        _mm_packus_epi16(_mm_packs_epi32(k[0], k[1]), _mm_packs_epi32(k[2], k[3]));  // 0..255
     _mm_storeu_si128(reinterpret_cast<__m128i*>(bytes + i), sixteen);
     if (rounded) {
       for (int q = 0; q < 4; ++q) {
-        const __m128i k =
-            q < 2
-                ? _mm_unpacklo_epi16(q == 0 ? low : _mm_srli_si128(low, 8), _mm_setzero_si128())
-                : _mm_unpacklo_epi16(q == 2 ? high : _mm_srli_si128(high, 8), _mm_setzero_si128());
-        _mm_storeu_ps(rounded + i + 4 * q, _mm_div_ps(_mm_cvtepi32_ps(k), scale));
+        _mm_storeu_ps(rounded + i + 4 * q, _mm_div_ps(_mm_cvtepi32_ps(k[q]), scale));
       }
     }
   }
