@@ -1,11 +1,9 @@
 #include "quality/error_map.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <array>
 
 #include "quality/error.h"
+#include "util/parallel_pixels.h"
 #include "util/simd_dispatch.h"
 
 namespace skinsim::quality {
@@ -94,16 +92,15 @@ Image false_colour(const ScalarMap& map, ColorMap colors) {
   image.rgb.resize(map.values.size());
   const std::size_t quads = map.values.size() / 4;
   const bool avx = use_avx();
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, quads, std::size_t{1} << 14),
-                    [&](const tbb::blocked_range<std::size_t>& block) {
-                      const float* t = &map.values[block.begin() * 4];
-                      glm::vec3* out = &image.rgb[block.begin() * 4];
-                      if (avx) {
-                        colour_quads_avx(polynomial(colors), t, out, block.size());
-                      } else {
-                        colour_quads(polynomial(colors), t, out, block.size());
-                      }
-                    });
+  for_each_block(quads, [&](std::size_t begin, std::size_t end) {
+    const float* t = &map.values[begin * 4];
+    glm::vec3* out = &image.rgb[begin * 4];
+    if (avx) {
+      colour_quads_avx(polynomial(colors), t, out, end - begin);
+    } else {
+      colour_quads(polynomial(colors), t, out, end - begin);
+    }
+  });
   for (std::size_t i = quads * 4; i < map.values.size(); ++i) {
     image.rgb[i] = color_map(colors, map.values[i]);
   }

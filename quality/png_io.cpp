@@ -1,6 +1,4 @@
 #include <stb/stb_image.h>
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <memory>
@@ -25,11 +23,10 @@ std::vector<std::uint8_t> to_rgb8(const Image& image, Image* rounded = nullptr) 
   std::vector<std::uint8_t> bytes(count);
   const float* values = &image.rgb.data()->x;  // glm::vec3 is three packed floats
   float* rounded_values = rounded ? &rounded->rgb.data()->x : nullptr;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, std::size_t{1} << 16),
-                    [&](const tbb::blocked_range<std::size_t>& block) {
-                      unorm8_nearest(values + block.begin(), block.size(), &bytes[block.begin()],
-                                     rounded_values ? rounded_values + block.begin() : nullptr);
-                    });
+  for_each_block(count, [&](std::size_t begin, std::size_t end) {
+    unorm8_nearest(values + begin, end - begin, &bytes[begin],
+                   rounded_values ? rounded_values + begin : nullptr);
+  });
   return bytes;
 }
 

@@ -126,19 +126,17 @@ class Exec4FragIn {
 
 class Exec4TexUnit {
  public:
-  explicit Exec4TexUnit(ExecTexUnit& tex) : tex_(tex) {}
+  // `line_bytes`: the texture cache's line, as in the tile logs `tex` records into.
+  Exec4TexUnit(ExecTexUnit& tex, std::uint32_t line_bytes) : tex_(tex) {
+    lines_.fill(TextureLineLog(line_bytes));
+  }
 
-  // A batch of `fragments` (1 to 4) whose requests go, at end(), to `tile_lines`.
-  void begin(int fragments, TextureLineLog& tile_lines) {
+  // A batch of `fragments` (1 to 4) whose requests go, at end(), to the log `tex` records
+  // into now (the tile's).
+  void begin(int fragments) {
     active_ = fragments;
-    tile_lines_ = &tile_lines;
-    for (TextureLineLog& l : lines_) {
-      if (l.line_shift() == tile_lines.line_shift()) {
-        l.clear();  // keeps its capacity for the next batch
-      } else {
-        l = TextureLineLog(1u << tile_lines.line_shift());
-      }
-    }
+    tile_lines_ = tex_.lines();
+    for (TextureLineLog& l : lines_) l.clear();  // keeps its capacity for the next batch
   }
   void end() {
     for (int l = 0; l < active_; ++l) tile_lines_->append(lines_[l]);

@@ -49,6 +49,7 @@ class ExecTexUnit {
   }
   // Where the next samples record their cache lines (one fragment's of a batch: Exec4TexUnit).
   void set_lines(TextureLineLog* lines) { lines_ = lines; }
+  TextureLineLog* lines() const { return lines_; }
 
   // Independent read: coordinates straight from a varying; LOD from its derivatives.
   glm::vec4 sample(int binding, const Varying<2>& uv);

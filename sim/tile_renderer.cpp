@@ -60,6 +60,7 @@ TileRenderer::TileRenderer(const RenderPassDesc& pass, const SetupTriangles& set
       grid_(grid),
       config_(config),
       tex_(nullptr, nullptr),
+      tex4_(tex_, config.texture_cache.line_bytes),
       inv_size_(1.0f / static_cast<float>(pass_target(pass).width),
                 1.0f / static_cast<float>(pass_target(pass).height)) {
   const size_t n = static_cast<size_t>(grid.tile_size) * grid.tile_size;
@@ -85,7 +86,7 @@ void TileRenderer::shade_batch() {
   }
   const DrawCall& draw = pass_.draws[setup_.triangles[batch_[0].triangle].draw];
   tex_.bind(&draw.textures);
-  tex4_.begin(n, *lines_);
+  tex4_.begin(n);
   const sl::Lanes<4> colour =
       draw.fragment_program->shade4(Exec4FragIn(fragments, inv_size_), tex4_);
   tex4_.end();
@@ -127,7 +128,6 @@ void TileRenderer::render(int tx, int ty, const std::vector<std::uint32_t>& tria
   const std::uint64_t pixels = static_cast<std::uint64_t>(rect_.x1 - rect_.x0) *
                                static_cast<std::uint64_t>(rect_.y1 - rect_.y0);
   lines.clear();
-  lines_ = &lines;
   tex_.set_tile(&counters.texture, &lines);
 
   // Tile start: colour from a clear, or loaded from the target (costs DRAM reads).

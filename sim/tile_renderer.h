@@ -44,14 +44,13 @@ class TileRenderer {
   const TileGrid& grid_;
   const GpuConfig& config_;
   ExecTexUnit tex_;
-  Exec4TexUnit tex4_{tex_};
-  TextureLineLog* lines_ = nullptr;  // the tile's
+  Exec4TexUnit tex4_;
   glm::vec2 inv_size_;
   PixelRect rect_{};
   std::vector<glm::vec4> color_;
   std::vector<float> depth_;
   std::vector<std::uint32_t> tag_;  // visible triangle + 1 per pixel, 0 = none
-  std::vector<Waiting> batch_;      // flush_tags' fragments waiting to be shaded
+  std::vector<Waiting> batch_;      // visible fragments waiting to be shaded
 };
 
 }  // namespace skinsim::sim

@@ -162,7 +162,7 @@ TEST(Exec4, TextureReadsAreExecFragmentByFragment) {
             ExecTexUnit lanes_unit(&lanes_lines, &lanes_counters), one(&one_lines, &one_counters);
             lanes_unit.bind(&b);
             one.bind(&b);
-            Exec4TexUnit unit4(lanes_unit);
+            Exec4TexUnit unit4(lanes_unit, 64);
             int n = 0;
             for (const auto& batch : batches) {
               n = n % 4 + 1;
@@ -185,7 +185,7 @@ TEST(Exec4, TextureReadsAreExecFragmentByFragment) {
                 direction.ddx.set_lane(l, glm::vec3(batch[l].ddx, 0.0f));
                 direction.ddy.set_lane(l, glm::vec3(0.0f, batch[l].ddy));
               }
-              unit4.begin(n, lanes_lines);
+              unit4.begin(n);
               const Lanes<4> independent = unit4.sample(3, uv);
               const Lanes<4> dependent = unit4.sample_lod(3, uv.value, lod);
               const Lanes<1> lit = unit4.sample_shadow(3, shadow);
