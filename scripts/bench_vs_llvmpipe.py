@@ -11,7 +11,7 @@ count, two llvmpipe anchors (rendering only):
 It alternates them ROUNDS times so that a noisy shared machine slows all alike, and prints
 each one's median and the ratio skinsim / replay.
 Both use every host thread they are given: skinsim's tiles shade on any thread and each
-emulated core's texture cache replays its tiles' requests in order (docs/performance.md,
+emulated core's texture cache replays its tiles' requests in order (docs/performance-log.md,
 "Host threads beyond the emulated cores"). BUILD_DIR may be a profile-guided build
 (scripts/build-pgo.sh) holding gles_replay and llvmpipe_skinbench, or links to them.
 

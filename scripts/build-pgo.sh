@@ -3,9 +3,11 @@
 # BUILD_DIR (default build-pgo): an instrumented build, a training run of the default sweep
 # at 1024x768, then the build again from the measured profiles (cmake/pgo.cmake). The
 # default sweep at 2048x1536 runs about 8% faster than with scripts/build.sh, with the same
-# images and numbers (docs/performance.md, "Profile-guided optimisation"). It compiles
-# twice, without ccache (the profiles differ from run to run), so it is opt-in. Safe to run again: every run
-# trains afresh. Extra arguments go to cmake's configure.
+# images and numbers (docs/performance-log.md, "Profile-guided optimisation"), which it checks
+# before it finishes: the optimised binary must reproduce every golden frame and counter
+# (tests/golden), or the script fails. It compiles twice, without ccache (the profiles differ
+# from run to run), so it is opt-in and CI leaves it out (docs/testing.md). Safe to run
+# again: every run trains afresh. Extra arguments go to cmake's configure.
 # Usage: scripts/build-pgo.sh [BUILD_DIR=build-pgo] [cmake configure arguments]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -35,4 +37,7 @@ trap 'rm -rf "$train_dir"' EXIT
 
 "${configure[@]}" -DSKINSIM_PGO=USE
 cmake --build "$build_dir" -j "$jobs" --target "${targets[@]}"
+# The profiles may change speed, nothing else: branch layout and inlining cannot move a value
+# (no -ffast-math, no FMA contraction on the baseline target), and the goldens prove it.
+(cd "$build_dir" && ctest --output-on-failure -j "$jobs" -R '^golden\.')
 echo "build-pgo: optimised binaries in $build_dir (profiles in $profile_dir)"

@@ -1,9 +1,7 @@
 #!/usr/bin/env bash
 # One command that installs what is missing, builds, and passes the tests:
 #   1. Release build with warnings as errors, every CTest test (chart tests run under xvfb-run);
-#   2. the profile-guided build (scripts/build-pgo.sh, the skinsim program only), which must
-#      reproduce every golden frame and counter: the profiles may change speed, nothing else;
-#   3. ASan + UBSan build of the unit tests (no VTK charts, no benchmarks, no llvmpipe replay:
+#   2. ASan + UBSan build of the unit tests (no VTK charts, no benchmarks, no llvmpipe replay:
 #      Mesa's allocations would read as leaks), tests not labelled
 #      slow or lint (the format check reads sources, so one run of it is enough).
 # Builds go through ccache when it is installed (scripts/ccache-env.sh), so a second run
@@ -15,9 +13,6 @@ jobs=$(nproc 2>/dev/null || echo 2)
 
 bash scripts/build.sh build -DSKINSIM_WERROR=ON
 (cd build && ctest --output-on-failure -j "$jobs")
-
-bash scripts/build-pgo.sh build-pgo -DSKINSIM_BUILD_BENCH=OFF
-(cd build-pgo && ctest --output-on-failure -j "$jobs" -R '^golden\.')
 
 bash scripts/build.sh build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSKINSIM_SANITIZE=ON \
   -DSKINSIM_WERROR=ON -DSKINSIM_BUILD_REPORTS=OFF -DSKINSIM_BUILD_BENCH=OFF \
