@@ -7,6 +7,7 @@
 
 #include "pipeline/knob.h"
 #include "util/parse_number.h"
+#include "util/user_error.h"
 
 namespace skinsim::app {
 
@@ -79,6 +80,14 @@ void add_scene_options(CLI::App& cmd, driver::SceneSource& s) {
       ->check(positive_real(driver::kMaxUnitsPerMm));
 }
 
+KnobAssignment parse_knob_assignment(const std::string& text, const std::string& option) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0) {
+    throw UserError(fmt::format("{}: expected knob=value, got '{}'", option, text));
+  }
+  return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
 void add_pipeline_options(CLI::App& cmd, pipeline::PipelineConfig& config) {
   // One option per row of the knob table (pipeline/knob.h).
   for (const pipeline::KnobSpec& knob : pipeline::all_knobs()) {
@@ -94,6 +103,28 @@ void add_pipeline_options(CLI::App& cmd, pipeline::PipelineConfig& config) {
            fmt::format("{} ({})", knob.help, knob.values))
         ->default_str(knob.get(config));
   }
+  // CLI11 runs option callbacks in the order the options were added, not as typed, so a knob
+  // given both ways has no "last one wins": it is refused.
+  cmd.add_option_function<std::vector<std::string>>(
+         "--set",
+         [&cmd, &config](const std::vector<std::string>& assignments) {
+           for (const std::string& text : assignments) {
+             const auto [name, value] = parse_knob_assignment(text, "--set");
+             const pipeline::KnobSpec& knob = pipeline::find_knob(name);
+             if (cmd.get_option(knob.flag)->count() > 0) {
+               throw UserError(
+                   fmt::format("--set {}: {} is given too; give the knob once", text, knob.flag));
+             }
+             try {
+               knob.set(config, value);
+             } catch (const pipeline::ConfigError& e) {
+               throw pipeline::ConfigError(fmt::format("--set {}: {}", text, e.what()));
+             }
+           }
+         },
+         "Set a knob by its name: knob=value (repeatable; names as in `skinsim knobs`, e.g. "
+         "light_azimuth_deg=60)")
+      ->type_name("KNOB=VALUE");
 }
 
 }  // namespace skinsim::app

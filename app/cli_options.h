@@ -17,9 +17,17 @@ struct DeviceOptions {
 
 void add_device_options(CLI::App& cmd, DeviceOptions& options);
 void add_scene_options(CLI::App& cmd, driver::SceneSource& source);
-// One option per pipeline knob; each value goes through pipeline::set_config_field, so
-// the CLI, sweep files and budgets validate identically.
+// One option per pipeline knob, and --set KNOB=VALUE (as `sweep --set`) for any knob by its
+// name; each value goes through the knob's own parser, so the CLI, sweep files and budgets
+// validate identically.
 void add_pipeline_options(CLI::App& cmd, pipeline::PipelineConfig& config);
+
+// "knob=value" as --set takes it, split at the first '='; throws UserError naming `option`.
+struct KnobAssignment {
+  std::string knob;
+  std::string value;
+};
+KnobAssignment parse_knob_assignment(const std::string& text, const std::string& option);
 
 // Validators for numeric options. CLI11 alone accepts "0x10", " 1" and "nan"; these accept
 // only what skinsim::parse_integer / parse_real accept, within range.

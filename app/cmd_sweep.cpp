@@ -90,11 +90,8 @@ driver::SweepSpec build_spec(const SweepOptions& o, const CLI::App& cmd) {
     driver::set_axis(spec, knob, v, o.axis_flags.at(knob));
   }
   for (const std::string& f : o.fixed) {
-    const auto eq = f.find('=');
-    if (eq == std::string::npos) {
-      throw driver::SweepError(fmt::format("--set: expected knob=value, got '{}'", f));
-    }
-    spec.fixed.push_back({f.substr(0, eq), f.substr(eq + 1), "--set " + f});
+    const auto [knob, value] = parse_knob_assignment(f, "--set");
+    spec.fixed.push_back({knob, value, "--set " + f});
   }
   // Scene options override the sweep file's only when given.
   if (o.sweep_file.empty()) {

@@ -38,13 +38,22 @@ std::string users_of(const pipeline::KnobSpec& knob) {
   return fmt::format("{}", fmt::join(users, ", "));
 }
 
+// The technique's passes in frame order, as run, validate, export and the timeline name them:
+// every technique's frame starts with the key light's shadow-map pass while --shadows is on.
+std::string frame_passes(const pipeline::TechniqueSpec& t) {
+  return "shadow, " + t.passes;
+}
+constexpr const char* kShadowNote =
+    "shadow: the key light's depth-only shadow-map pass, first in every technique's frame "
+    "while --shadows is on (the default)";
+
 int print_techniques(Format format) {
   const auto& all = pipeline::all_techniques();
   if (format == Format::kJson) {
     nlohmann::json out = nlohmann::json::array();
     for (const pipeline::TechniqueSpec* t : all) {
       out.push_back({{"name", t->name},
-                     {"passes", t->passes},
+                     {"passes", frame_passes(*t)},
                      {"summary", t->summary},
                      {"knobs", pipeline::technique_knobs(t->name)}});
     }
@@ -55,15 +64,17 @@ int print_techniques(Format format) {
       std::vector<std::string> knobs;
       for (const std::string& k : pipeline::technique_knobs(t->name))
         knobs.push_back("`" + k + "`");
-      fmt::print("| `{}` | {} | {} | {} |\n", t->name, t->passes, t->summary,
+      fmt::print("| `{}` | {} | {} | {} |\n", t->name, frame_passes(*t), t->summary,
                  knobs.empty() ? "-" : fmt::format("{}", fmt::join(knobs, ", ")));
     }
+    fmt::print("\n{}.\n", kShadowNote);
   } else {
     for (const pipeline::TechniqueSpec* t : all) {
-      fmt::print("{:<14} {}\n{:<14} passes: {}\n", t->name, t->summary, "", t->passes);
+      fmt::print("{:<14} {}\n{:<14} passes: {}\n", t->name, t->summary, "", frame_passes(*t));
       const auto knobs = pipeline::technique_knobs(t->name);
       if (!knobs.empty()) fmt::print("{:<14} knobs: {}\n", "", fmt::join(knobs, ", "));
     }
+    fmt::print("\n{}\n", kShadowNote);
   }
   return 0;
 }
@@ -91,9 +102,12 @@ int print_knobs(Format format) {
     }
   } else {
     for (const pipeline::KnobSpec& k : pipeline::all_knobs()) {
-      fmt::print("{:<20} {} (default {}; {})\n{:<20} {}\n", k.name, k.values, k.get(defaults),
-                 users_of(k), "", k.help);
+      fmt::print("{:<20} {:<24} {} (default {}; {})\n{:<20} {}\n", k.name, k.flag, k.values,
+                 k.get(defaults), users_of(k), "", k.help);
     }
+    fmt::print(
+        "\nSet a knob with its option, or by its name: --set knob=value (run, sweep, validate, "
+        "export).\n");
   }
   return 0;
 }

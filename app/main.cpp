@@ -15,6 +15,7 @@
 
 #include "app/commands.h"
 #include "driver/host_memory.h"
+#include "pipeline/knob.h"
 #include "util/simd_dispatch.h"
 #include "util/user_error.h"
 
@@ -50,8 +51,52 @@ int report_errors(const std::string& where, Body&& body) {
   }
 }
 
+// Levenshtein distance: how many single-character edits turn `a` into `b`.
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t substitute = diagonal + (a[i - 1] == b[j - 1] ? 0 : 1);
+      diagonal = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, substitute});
+    }
+  }
+  return row[b.size()];
+}
+
+// The message for an option `sub` does not have: the option it most likely meant, found by
+// the knob's name (--light_azimuth_deg is knob light_azimuth_deg, option --light-azimuth),
+// by '_' for '-', or by a few typos; CLI11 alone says only "arguments were not expected".
+std::string unknown_option_message(const CLI::App& sub, std::string_view option) {
+  const std::string name(option.substr(2));
+  std::string dashed = name;
+  std::replace(dashed.begin(), dashed.end(), '_', '-');
+  std::string hint;
+  for (const skinsim::pipeline::KnobSpec& knob : skinsim::pipeline::all_knobs()) {
+    if ((knob.name == name || knob.name == dashed) && sub.get_option_no_throw(knob.flag)) {
+      hint = fmt::format("{} (knob {}; or --set {}=VALUE)", knob.flag, knob.name, knob.name);
+    }
+  }
+  if (hint.empty()) {
+    std::size_t best = 4;  // more edits than this is no longer a typo
+    for (const CLI::Option* o : sub.get_options()) {
+      for (const std::string& long_name : o->get_lnames()) {
+        const std::size_t d = edit_distance(dashed, long_name);
+        if (d < best) best = d, hint = "--" + long_name;
+      }
+    }
+  }
+  return fmt::format("{}: unknown option {}{}", sub.get_name(), option,
+                     hint.empty() ? fmt::format(" (`skinsim {} --help` lists them)", sub.get_name())
+                                  : "; did you mean " + hint + "?");
+}
+
 // Checks CLI11 gets wrong before it parses: it hands "--opt=" (an empty value) the next
-// argument as its value, and reports an unknown subcommand as "A subcommand is required".
+// argument as its value, reports an unknown subcommand as "A subcommand is required", and an
+// unknown option without a hint.
 void check_raw_arguments(CLI::App& app, int argc, char** argv) {
   std::vector<std::string> known;
   for (const CLI::App* sub : app.get_subcommands({})) known.push_back(sub->get_name());
@@ -60,12 +105,18 @@ void check_raw_arguments(CLI::App& app, int argc, char** argv) {
     throw skinsim::UserError(
         fmt::format("unknown subcommand '{}' (known: {})", argv[1], fmt::join(known, ", ")));
   }
+  const CLI::App* sub = argc > 1 && argv[1][0] != '-' ? app.get_subcommand(argv[1]) : nullptr;
   for (int i = 1; i < argc; ++i) {
     const std::string_view arg = argv[i];
     if (arg == "--") break;  // what follows is positional
     if (arg.starts_with("--") && arg.ends_with("=")) {
       throw skinsim::UserError(
           fmt::format("option {} needs a value after '='", arg.substr(0, arg.size() - 1)));
+    }
+    const std::string_view option = arg.substr(0, arg.find('='));
+    if (sub && option.starts_with("--") && option != "--help" &&
+        !sub->get_option_no_throw(std::string(option))) {
+      throw skinsim::UserError(unknown_option_message(*sub, option));
     }
   }
 }

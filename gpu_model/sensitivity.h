@@ -1,6 +1,7 @@
 // Sensitivity of the frame time to each uncertain profile figure.
 #pragma once
 
+#include <cmath>
 #include <functional>
 #include <optional>
 #include <string>
@@ -24,6 +25,12 @@ struct SensitivityRow {
   double frame_ms_base = 0.0;
   std::optional<double> frame_ms_max;
   bool needs_recount = false;  // the figure affects the counters (see FigureSpec)
+
+  // |ms @max - ms @min|: how far the figure's range alone moves the frame (empty without both).
+  std::optional<double> swing_ms() const {
+    if (!frame_ms_min || !frame_ms_max) return std::nullopt;
+    return std::abs(*frame_ms_max - *frame_ms_min);
+  }
 };
 
 // Re-runs the emulator for a varied profile and returns that frame's pass counters.

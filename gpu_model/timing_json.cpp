@@ -1,5 +1,7 @@
 #include "gpu_model/timing_json.h"
 
+#include "gpu_model/timing_table.h"
+
 namespace skinsim::gpu_model {
 namespace {
 
@@ -85,6 +87,25 @@ nlohmann::json to_json(const std::vector<SensitivityRow>& rows) {
          {"needs_recount", r.needs_recount}});
   }
   return j;
+}
+
+nlohmann::json device_json(const DeviceProfile& p) {
+  const DeviceKeyFigures k = key_figures(p);
+  return {{"name", p.name},
+          {"source_path", p.source_path},
+          {"device", p.device},
+          {"soc", p.soc},
+          {"gpu", p.gpu},
+          {"display", {k.display_width, k.display_height}},
+          {"cores", k.cores},
+          {"pipes_per_core", k.pipes_per_core},
+          {"clock_mhz", k.clock_mhz},
+          {"peak_gflops", k.peak_gflops},
+          {"tmus", k.tmus},
+          {"dram_peak_gb_per_s", k.dram_peak_gb_per_s},
+          {"dram_achievable_gb_per_s", k.dram_achievable_gb_per_s},
+          {"tile", {k.tile_width, k.tile_height}},
+          {"texture_cache_kib_per_core", k.texture_cache_kib}};
 }
 
 }  // namespace skinsim::gpu_model

@@ -18,5 +18,7 @@ nlohmann::json to_json(const FrameTiming& frame);
 // Per tile: x, y, core, start_ms, ms, bottleneck (for heat maps).
 nlohmann::json tiles_to_json(const PassTiming& pass);
 nlohmann::json to_json(const std::vector<SensitivityRow>& rows);
+// A profile's identity and key figures, as `skinsim devices --json` prints them.
+nlohmann::json device_json(const DeviceProfile& p);
 
 }  // namespace skinsim::gpu_model

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "gpu_model/profile_loader.h"
 
 namespace skinsim::gpu_model {
@@ -56,16 +58,44 @@ std::string frame_table_legend() {
 }
 
 std::string format_sensitivity_table(const std::vector<SensitivityRow>& rows) {
-  std::string out = fmt::format("{:<58} {:>8} {:>22} {:>9} {:>9} {:>9}\n", "figure", "conf.",
-                                "min / base / max", "ms @min", "ms @base", "ms @max");
-  for (const SensitivityRow& r : rows) {
-    out += fmt::format("{:<58} {:>8} {:>22} {:>9} {:>9.3f} {:>9}\n",
-                       r.unit.empty() ? r.figure : fmt::format("{} ({})", r.figure, r.unit),
-                       confidence_name(r.confidence),
-                       fmt::format("{:g} / {:g} / {:g}", r.value_min, r.value_base, r.value_max),
-                       ms_or_dash(r.frame_ms_min), r.frame_ms_base, ms_or_dash(r.frame_ms_max));
+  // The figures that move the frame most first; ties (and rows without both ends) keep the
+  // profile's order.
+  std::vector<const SensitivityRow*> sorted;
+  for (const SensitivityRow& r : rows) sorted.push_back(&r);
+  std::stable_sort(sorted.begin(), sorted.end(), [](const auto* a, const auto* b) {
+    return a->swing_ms().value_or(-1.0) > b->swing_ms().value_or(-1.0);
+  });
+  std::string out = fmt::format("{:<58} {:>8} {:>22} {:>9} {:>9} {:>9} {:>9}\n", "figure", "conf.",
+                                "min / base / max", "ms @min", "ms @base", "ms @max", "swing ms");
+  for (const SensitivityRow* r : sorted) {
+    out += fmt::format("{:<58} {:>8} {:>22} {:>9} {:>9.3f} {:>9} {:>9}\n",
+                       r->unit.empty() ? r->figure : fmt::format("{} ({})", r->figure, r->unit),
+                       confidence_name(r->confidence),
+                       fmt::format("{:g} / {:g} / {:g}", r->value_min, r->value_base, r->value_max),
+                       ms_or_dash(r->frame_ms_min), r->frame_ms_base, ms_or_dash(r->frame_ms_max),
+                       ms_or_dash(r->swing_ms()));
   }
-  return out;
+  return out +
+         "swing ms = |ms @max - ms @min|: how far the figure's range alone moves the frame; "
+         "largest first\n";
+}
+
+DeviceKeyFigures key_figures(const DeviceProfile& p) {
+  DeviceKeyFigures k;
+  k.display_width = p.display_width.value;
+  k.display_height = p.display_height.value;
+  k.cores = p.cores.value;
+  k.pipes_per_core = p.pipes_per_core.value;
+  k.clock_mhz = p.clock_mhz.value;
+  // Peak FP32: cores x pipes x 8 FLOP (vec4 multiply-add) per clock (hardware.md).
+  k.peak_gflops = k.cores * k.pipes_per_core * 8.0 * k.clock_mhz / 1e3;
+  k.tmus = k.cores * p.tmus_per_core.value;
+  k.dram_peak_gb_per_s = p.dram_peak_gb_per_s.value;
+  k.dram_achievable_gb_per_s = p.dram_peak_gb_per_s.value * p.dram_achievable_fraction.value;
+  k.tile_width = p.tile_width.value;
+  k.tile_height = p.tile_height.value;
+  k.texture_cache_kib = p.texture_cache_bytes.value / 1024.0;
+  return k;
 }
 
 std::string format_device_table(const std::vector<DeviceProfile>& profiles) {
@@ -73,19 +103,23 @@ std::string format_device_table(const std::vector<DeviceProfile>& profiles) {
       "{:<9} {:<22} {:<18} {:>10} {:>7} {:>6} {:>7} {:>4} {:>12} {:>6} {:>9}\n", "name", "device",
       "GPU", "display", "cores", "MHz", "GFLOPS", "TMUs", "DRAM GB/s", "tile", "tex$ KiB");
   for (const DeviceProfile& p : profiles) {
-    // Peak FP32: cores x pipes x 8 FLOP (vec4 multiply-add) per clock (hardware.md).
-    const double gflops = p.cores.value * p.pipes_per_core.value * 8.0 * p.clock_mhz.value / 1e3;
+    const DeviceKeyFigures k = key_figures(p);
     out += fmt::format(
         "{:<9} {:<22} {:<18} {:>10} {:>7} {:>6g} {:>7.1f} {:>4g} {:>12} {:>6} {:>9g}\n", p.name,
-        p.device, p.gpu, fmt::format("{:g}x{:g}", p.display_width.value, p.display_height.value),
-        fmt::format("{:g}x{:g}", p.cores.value, p.pipes_per_core.value), p.clock_mhz.value, gflops,
-        p.cores.value * p.tmus_per_core.value,
-        fmt::format("{:.1f} ({:.1f})", p.dram_peak_gb_per_s.value,
-                    p.dram_peak_gb_per_s.value * p.dram_achievable_fraction.value),
-        fmt::format("{:g}x{:g}", p.tile_width.value, p.tile_height.value),
-        p.texture_cache_bytes.value / 1024.0);
+        p.device, p.gpu, fmt::format("{:g}x{:g}", k.display_width, k.display_height),
+        fmt::format("{:g}x{:g}", k.cores, k.pipes_per_core), k.clock_mhz, k.peak_gflops, k.tmus,
+        fmt::format("{:.1f} ({:.1f})", k.dram_peak_gb_per_s, k.dram_achievable_gb_per_s),
+        fmt::format("{:g}x{:g}", k.tile_width, k.tile_height), k.texture_cache_kib);
   }
   return out;
+}
+
+std::string device_table_legend() {
+  return "name = the profile (--device NAME; data/devices/NAME.toml); display = pixels;\n"
+         "cores = GPU cores x shader pipes per core; MHz = GPU clock; GFLOPS = peak FP32,\n"
+         "cores x pipes x 8 FLOP (vec4 multiply-add) x clock; TMUs = texture units, all cores;\n"
+         "DRAM GB/s = peak (achievable: peak x the profile's achievable fraction); tile = tile\n"
+         "size in pixels; tex$ KiB = texture cache per core. Sources and ranges: the .toml files\n";
 }
 
 }  // namespace skinsim::gpu_model

@@ -19,7 +19,20 @@ std::string frame_table_legend();
 
 std::string format_sensitivity_table(const std::vector<SensitivityRow>& rows);
 
-// Key figures of the given profiles, one row each.
+// The key figures of a profile that `skinsim devices` shows (its table and --json).
+struct DeviceKeyFigures {
+  double display_width = 0.0, display_height = 0.0;
+  double cores = 0.0, pipes_per_core = 0.0, clock_mhz = 0.0;
+  double peak_gflops = 0.0;  // FP32: cores x pipes x 8 FLOP (vec4 multiply-add) x clock
+  double tmus = 0.0;         // texture units, all cores
+  double dram_peak_gb_per_s = 0.0, dram_achievable_gb_per_s = 0.0;
+  double tile_width = 0.0, tile_height = 0.0;
+  double texture_cache_kib = 0.0;  // per core
+};
+DeviceKeyFigures key_figures(const DeviceProfile& p);
+
+// Key figures of the given profiles, one row each, and what each column means.
 std::string format_device_table(const std::vector<DeviceProfile>& profiles);
+std::string device_table_legend();
 
 }  // namespace skinsim::gpu_model

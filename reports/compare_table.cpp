@@ -4,13 +4,27 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <string_view>
 
 namespace skinsim::reports {
 
 namespace {
 
-std::string number(const std::optional<double>& v) {
-  return v ? fmt::format("{:.6g}", *v) : "-";
+// Whether a value's name says it counts bytes: "frame.dram_bytes",
+// "timing.passes.skin.dram_bytes.texture" (bytes by cause).
+bool counts_bytes(const std::string& name) {
+  for (std::size_t end = name.find('.'), start = 0;; start = end + 1, end = name.find('.', start)) {
+    if (std::string_view(name).substr(start, end - start).ends_with("bytes")) return true;
+    if (end == std::string::npos) return false;
+  }
+}
+
+// A value as the other tables print it: bytes in MB (10^6; six decimals, so a change of one
+// byte still shows), the rest as they are.
+std::string number(const std::string& name, const std::optional<double>& v) {
+  if (!v) return "-";
+  if (counts_bytes(name)) return fmt::format("{:.6f} MB", *v / 1e6);
+  return fmt::format("{:.6g}", *v);
 }
 
 std::string tolerance_text(const char* what, double tolerance) {
@@ -43,8 +57,8 @@ std::string moved_table(const ConfigDiff& d, std::size_t max_values) {
   out += fmt::format("  {:<{}}  {:>14}  {:>14}  {:>10}\n", "value", width, "A", "B", "change");
   for (std::size_t i = 0; i < shown; ++i) {
     const ValueDelta& v = d.moved[i];
-    out += fmt::format("  {:<{}}  {:>14}  {:>14}  {:>10}\n", v.name, width, number(v.a),
-                       number(v.b), change_text(v));
+    out += fmt::format("  {:<{}}  {:>14}  {:>14}  {:>10}\n", v.name, width, number(v.name, v.a),
+                       number(v.name, v.b), change_text(v));
   }
   return out;
 }

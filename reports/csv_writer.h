@@ -1,4 +1,4 @@
-// sweep.csv: one row per configuration, for spreadsheets and scripts.
+// results.csv: one row per configuration, for spreadsheets and scripts.
 #pragma once
 
 #include <string>

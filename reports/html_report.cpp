@@ -391,7 +391,7 @@ std::string write_report(const SweepTable& table, const std::string& dir,
   if (alongside.valid()) alongside.get();
   if (options.write_data_files) {
     write_sweep_json(table, dir + "/results.json");
-    write_sweep_csv(table, dir + "/sweep.csv");
+    write_sweep_csv(table, dir + "/results.csv");
   }
 
   std::string page = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
@@ -405,7 +405,7 @@ std::string write_report(const SweepTable& table, const std::string& dir,
   if (options.write_data_files) {
     page +=
         "<h2>Data</h2>\n<p><a href=\"results.json\">results.json</a> (everything on this "
-        "page; regenerate the report from it) and <a href=\"sweep.csv\">sweep.csv</a> (one "
+        "page; regenerate the report from it) and <a href=\"results.csv\">results.csv</a> (one "
         "row per configuration).</p>\n";
   }
   page += "</body>\n</html>\n";

@@ -26,7 +26,7 @@ struct ReportOptions {
       {"lut", "scale"}, {"scale", "lut"}, {"technique", ""}};
   bool draw_charts = true;  // false: no VTK, no display needed (the CLI's --no-charts)
   ChartOptions chart;
-  bool write_data_files = true;  // also write results.json and sweep.csv beside the page
+  bool write_data_files = true;  // also write results.json and results.csv beside the page
   // Work run on another thread while the charts draw (VTK draws on this thread, on one core),
   // and finished before the page is assembled: the sweep makes its comparison panels (which
   // the page shows) and thumbnails (which it links) there. Its exception, if any, is the

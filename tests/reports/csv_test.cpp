@@ -1,4 +1,4 @@
-// sweep.csv: header and rows.
+// results.csv: header and rows.
 #include <gtest/gtest.h>
 
 #include <sstream>

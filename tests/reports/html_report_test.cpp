@@ -72,7 +72,7 @@ TEST(HtmlReport, LinksResolveWithoutCharts) {
   write_report(sweep, dir, no_charts());
   EXPECT_TRUE(missing_report_links(dir).empty());
   EXPECT_TRUE(fs::exists(dir + "/results.json"));
-  EXPECT_TRUE(fs::exists(dir + "/sweep.csv"));
+  EXPECT_TRUE(fs::exists(dir + "/results.csv"));
   EXPECT_FALSE(fs::exists(dir + "/pass_times.png"));
 }
 
