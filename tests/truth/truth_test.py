@@ -1,0 +1,160 @@
+"""Tests of `skinsim truth` (docs/validation.md). Usage: truth_test.py CASE SKINSIM SKINSIM_EXR WORKDIR
+
+  exr_tool    skinsim-exr writes a raw float image as OpenEXR and reads it back bit for bit,
+              and names a file that is not an image (exit 2).
+  camera      a quad's corners land on the same pixels in skinsim's reference and in Cycles.
+  end_to_end  the default head at 64x48, 4 samples, two seeds, judged against a run.
+The last two exit 77 (skipped) where Blender is not installed.
+"""
+import base64
+import json
+import os
+import shutil
+import struct
+import subprocess
+import sys
+
+CASE, SKINSIM, EXR_TOOL, WORK = sys.argv[1:5]
+ENV = dict(os.environ, SKINSIM_CACHE_DIR="off", SKINSIM_EXR_TOOL=EXR_TOOL)
+
+
+def fail(message):
+    print(f"FAIL: {message}")
+    sys.exit(1)
+
+
+def run(*args, expect=0):
+    p = subprocess.run(args, env=ENV, capture_output=True, text=True)
+    if p.returncode != expect:
+        fail(f"{' '.join(args)} exited {p.returncode}, expected {expect}:\n{p.stdout}{p.stderr}")
+    return p
+
+
+def write_raw(path, width, height, values):
+    with open(path, "wb") as f:
+        f.write(b"SKF32RGB" + struct.pack("<2I", width, height))
+        f.write(struct.pack(f"<{len(values)}f", *values))
+
+
+def read_raw(path):
+    with open(path, "rb") as f:
+        data = f.read()
+    if data[:8] != b"SKF32RGB":
+        fail(f"{path}: not a raw float image")
+    width, height = struct.unpack("<2I", data[8:16])
+    values = struct.unpack(f"<{width * height * 3}f", data[16:])
+    return width, height, values
+
+
+def read_exr(path):
+    raw = path + ".raw"
+    run(EXR_TOOL, "to-raw", path, raw)
+    return read_raw(raw)
+
+
+def test_exr_tool():
+    width, height = 5, 3
+    n = width * height * 3
+    # Negative and above 1 (HDR), as float32.
+    values = struct.unpack(f"<{n}f", struct.pack(f"<{n}f", *[i * 0.37 - 2.0 for i in range(n)]))
+    write_raw(f"{WORK}/in.raw", width, height, values)
+    run(EXR_TOOL, "from-raw", f"{WORK}/in.raw", f"{WORK}/out.exr")
+    if read_exr(f"{WORK}/out.exr") != (width, height, values):
+        fail("raw -> EXR -> raw changed the values")
+    with open(f"{WORK}/not.exr", "w") as f:
+        f.write("not an image")
+    p = run(EXR_TOOL, "to-raw", f"{WORK}/not.exr", f"{WORK}/x.raw", expect=2)
+    if "not.exr" not in p.stderr:
+        fail(f"the error does not name the file: {p.stderr}")
+
+
+def quad_gltf(path):
+    """A 0.5 x 0.3 quad facing +Z at the origin, a camera 2 m away, off its axis so that at
+    64x48 each edge crosses its pixels a quarter from their side (coverage ~0.25 or ~0.75):
+    the pixel's centre is inside exactly when Cycles' box-filtered coverage is over half."""
+    corners = [(-0.25, -0.15, 0.0), (0.25, -0.15, 0.0), (0.25, 0.15, 0.0), (-0.25, 0.15, 0.0)]
+    positions = b"".join(struct.pack("<3f", *c) for c in corners)
+    normals = struct.pack("<12f", *([0.0, 0.0, 1.0] * 4))
+    indices = struct.pack("<6H", 0, 1, 2, 0, 2, 3)
+    blob = positions + normals + indices
+    gltf = {
+        "asset": {"version": "2.0"},
+        "buffers": [{"byteLength": len(blob),
+                     "uri": "data:application/octet-stream;base64," + base64.b64encode(blob).decode()}],
+        "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48},
+                        {"buffer": 0, "byteOffset": 48, "byteLength": 48},
+                        {"buffer": 0, "byteOffset": 96, "byteLength": 12}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
+                       "min": [-0.25, -0.15, 0.0], "max": [0.25, 0.15, 0.0]},
+                      {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC3"},
+                      {"bufferView": 2, "componentType": 5123, "count": 6, "type": "SCALAR"}],
+        "materials": [{"name": "card", "pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.8, 0.8, 1.0]}}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}, "indices": 2,
+                                    "material": 0}]}],
+        "cameras": [{"type": "perspective", "perspective": {"yfov": 0.5, "znear": 0.1, "zfar": 10.0}}],
+        "nodes": [{"mesh": 0}, {"camera": 0, "translation": [-0.075, -0.016, 2.0]}],
+        "scenes": [{"nodes": [0, 1]}],
+        "scene": 0,
+    }
+    with open(path, "w") as f:
+        json.dump(gltf, f)
+
+
+def lit_box(width, height, value):
+    """The bounding box (x0, y0, x1, y1) of pixels brighter than half the brightest."""
+    peak = max(value(x, y) for y in range(height) for x in range(width))
+    lit = [(x, y) for y in range(height) for x in range(width) if value(x, y) > 0.5 * peak]
+    xs, ys = [p[0] for p in lit], [p[1] for p in lit]
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+def test_camera():
+    quad_gltf(f"{WORK}/quad.gltf")
+    size = ["--resolution", "64x48"]
+    run(SKINSIM, "run", "--scene", f"{WORK}/quad.gltf", *size, "--out", f"{WORK}/run")
+    run(SKINSIM, "truth", "--scene", f"{WORK}/quad.gltf", *size, "--samples", "16",
+        "--out", f"{WORK}/truth")
+    w, h, v = read_exr(f"{WORK}/truth/truth.exr")
+    cycles = lit_box(w, h, lambda x, y: v[3 * (y * w + x) + 1])
+    run(EXR_TOOL, "to-raw", f"{WORK}/run/reference.png", f"{WORK}/reference.raw")
+    rw, rh, r = read_raw(f"{WORK}/reference.raw")
+    skinsim = lit_box(rw, rh, lambda x, y: r[3 * (y * rw + x) + 1])
+    print(f"quad's lit pixels: skinsim {skinsim}, Cycles {cycles}")
+    if (rw, rh) != (w, h) or skinsim != cycles:
+        fail(f"the quad lands on different pixels: skinsim {skinsim}, Cycles {cycles}")
+
+
+def test_end_to_end():
+    size = ["--resolution", "64x48"]
+    run(SKINSIM, "run", *size, "--out", f"{WORK}/run")
+    p = run(SKINSIM, "truth", *size, "--samples", "4", "--noise-floor", "--compare",
+            f"{WORK}/run", "--out", f"{WORK}/truth")
+    print(p.stdout, end="")
+    with open(f"{WORK}/truth/truth.json") as f:
+        result = json.load(f)
+    for key in ("reference", "frame", "noise_floor"):
+        skin = result[key]["skin"]
+        if not (0.0 < skin["flip"] < 1.0 and 0.0 < skin["psnr_db"] < 100.0):
+            fail(f"{key}: implausible figures {skin}")
+    w, h, v = read_exr(f"{WORK}/truth/truth.exr")
+    if (w, h) != (64, 48) or max(v) <= 0.0:
+        fail(f"truth.exr is {w}x{h}, brightest {max(v)}")
+    scene = json.load(open(f"{WORK}/truth/scene/scene.json"))
+    kinds = sorted({m["kind"] for m in scene["materials"]})
+    if kinds != ["eye", "other", "skin"] or len(scene["lights"]) != 2:
+        fail(f"the default head's scene lacks parts: materials {kinds}, {len(scene['lights'])} lights")
+
+
+def main():
+    shutil.rmtree(WORK, ignore_errors=True)
+    os.makedirs(WORK)
+    if CASE != "exr_tool":
+        blender = ENV.get("SKINSIM_BLENDER", "blender")
+        if shutil.which(blender) is None:
+            print(f"SKIP: Blender ({blender}) is not installed; scripts/install-deps.sh installs it")
+            sys.exit(77)
+    {"exr_tool": test_exr_tool, "camera": test_camera, "end_to_end": test_end_to_end}[CASE]()
+    print("ok")
+
+
+main()
