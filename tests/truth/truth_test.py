@@ -136,6 +136,9 @@ def test_end_to_end():
         skin = result[key]["skin"]
         if not (0.0 < skin["flip"] < 1.0 and 0.0 < skin["psnr_db"] < 100.0):
             fail(f"{key}: implausible figures {skin}")
+    floor = result["noise_floor"]["skin"]
+    if abs(floor["noise_free_psnr_ceiling_db"] - floor["psnr_db"] - 3.0103) > 1e-3:
+        fail(f"the noise-free ceiling is not the floor + 3.01 dB: {floor}")
     w, h, v = read_exr(f"{WORK}/truth/truth.exr")
     if (w, h) != (64, 48) or max(v) <= 0.0:
         fail(f"truth.exr is {w}x{h}, brightest {max(v)}")
