@@ -43,7 +43,7 @@ struct RunImages {
   quality::Mask skin;
 };
 
-RunImages load_run(const std::filesystem::path& dir, const quality::Image& truth) {
+RunImages load_run(const std::filesystem::path& dir, int width, int height) {
   RunImages r;
   const std::filesystem::path reference = dir / driver::kRunReferenceImage;
   if (!std::filesystem::is_regular_file(reference)) {
@@ -53,10 +53,10 @@ RunImages load_run(const std::filesystem::path& dir, const quality::Image& truth
   r.frame = quality::load_png(dir / "frame.png");
   r.reference = quality::load_png(reference);
   r.skin = quality::load_mask_png(driver::reference_mask_path(reference.string()));
-  if (r.frame.width != truth.width || r.frame.height != truth.height) {
+  if (r.frame.width != width || r.frame.height != height) {
     throw UserError(fmt::format(
         "--compare {}: the run is {}x{}, the truth {}x{} (give truth the run's --resolution)",
-        dir.string(), r.frame.width, r.frame.height, truth.width, truth.height));
+        dir.string(), r.frame.width, r.frame.height, width, height));
   }
   return r;
 }
@@ -78,6 +78,10 @@ int run_truth(const TruthOptions& o) {
   const pipeline::PipelineConfig config = driver::resolve_config(o.config, device);
   io::RunDirectory run_directory(o.out);
   const std::filesystem::path& out = run_directory.staging();
+
+  // Read before the minutes of rendering, so a wrong directory fails at once.
+  std::optional<RunImages> run;
+  if (!o.compare.empty()) run = load_run(o.compare, config.width, config.height);
 
   driver::SceneSource source = o.scene;
   source.warn = [](const std::string& message) {
@@ -102,8 +106,6 @@ int run_truth(const TruthOptions& o) {
       driver::display_image(driver::read_linear_image(out / "truth.exr", log));
   quality::save_png(truth, out / "truth.png");
 
-  std::optional<RunImages> run;
-  if (!o.compare.empty()) run = load_run(o.compare, truth);
   const quality::Mask* skin = run ? &run->skin : nullptr;
   if (o.noise_floor) {
     const int seed2 = o.seed + 1;

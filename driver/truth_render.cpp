@@ -49,7 +49,7 @@ nlohmann::json truth_metrics(const quality::Image& test, const quality::Image& t
                           {"flip", quality::metric_to_json(quality::flip(test, truth, mask).mean)}};
   };
   nlohmann::json out{{"all", measure(nullptr)}};
-  if (skin) out["skin"] = measure(skin);
+  if (skin && skin->count() > 0) out["skin"] = measure(skin);  // a scan may show no skin
   return out;
 }
 

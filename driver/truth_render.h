@@ -27,7 +27,8 @@ double render_truth(const TruthRender& render, const std::filesystem::path& scen
                     const std::filesystem::path& exr, const std::filesystem::path& log);
 
 // PSNR, SSIM and FLIP of `test` against `truth` over every pixel and, with `skin`, over the
-// skin pixels: {"all": {...}, "skin": {...}} (values as quality/json_value.h writes them).
+// skin pixels when it has any: {"all": {...}, "skin": {...}} (values as
+// quality/json_value.h writes them).
 nlohmann::json truth_metrics(const quality::Image& test, const quality::Image& truth,
                              const quality::Mask* skin);
 

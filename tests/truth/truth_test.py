@@ -2,9 +2,12 @@
 
   exr_tool    skinsim-exr writes a raw float image as OpenEXR and reads it back bit for bit,
               and names a file that is not an image (exit 2).
-  camera      a quad's corners land on the same pixels in skinsim's reference and in Cycles.
+  camera      a quad's corners land on the same pixels in skinsim's reference and in Cycles;
+              a run without skin is judged over all pixels only.
+  bad_input   a missing or mismatched --compare run, and a missing Blender: exit 2, named,
+              before any rendering.
   end_to_end  the default head at 64x48, 4 samples, two seeds, judged against a run.
-The last two exit 77 (skipped) where Blender is not installed.
+camera and end_to_end exit 77 (skipped) where Blender is not installed.
 """
 import base64
 import json
@@ -112,8 +115,13 @@ def test_camera():
     quad_gltf(f"{WORK}/quad.gltf")
     size = ["--resolution", "64x48"]
     run(SKINSIM, "run", "--scene", f"{WORK}/quad.gltf", *size, "--out", f"{WORK}/run")
+    # Judged against the run too: a scene without skin has figures over all pixels only.
     run(SKINSIM, "truth", "--scene", f"{WORK}/quad.gltf", *size, "--samples", "16",
-        "--out", f"{WORK}/truth")
+        "--compare", f"{WORK}/run", "--out", f"{WORK}/truth")
+    with open(f"{WORK}/truth/truth.json") as f:
+        reference = json.load(f)["reference"]
+    if "skin" in reference or not reference["all"]["psnr_db"] > 0.0:
+        fail(f"the quad's figures against truth: {reference}")
     w, h, v = read_exr(f"{WORK}/truth/truth.exr")
     cycles = lit_box(w, h, lambda x, y: v[3 * (y * w + x) + 1])
     run(EXR_TOOL, "to-raw", f"{WORK}/run/reference.png", f"{WORK}/reference.raw")
@@ -122,6 +130,24 @@ def test_camera():
     print(f"quad's lit pixels: skinsim {skinsim}, Cycles {cycles}")
     if (rw, rh) != (w, h) or skinsim != cycles:
         fail(f"the quad lands on different pixels: skinsim {skinsim}, Cycles {cycles}")
+
+
+def test_bad_input():
+    # No Blender: the --compare run must be refused before rendering is tried.
+    ENV["SKINSIM_BLENDER"] = f"{WORK}/no-blender"
+    size = ["--resolution", "64x48"]
+    p = run(SKINSIM, "truth", *size, "--compare", f"{WORK}/nowhere", "--out", f"{WORK}/t", expect=2)
+    if "nowhere" not in p.stderr:
+        fail(f"a missing --compare run is not named: {p.stderr}")
+    run(SKINSIM, "run", "--resolution", "32x24", "--out", f"{WORK}/small")
+    p = run(SKINSIM, "truth", *size, "--compare", f"{WORK}/small", "--out", f"{WORK}/t", expect=2)
+    if "32x24" not in p.stderr or "--resolution" not in p.stderr:
+        fail(f"a run of another size is not explained: {p.stderr}")
+    p = run(SKINSIM, "truth", *size, "--out", f"{WORK}/t", expect=2)
+    if "no-blender" not in p.stderr or "install-deps" not in p.stderr:
+        fail(f"a missing Blender is not explained: {p.stderr}")
+    if os.path.exists(f"{WORK}/t"):
+        fail("a failed truth left its output directory")
 
 
 def test_end_to_end():
@@ -151,12 +177,13 @@ def test_end_to_end():
 def main():
     shutil.rmtree(WORK, ignore_errors=True)
     os.makedirs(WORK)
-    if CASE != "exr_tool":
+    if CASE in ("camera", "end_to_end"):
         blender = ENV.get("SKINSIM_BLENDER", "blender")
         if shutil.which(blender) is None:
             print(f"SKIP: Blender ({blender}) is not installed; scripts/install-deps.sh installs it")
             sys.exit(77)
-    {"exr_tool": test_exr_tool, "camera": test_camera, "end_to_end": test_end_to_end}[CASE]()
+    {"exr_tool": test_exr_tool, "bad_input": test_bad_input, "camera": test_camera,
+     "end_to_end": test_end_to_end}[CASE]()
     print("ok")
 
 
