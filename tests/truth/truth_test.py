@@ -2,8 +2,9 @@
 
   exr_tool    skinsim-exr writes a raw float image as OpenEXR and reads it back bit for bit,
               and names a file that is not an image (exit 2).
-  camera      a quad's corners land on the same pixels in skinsim's reference and in Cycles;
-              a run without skin is judged over all pixels only.
+  camera      a quad's corners land on the same pixels in skinsim's reference and in Cycles,
+              and its radiance is the same (light units, ambient, colour); a run without
+              skin is judged over all pixels only.
   bad_input   a missing or mismatched --compare run, and a missing Blender: exit 2, named,
               before any rendering.
   end_to_end  the default head at 64x48, 4 samples, two seeds, judged against a run.
@@ -130,6 +131,17 @@ def test_camera():
     print(f"quad's lit pixels: skinsim {skinsim}, Cycles {cycles}")
     if (rw, rh) != (w, h) or skinsim != cycles:
         fail(f"the quad lands on different pixels: skinsim {skinsim}, Cycles {cycles}")
+    # Light units, ambient and colour: inside the quad (2 pixels from its edges) the truth's
+    # linear radiance is the reference's, which encodes a non-skin surface with the
+    # pipelines' square gamma (shaders/background.h): within 1% (8-bit steps, noise).
+    x0, y0, x1, y1 = cycles
+    inside = [y * w + x for y in range(y0 + 2, y1 - 1) for x in range(x0 + 2, x1 - 1)]
+    for c in range(3):
+        truth = sum(v[3 * i + c] for i in inside) / len(inside)
+        reference = sum(r[3 * i + c] ** 2 for i in inside) / len(inside)
+        print(f"channel {c}: truth {truth:.4f}, reference {reference:.4f}")
+        if abs(truth - reference) > 0.01 * reference:
+            fail(f"channel {c}: the quad's radiance is {truth:.4f} in Cycles, {reference:.4f} in skinsim")
 
 
 def test_bad_input():
