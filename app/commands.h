@@ -21,5 +21,6 @@ Command add_knobs_command(CLI::App& app);
 Command add_compare_command(CLI::App& app);
 Command add_validate_command(CLI::App& app);
 Command add_export_command(CLI::App& app);
+Command add_truth_command(CLI::App& app);
 
 }  // namespace skinsim::app

@@ -150,6 +150,7 @@ int main(int argc, char** argv) {
   add(skinsim::app::add_compare_command(app));
   add(skinsim::app::add_validate_command(app));
   add(skinsim::app::add_export_command(app));
+  add(skinsim::app::add_truth_command(app));
   const int parsed = report_errors("skinsim", [&] {  // knobs validate as they are parsed
     skinsim::check_simd_environment();
     check_raw_arguments(app, argc, argv);

@@ -19,6 +19,10 @@ packages=(
   slurmctld slurmd slurm-client munge  # tests/slurm: a throwaway single-node Slurm cluster
   chromium  # tests/reports: report.html checked in a real (headless) browser
   openimageio-tools  # oiiotool: tests/reports measures the browser's screenshots with it
+  # skinsim truth (docs/validation.md): Blender's Cycles path-traces the ground truth
+  # (3.4; ~80 MB download, ~264 MB installed on top of the rest), and skinsim-exr reads
+  # its OpenEXR with OpenImageIO
+  blender libopenimageio-dev
 )
 
 missing=()

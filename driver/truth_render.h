@@ -1,0 +1,35 @@
+// `skinsim truth`, part 2: renders a scene written by write_truth_scene (truth_scene.h) with
+// Blender Cycles, headless (`blender -b --factory-startup -P scripts/truth/cycles_render.py`),
+// to a linear OpenEXR; and the metrics of skinsim's images against such a truth.
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "quality/image.h"
+
+namespace skinsim::driver {
+
+// $SKINSIM_BLENDER, else "blender" from PATH.
+std::string blender_program();
+
+struct TruthRender {
+  std::string blender;           // the program
+  std::filesystem::path script;  // cycles_render.py
+  int threads = 0;               // 0: Blender's own choice (every core)
+};
+
+// Renders scene_dir/scene.json to `exr` with the Monte Carlo `seed`; Blender's output is
+// appended to `log`. Returns the wall-clock seconds. Throws UserError when Blender is missing
+// or fails (naming the log).
+double render_truth(const TruthRender& render, const std::filesystem::path& scene_dir, int seed,
+                    const std::filesystem::path& exr, const std::filesystem::path& log);
+
+// PSNR, SSIM and FLIP of `test` against `truth` over every pixel and, with `skin`, over the
+// skin pixels when it has any: {"all": {...}, "skin": {...}} (values as
+// quality/json_value.h writes them).
+nlohmann::json truth_metrics(const quality::Image& test, const quality::Image& truth,
+                             const quality::Mask* skin);
+
+}  // namespace skinsim::driver
