@@ -153,6 +153,14 @@ done
 
 mkdir -p -- "$out"
 out=$(realpath -e -- "$out")
+# The logs below go into DIR, so claim it as a sweep's first, as skinsim would
+# (docs/outputs.md: a command writes only into an empty directory or one of its own kind).
+marker=$out/.skinsim-output
+if [[ -z "$(ls -A -- "$out")" ]]; then
+  printf '{"kind":"sweep"}\n' >"$marker"
+elif ! grep -qs '"kind":"sweep"' "$marker"; then
+  die_usage "--out $out: is not empty and not a skinsim sweep directory (no .skinsim-output marker): choose another --out"
+fi
 log_dir=$out/slurm
 mkdir -p "$log_dir"
 

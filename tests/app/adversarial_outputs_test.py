@@ -337,6 +337,13 @@ def slurm_out_ignores_cdpath(d):
     return expect(r, 0) or ("" if str(d / "out") in log and not wrong else f"sbatch got:\n{log}")
 
 
+def slurm_refuses_a_directory_it_does_not_own(d):
+    write(d / "mine" / "thesis.tex", "precious")
+    r = slurm(d, ["--shards", "2", "--out", "mine"])
+    submitted = (d / "sbatch.log").exists()
+    return expect(r, 2, "not a skinsim sweep directory") or ("submitted" if submitted else "")
+
+
 def slurm_shards_are_bounded(d):
     return expect(slurm(d, ["--shards", "99999999999999999999", "--out", "o"]), 2, "--shards")
 
@@ -369,6 +376,7 @@ CASES = [
     planted_symlink_in_the_store_is_not_written_through,
     previous_run_reference_of_another_size_is_not_used,
     slurm_out_ignores_cdpath,
+    slurm_refuses_a_directory_it_does_not_own,
     slurm_shards_are_bounded,
 ]
 
