@@ -57,6 +57,10 @@ std::string data_dir(const BudgetOptions& o) {
 
 int check(const BudgetOptions& o) {
   const budget::BudgetFile file = load(o);
+  if (!o.junit.empty()) {
+    io::require_not_input(o.junit, "--junit", file.path, "the budget file");
+    io::require_not_input(o.junit, "--junit", file.baseline_path, "the baseline");
+  }
   const bool needs_baseline =
       std::any_of(file.budgets.begin(), file.budgets.end(),
                   [](const budget::Budget& b) { return b.needs_baseline(); });
@@ -81,6 +85,7 @@ int check(const BudgetOptions& o) {
 
 int record(const BudgetOptions& o) {
   const budget::BudgetFile file = load(o);
+  io::require_not_input(file.baseline_path, "--baseline", file.path, "the budget file");
   if (std::filesystem::exists(file.baseline_path) && !o.update) {
     throw budget::BudgetError(fmt::format(
         "{}: a baseline already exists; pass --update to replace it", file.baseline_path.string()));

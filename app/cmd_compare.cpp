@@ -51,7 +51,7 @@ int compare(const CompareOptions& o) {
     return c.different() ? 1 : 0;
   }
   check_out_holds_neither(o.out, o.a, o.b);
-  io::RunDirectory out(o.out);
+  io::RunDirectory out(o.out, "compare");
   const reports::Comparison c = driver::compare_outputs(o.a, o.b, tolerances, out.staging());
   reports::write_compare_files(c, out.staging());
   out.commit();

@@ -29,7 +29,7 @@ int run_export(const ExportOptions& o) {
   const std::string data_dir = o.device.data_dir.empty() ? default_data_dir() : o.device.data_dir;
   const gpu_model::DeviceProfile device = gpu_model::load_device_profile(o.device.device, data_dir);
   const pipeline::PipelineConfig config = driver::resolve_config(o.config, device);
-  io::RunDirectory run_directory(o.out);
+  io::RunDirectory run_directory(o.out, "export");
 
   driver::FrameJob job;
   job.device = &device;

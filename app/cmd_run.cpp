@@ -42,6 +42,9 @@ struct RunOptions {
 // be kept for later runs.
 void print_reference_source(const driver::FrameJobResult& r, const driver::FrameJob& job,
                             const std::string& out) {
+  for (const std::string& discarded : r.reference_discarded) {
+    fmt::print(stderr, "skinsim run: note: {}\n", discarded);
+  }
   switch (r.reference_source) {
     case driver::ReferenceSource::kKept:
       fmt::print("reference: reused from {}/{} (same scene, reference knobs and build)\n", out,

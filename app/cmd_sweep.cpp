@@ -21,6 +21,7 @@
 #include "driver/sweep_results.h"
 #include "driver/sweep_run.h"
 #include "driver/sweep_spec.h"
+#include "io/run_directory.h"
 #include "io/temp_files.h"
 #include "reports/recommendation.h"
 
@@ -73,9 +74,7 @@ struct SweepOptions {
 // `--out ""` would write into the current directory, and a file there cannot hold results.
 void require_out_dir(const std::string& out) {
   if (out.empty()) throw driver::SweepError("--out: empty path: give the sweep directory");
-  if (std::filesystem::exists(out) && !std::filesystem::is_directory(out)) {
-    throw driver::SweepError(fmt::format("--out {}: exists and is not a directory", out));
-  }
+  io::check_output_directory(out, "sweep", /*listed_only=*/false);
 }
 
 driver::SweepSpec build_spec(const SweepOptions& o, const CLI::App& cmd) {
@@ -92,6 +91,7 @@ driver::SweepSpec build_spec(const SweepOptions& o, const CLI::App& cmd) {
   for (const std::string& f : o.fixed) {
     const auto [knob, value] = parse_knob_assignment(f, "--set");
     spec.fixed.push_back({knob, value, "--set " + f});
+    driver::require_not_swept(spec, spec.fixed.back());
   }
   // Scene options override the sweep file's only when given.
   if (o.sweep_file.empty()) {
@@ -125,6 +125,12 @@ void print_replayed_passes(const driver::SweepRunSummary& summary) {
              summary.passes_replayed, passes);
 }
 
+void print_warnings(const driver::SweepRunSummary& summary) {
+  for (const std::string& w : summary.warnings) {
+    fmt::print(stderr, "skinsim sweep: warning: {}\n", w);
+  }
+}
+
 // A shard's run: its configurations into the shared directory, no tables or report (the
 // merge writes those once every shard has finished).
 int finish_shard(const driver::SweepShard& shard, const driver::SweepRunSummary& summary,
@@ -137,6 +143,7 @@ int finish_shard(const driver::SweepShard& shard, const driver::SweepRunSummary&
       summary.failed.empty() ? "" : fmt::format(", {} failed", summary.failed.size()),
       summary.seconds);
   print_replayed_passes(summary);
+  print_warnings(summary);
   for (const driver::FailedConfig& f : summary.failed) {
     fmt::print(stderr, "skinsim sweep: configuration {} failed: {}\n", f.id, f.reason);
   }
@@ -166,11 +173,17 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
   run_options.cancel = &g_cancel;
   run_options.compute = !o.merge;
   run_options.reference_store = driver::ReferenceStore::from_environment();
-  if (!o.shard.empty()) run_options.shard = driver::parse_shard(o.shard, "--shard");
+  // Given, even empty: `--shard ""` (an unset $K in a script) must not run the whole sweep.
+  if (cmd.get_option("--shard")->count()) {
+    run_options.shard = driver::parse_shard(o.shard, "--shard");
+  }
   if (o.merge && !std::filesystem::is_directory(o.out)) {
     throw driver::SweepError(
         fmt::format("--merge: {} is not a sweep directory (run the shards into it first)", o.out));
   }
+  // Checked again now that the spec is valid, and only now created: a sweep writes into its
+  // directory in place (resuming), so it must be this kind's, never a run's or a user's.
+  io::claim_output_directory(o.out, "sweep");
   // Left by a sweep killed mid-write; another live process's (a shard beside this one) are kept.
   io::remove_stale_temporaries_in_tree(o.out);
   g_interrupted.store(0);
@@ -214,9 +227,7 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
                             skipped)
               : "");
   print_replayed_passes(summary);
-  for (const std::string& w : summary.warnings) {
-    fmt::print(stderr, "skinsim sweep: warning: {}\n", w);
-  }
+  print_warnings(summary);
   for (const driver::FailedConfig& f : summary.failed) {
     fmt::print(stderr, "skinsim sweep: configuration {} failed: {}\n", f.id, f.reason);
   }
@@ -233,6 +244,7 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
   std::vector<std::string> written = {"results.json", "results.csv", "configs/"};
   if (summary.cancelled) {
     driver::finish_sweep_data(table, o.out);
+    driver::remove_stale_report(o.out);
     fmt::print(
         "interrupted: {} of {} configurations finished; wrote {}/{{{}}}; run the same "
         "command again to resume\n",

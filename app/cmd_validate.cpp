@@ -29,6 +29,7 @@ struct ValidateCliOptions {
 };
 
 int validate(const ValidateCliOptions& o) {
+  if (!o.json.empty()) io::require_not_input(o.json, "--json", o.measured, "the measurements");
   // The measurements first: a bad file fails before any rendering.
   const driver::Measurements measured = driver::read_measurements(o.measured);
   const std::string data_dir = o.device.data_dir.empty() ? default_data_dir() : o.device.data_dir;

@@ -8,6 +8,7 @@
 
 #include "budget/error.h"
 #include "io/atomic_file.h"
+#include "io/json_input.h"
 #include "io/read_file.h"
 #include "quality/json_value.h"
 
@@ -29,6 +30,7 @@ Baseline load_baseline(const std::filesystem::path& path) {
   const std::string text = io::read_regular_file(path, "baseline file");
   std::string field = "(root)";
   try {
+    io::require_json_depth(text, "baseline file", path);
     const nlohmann::json json = nlohmann::json::parse(text);
     field = "format";
     if (json.at("format").get<std::string>() != kFormat) {

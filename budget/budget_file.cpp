@@ -214,6 +214,12 @@ class Reader {
     if (const toml::node* n = t.get("pipeline")) {
       const auto* table = n->as_table();
       if (!table) throw error(*n, named + ".pipeline must be a table");
+      // Read after the budget's own resolution, it would silently replace it.
+      if (const toml::node* both = table->get("resolution"); both && t.get("resolution")) {
+        throw error(*both, fmt::format("{}.pipeline.resolution: the budget's resolution is "
+                                       "already given ({}.resolution): give it once",
+                                       named, named));
+      }
       read_pipeline(*table, named + ".pipeline", b);
     }
     // Ranges and combinations (lobe weights summing to 1) are checked on the whole config.

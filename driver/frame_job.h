@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "driver/frame_quality.h"
 #include "driver/reference_cache.h"
@@ -76,7 +77,9 @@ struct FrameJobResult {
   std::unique_ptr<pipeline::GpuScene> gpu_scene;  // refers to *scene
   FrameResult frame;
   std::optional<ReferenceImages> reference;  // with FrameJob::reference
-  nlohmann::json reference_marker;           // with FrameJob::reference (reference_cache.h)
+  nlohmann::json reference_marker;           // with FrameJob::reference: kept_reference_marker
+  // Kept copies found damaged, replaced or planted, and so rendered or taken from elsewhere.
+  std::vector<std::string> reference_discarded;
   ReferenceSource reference_source = ReferenceSource::kRendered;  // with FrameJob::reference
   std::string reference_not_stored;     // why a rendered reference could not be kept in the store
   std::optional<FrameQuality> quality;  // with FrameJob::reference

@@ -1,11 +1,14 @@
 // What a reference frame kept on disk must match to be reused, and loading it: a sweep keeps
 // its references in refs/ (sweep_reference.h), a run keeps its own beside its frame
-// (frame_job.h), and both reuse a kept copy only when its marker equals the one here.
+// (frame_job.h), and the reference store keeps them for every run (reference_store.h); each
+// reuses a kept copy only when its marker is the one here and its pixels are those the marker
+// describes, as a cache directory may be shared, edited or damaged.
 #pragma once
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <string>
 
 #include "driver/frame_quality.h"
 #include "driver/scene_source.h"
@@ -35,18 +38,42 @@ nlohmann::json reference_marker(const pipeline::PipelineConfig& resolved,
 // The skin mask kept beside a reference image: <image stem>_skin.png.
 std::string reference_mask_path(const std::string& reference_image);
 
-// Loads a reference image and its skin mask (as quality::save_png and save_mask_png wrote
-// them) into `out`: false if either is missing or damaged or their sizes differ. The image
-// is the 8-bit one written, so metrics against it are those against the rendered reference.
-bool load_reference(const std::filesystem::path& image, const std::filesystem::path& mask,
-                    ReferenceImages& out);
+// A kept copy of a reference as loading it found it.
+struct KeptReference {
+  std::optional<ReferenceImages> images;  // the copy, verified against its marker
+  // Why a copy that was there was not used, for a note (the reference is then rendered
+  // again): empty when it was used, or when there was none of this reference (no marker, or
+  // one of another build or configuration).
+  std::string discarded;
+};
 
-// load_reference of a copy whose marker file (a .json beside it) holds `expected`
-// (reference_marker): nullopt when the marker is missing, unreadable or another, or the
-// images do not load. What a sweep's refs/ and the reference store keep.
-std::optional<ReferenceImages> load_marked_reference(const std::filesystem::path& marker,
-                                                     const nlohmann::json& expected,
-                                                     const std::filesystem::path& image,
-                                                     const std::filesystem::path& mask);
+// The marker a kept copy of `images` carries: `marker` (reference_marker) with, under
+// "images", their size and an XXH3 digest of their pixels, so that images replaced, swapped
+// or damaged on disk are told from the ones kept.
+nlohmann::json kept_reference_marker(const nlohmann::json& marker, const ReferenceImages& images);
+
+// The copy at `image` and its skin mask `mask` whose kept marker is `stored`, when `stored` is
+// `expected`'s (reference_marker) and the images are regular files (a symlink is not) of
+// width x height whose pixels match the marker's digest. The image is the 8-bit one written,
+// so metrics against it are those against the rendered reference.
+KeptReference load_kept_reference(const nlohmann::json& stored, const nlohmann::json& expected,
+                                  int width, int height, const std::filesystem::path& image,
+                                  const std::filesystem::path& mask);
+
+// load_kept_reference with the kept marker read from the file `marker` beside the images (a
+// sweep's refs/, the reference store): a marker that is a symlink, not a regular file, not
+// JSON or nested beyond io::kMaxJsonDepth is discarded too.
+KeptReference load_marked_reference(const std::filesystem::path& marker,
+                                    const nlohmann::json& expected, int width, int height,
+                                    const std::filesystem::path& image,
+                                    const std::filesystem::path& mask);
+
+// Writes `images` to `image` and `mask`, then their kept marker (returned) to `marker`, last,
+// so a reader finds either no marker or a complete copy. Each file replaces its directory
+// entry (io::replace_file_entry): a symlink planted there is replaced, never written through.
+nlohmann::json save_marked_reference(const nlohmann::json& marker, const ReferenceImages& images,
+                                     const std::filesystem::path& marker_file,
+                                     const std::filesystem::path& image,
+                                     const std::filesystem::path& mask);
 
 }  // namespace skinsim::driver

@@ -1,15 +1,15 @@
 #include "driver/reference_store.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cstdlib>
 #include <exception>
 #include <utility>
 #include <vector>
 
-#include "driver/reference_cache.h"
-#include "io/atomic_file.h"
-#include "quality/image.h"
 #include "util/fingerprint.h"
+#include "util/text.h"
 #include "util/user_error.h"
 
 namespace skinsim::driver {
@@ -30,13 +30,20 @@ std::string environment(const char* name) {
 // The cache directory the environment names, or nullopt for none.
 std::optional<fs::path> cache_directory() {
   const std::string chosen = environment(kCacheVariable);
-  if (chosen == "off") return std::nullopt;
+  const auto refuse = [&chosen](const std::string& why) {
+    throw UserError(
+        fmt::format("environment variable {} is '{}', {}: name a directory for "
+                    "skinsim's cache, or 'off' for none",
+                    kCacheVariable, sanitized(chosen, 200), why));
+  };
+  if (lowercase(chosen) == "off") return std::nullopt;
   if (!chosen.empty()) {
+    if (sanitized(chosen, chosen.size()) != chosen) refuse("which holds control characters");
     std::error_code ec;
-    if (fs::exists(chosen, ec) && !fs::is_directory(chosen, ec)) {
-      throw UserError(std::string("environment variable ") + kCacheVariable + " is '" + chosen +
-                      "', which is not a directory: name a directory for skinsim's cache, or "
-                      "'off' for none");
+    const fs::file_status status = fs::status(chosen, ec);
+    if (fs::exists(status) && !fs::is_directory(status)) refuse("which is not a directory");
+    if (!fs::exists(status) && fs::is_symlink(fs::symlink_status(chosen, ec))) {
+      refuse("a symlink to nothing");
     }
     return fs::path(chosen);
   }
@@ -65,24 +72,21 @@ fs::path ReferenceStore::file(const nlohmann::json& marker, const std::string& s
   return dir_ / (kStem + fnv1a64_hex(marker.dump()) + suffix);
 }
 
-std::optional<ReferenceImages> ReferenceStore::load(const nlohmann::json& marker) const {
+KeptReference ReferenceStore::load(const nlohmann::json& marker, int width, int height) const {
   const fs::path marker_file = file(marker, kMarkerSuffix);
-  std::optional<ReferenceImages> images =
-      load_marked_reference(marker_file, marker, file(marker, ".png"), file(marker, "_skin.png"));
+  KeptReference kept = load_marked_reference(marker_file, marker, width, height,
+                                             file(marker, ".png"), file(marker, "_skin.png"));
   std::error_code ec;
-  if (images) fs::last_write_time(marker_file, fs::file_time_type::clock::now(), ec);  // used
-  return images;
+  if (kept.images) fs::last_write_time(marker_file, fs::file_time_type::clock::now(), ec);  // used
+  return kept;
 }
 
 std::string ReferenceStore::keep(const nlohmann::json& marker,
                                  const ReferenceImages& images) const {
   try {
     fs::create_directories(dir_);
-    // Each file is replaced atomically and the marker comes last, so a reader finds either no
-    // marker or a complete copy.
-    quality::save_png(images.image, file(marker, ".png"));
-    quality::save_mask_png(images.skin, file(marker, "_skin.png"));
-    io::write_file_atomically(file(marker, kMarkerSuffix), marker.dump(2) + "\n");
+    save_marked_reference(marker, images, file(marker, kMarkerSuffix), file(marker, ".png"),
+                          file(marker, "_skin.png"));
     evict();
   } catch (const std::exception& e) {
     return e.what();

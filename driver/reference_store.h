@@ -12,6 +12,7 @@
 #include <string>
 
 #include "driver/frame_quality.h"
+#include "driver/reference_cache.h"
 
 namespace skinsim::driver {
 
@@ -24,18 +25,21 @@ class ReferenceStore {
   explicit ReferenceStore(std::filesystem::path dir, int capacity = kDefaultCapacity);
 
   // The store the environment selects, in its references/ folder: SKINSIM_CACHE_DIR names the
-  // cache directory, or is "off" for none; unset or empty, $XDG_CACHE_HOME/skinsim (an
-  // absolute XDG_CACHE_HOME), else $HOME/.cache/skinsim; none without a home. Throws
-  // UserError naming SKINSIM_CACHE_DIR when it names something that is not a directory.
+  // cache directory, or is "off" in any case ("OFF", "Off") for none; unset or empty,
+  // $XDG_CACHE_HOME/skinsim (an absolute XDG_CACHE_HOME), else $HOME/.cache/skinsim; none
+  // without a home. Throws UserError naming SKINSIM_CACHE_DIR when it names something that is
+  // not a directory (a file, a dangling symlink) or holds a control character.
   static std::optional<ReferenceStore> from_environment();
 
-  // The reference kept under `marker` (reference_marker), when the store holds a complete
-  // copy of it; it then counts as just used. A missing, damaged or foreign copy is nullopt.
-  std::optional<ReferenceImages> load(const nlohmann::json& marker) const;
+  // The width x height reference kept under `marker` (reference_marker), when the store holds
+  // a copy of it that its marker vouches for (load_marked_reference); it then counts as just
+  // used. A damaged, replaced or planted copy is discarded, and `discarded` says why.
+  KeptReference load(const nlohmann::json& marker, int width, int height) const;
 
-  // Keeps `images` under `marker` and removes the least recently used references beyond the
-  // capacity. A reference that cannot be kept (a full disk, a read-only cache) is no error for
-  // the run: the reason is returned, empty when it was kept.
+  // Keeps `images` under `marker` (save_marked_reference: never through a symlink) and removes the
+  // least recently used references beyond the capacity. A reference that cannot be kept (a full
+  // disk, a read-only cache) is no error for the run: the reason is returned, empty when it was
+  // kept.
   std::string keep(const nlohmann::json& marker, const ReferenceImages& images) const;
 
   const std::filesystem::path& dir() const { return dir_; }

@@ -8,7 +8,7 @@
 #include "driver/crop_windows.h"
 #include "driver/image_diff.h"
 #include "driver/result_values.h"
-#include "io/read_file.h"
+#include "io/json_input.h"
 
 namespace skinsim::driver {
 
@@ -46,9 +46,7 @@ std::pair<fs::path, Kind> locate(const fs::path& given, const char* side) {
 
 nlohmann::json read_result(const fs::path& dir) {
   const fs::path path = dir / "result.json";
-  nlohmann::json j = nlohmann::json::parse(io::read_regular_file(path, "run result"), nullptr,
-                                           /*allow_exceptions=*/false);
-  if (j.is_discarded()) throw io::InputError(path.string() + ": not valid JSON");
+  nlohmann::json j = io::read_json_file(path, "run result");
   for (const char* field : {"config", "timing", "counters"}) {
     if (!j.is_object() || !j.contains(field)) {
       throw io::InputError(

@@ -13,7 +13,7 @@
 #include "driver/frame_comparison.h"
 #include "driver/sweep_reference.h"
 #include "io/atomic_file.h"
-#include "io/read_file.h"
+#include "io/json_input.h"
 #include "pipeline/knob.h"
 #include "quality/image.h"
 #include "util/build_identity.h"
@@ -53,8 +53,7 @@ std::string comparison_key(const fs::path& dir, const ConfigResult& row, const C
 
 std::optional<FrameComparison> cached(const fs::path& path, const std::string& key) {
   if (!fs::exists(path)) return std::nullopt;
-  const nlohmann::json j = nlohmann::json::parse(io::read_regular_file(path, "comparison"), nullptr,
-                                                 /*allow_exceptions=*/false);
+  const nlohmann::json j = io::parse_json_or_discarded(io::read_regular_file(path, "comparison"));
   if (j.is_discarded() || !j.is_object() || j.value("key", "") != key) return std::nullopt;
   try {
     return j.at("comparison").get<FrameComparison>();

@@ -1,6 +1,7 @@
 #include "driver/sweep_config_result.h"
 
 #include <fmt/format.h>
+#include <xxhash.h>
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +10,7 @@
 #include "driver/frame_passes.h"
 #include "gpu_model/sensitivity.h"
 #include "gpu_model/timing.h"
-#include "io/read_file.h"
+#include "io/json_input.h"
 #include "quality/metrics.h"
 
 namespace skinsim::driver {
@@ -17,10 +18,14 @@ namespace skinsim::driver {
 namespace {
 
 // 2: frame_ms_low/high, FLIP percentiles and visibility; 3: pass ms = share of the frame, the
-// pass schedule, dram_wait
-constexpr int kFormatVersion = 3;
+// pass schedule, dram_wait; 4: the images' digests
+constexpr int kFormatVersion = 4;
 
 }  // namespace
+
+std::string file_digest(std::string_view bytes) {
+  return fmt::format("xxh3-64:{:016x}", XXH3_64bits(bytes.data(), bytes.size()));
+}
 
 reports::ConfigResult config_row(const SweepConfig& config, const FrameResult& frame,
                                  const FrameQuality& quality, const std::string& frame_image,
@@ -124,15 +129,16 @@ nlohmann::json to_json(const StoredConfig& stored) {
                       {"fingerprint", stored.fingerprint},
                       {"row", stored.row},
                       {"sensitivity", stored.sensitivity},
-                      {"assumptions", stored.assumptions}};
+                      {"assumptions", stored.assumptions},
+                      {"files", stored.files}};
   if (stored.heatmap) j["heatmap"] = *stored.heatmap;
   return j;
 }
 
 std::optional<StoredConfig> read_stored_config(const std::filesystem::path& path) {
   if (!std::filesystem::exists(path)) return std::nullopt;
-  const nlohmann::json j = nlohmann::json::parse(io::read_regular_file(path, "stored sweep result"),
-                                                 nullptr, /*allow_exceptions=*/false);
+  const nlohmann::json j =
+      io::parse_json_or_discarded(io::read_regular_file(path, "stored sweep result"));
   if (j.is_discarded() || !j.is_object() || j.value("format", 0) != kFormatVersion) {
     return std::nullopt;
   }
@@ -142,6 +148,7 @@ std::optional<StoredConfig> read_stored_config(const std::filesystem::path& path
     s.row = j.at("row").get<reports::ConfigResult>();
     s.sensitivity = j.at("sensitivity").get<std::vector<reports::SensitivityRow>>();
     s.assumptions = j.at("assumptions").get<std::vector<std::string>>();
+    s.files = j.at("files").get<std::map<std::string, std::string>>();
     if (j.contains("heatmap")) s.heatmap = j["heatmap"].get<reports::TileHeatmap>();
     return s;
   } catch (const std::exception&) {

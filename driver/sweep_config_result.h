@@ -4,9 +4,11 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "driver/frame_job.h"
@@ -23,7 +25,14 @@ struct StoredConfig {
   std::optional<reports::TileHeatmap> heatmap;  // of the pass named kHeatmapPass, if it ran
   std::vector<reports::SensitivityRow> sensitivity;
   std::vector<std::string> assumptions;  // uncertain device figures, one sentence each
+  // Its images (relative to the sweep directory) and a digest of each as written
+  // (file_digest), so a resumed sweep or a merge tells a damaged one and computes it again.
+  std::map<std::string, std::string> files;
 };
+
+// "xxh3-64:<16 hex digits>" of a file's bytes (XXH3: fast enough to check every stored image
+// of a sweep on each resume; it tells damage apart, it does not resist forgery).
+std::string file_digest(std::string_view bytes);
 
 // The pass whose per-tile cost the report maps (the final skin shading, the costliest).
 inline constexpr const char* kHeatmapPass = "skin";

@@ -4,6 +4,7 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -144,7 +145,9 @@ void parse_report(const toml::table& report, const std::string& name, SweepSpec&
     const std::string at = where(name, node, "report." + k);
     if (k != "budget_ms") throw SweepError(at + ": unknown key (known: budget_ms)");
     spec.budget_ms = number(node, at);
-    if (!(spec.budget_ms > 0.0)) throw SweepError(at + ": must be > 0");
+    if (!std::isfinite(spec.budget_ms) || spec.budget_ms <= 0.0) {
+      throw SweepError(at + ": must be a finite number of milliseconds > 0");
+    }
   }
 }
 
@@ -161,6 +164,7 @@ SweepSpec parse_sweep_text(const std::string& text, const std::string& name,
   }
   SweepSpec spec;
   spec.fixed.push_back({"device", "ipad4", name + ": default device"});
+  const std::size_t first_fixed = spec.fixed.size();  // the file's own [fixed] knobs from here
   for (const auto& [key, node] : root) {
     const std::string k(key.str());
     const std::string at = where(name, node, k);
@@ -177,6 +181,8 @@ SweepSpec parse_sweep_text(const std::string& text, const std::string& name,
     }
   }
   if (spec.axes.empty()) throw SweepError(name + ": no [axes] given: nothing to sweep");
+  for (std::size_t i = first_fixed; i < spec.fixed.size(); ++i)
+    require_not_swept(spec, spec.fixed[i]);
   // Validate every value now, so a bad one is reported against this file before any work; a
   // sweep over the limit is validated value by value (counting canonicalises every value) and
   // refused by the command unless it raises the limit.

@@ -9,10 +9,8 @@
 
 #include "driver/reference_cache.h"
 #include "driver/sweep_spec.h"
-#include "io/atomic_file.h"
 #include "io/file_lock.h"
 #include "pipeline/reference/reference.h"
-#include "quality/image.h"
 #include "util/fingerprint.h"
 
 namespace skinsim::driver {
@@ -50,15 +48,26 @@ ReferenceImages cached_reference(const pipeline::GpuScene& scene,
       fmt::print(notes, "waiting for another process rendering {}\n", image_path.string());
     }
   });
-  ReferenceImages images;
-  if (std::optional<ReferenceImages> kept =
-          load_marked_reference(marker, marker_content, image_path, mask_path)) {
+  const auto note = [&](const std::string& where, const KeptReference& kept) {
+    if (notes && !kept.discarded.empty()) {
+      fmt::print(notes, "note: discarded the reference kept in {}: {}\n", where, kept.discarded);
+    }
+  };
+  KeptReference kept = load_marked_reference(marker, marker_content, resolved.width,
+                                             resolved.height, image_path, mask_path);
+  note(refs_dir.string(), kept);
+  if (kept.images) {
     found(ReferenceSource::kKept);
-    return std::move(*kept);
+    return std::move(*kept.images);
   }
-  std::optional<ReferenceImages> stored = store ? store->load(marker_content) : std::nullopt;
-  if (stored) {
-    images = std::move(*stored);
+  ReferenceImages images;
+  KeptReference stored;
+  if (store) {
+    stored = store->load(marker_content, resolved.width, resolved.height);
+    note("the reference store " + store->dir().string(), stored);
+  }
+  if (stored.images) {
+    images = std::move(*stored.images);
     found(ReferenceSource::kStore);
     if (notes) {
       fmt::print(notes, "reference {}x{}: reused from the reference store {}\n", resolved.width,
@@ -79,10 +88,8 @@ ReferenceImages cached_reference(const pipeline::GpuScene& scene,
     }
     found(ReferenceSource::kRendered);
   }
-  quality::save_png(images.image, image_path);
-  quality::save_mask_png(images.skin, mask_path);
-  io::write_file_atomically(marker.string(), marker_content.dump(2) + "\n");
-  if (store && !stored) {
+  save_marked_reference(marker_content, images, marker, image_path, mask_path);
+  if (store && !stored.images) {
     const std::string not_kept = store->keep(marker_content, images);
     if (notes && !not_kept.empty()) {
       fmt::print(notes, "note: the reference was not kept in the reference store {}: {}\n",

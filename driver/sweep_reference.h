@@ -25,8 +25,9 @@ std::string reference_stem(const pipeline::PipelineConfig& resolved, const nlohm
 // refs/<stem>.png, relative to the sweep directory (its skin mask: reference_mask_path).
 std::string reference_image_path(const std::string& stem);
 
-// Loads refs/<stem>.png and its skin mask from `refs_dir` if a complete cached copy exists,
-// else takes it from `store` (when given and holding it), else renders the reference with
+// Loads refs/<stem>.png and its skin mask from `refs_dir` if its marker vouches for it
+// (load_marked_reference: a damaged, replaced or planted copy is discarded with a note on
+// `notes`), else takes it from `store` (when given and holding it), else renders the reference with
 // `threads` host threads; the last two write it to `refs_dir` (atomically; the .json marker
 // last), and a rendered one is also kept in `store`. `source` (optional) tells which
 // happened. All paths give bit-identical images. Processes sharing `refs_dir` take turns

@@ -12,6 +12,7 @@ SweepReportOutcome write_sweep_report(reports::SweepTable& table, const std::str
   SweepReportOutcome outcome;
   if (table.rows.empty()) {
     finish_sweep_data(table, out_dir);
+    remove_stale_report(out_dir);
     outcome.note = "no finished configuration: no report";
     return outcome;
   }

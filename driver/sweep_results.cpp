@@ -92,6 +92,11 @@ void finish_sweep_data(reports::SweepTable& table, const std::string& out_dir) {
   write_sweep_data(table, out_dir);
 }
 
+void remove_stale_report(const std::string& out_dir) {
+  std::error_code ignored;  // none there: nothing stale
+  std::filesystem::remove(std::filesystem::path(out_dir) / "report.html", ignored);
+}
+
 void write_sweep_data(const reports::SweepTable& table, const std::string& out_dir) {
   const std::filesystem::path dir(out_dir);
   reports::write_sweep_json(table, (dir / "results.json").string());

@@ -35,6 +35,10 @@ reports::SweepTable assemble_sweep_table(const SweepSpec& spec,
 // table.panels), then writes the table (write_sweep_data).
 void finish_sweep_data(reports::SweepTable& table, const std::string& out_dir);
 
+// Removes out_dir/report.html (a sweep directory's, so skinsim wrote it): beside tables it
+// does not show (an interrupted sweep's, an empty merge's) it would show another sweep.
+void remove_stale_report(const std::string& out_dir);
+
 // out_dir/results.json and out_dir/results.csv, atomically.
 void write_sweep_data(const reports::SweepTable& table, const std::string& out_dir);
 

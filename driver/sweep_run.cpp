@@ -64,18 +64,35 @@ bool cancelled(const SweepRunOptions& o) {
   return o.cancel && o.cancel->load();
 }
 
-enum class Stored { kNone, kFinished, kForeign };
+enum class Stored { kNone, kFinished, kForeign, kDamaged };
 
-// Whether this configuration is finished in `dir`, or its id holds another sweep's result.
-Stored stored_state(const fs::path& dir, const Job& job) {
+// The first of a stored configuration's images that is missing or not the one it wrote
+// (truncated, replaced), or "".
+std::string damaged_image(const fs::path& dir, const Job& job, const StoredConfig& stored) {
+  for (const std::string& image :
+       {config_frame_path(job.config->id), config_error_path(job.config->id)}) {
+    const auto digest = stored.files.find(image);
+    try {
+      if (digest == stored.files.end() ||
+          file_digest(io::read_regular_file(dir / image, "image")) != digest->second) {
+        return image;
+      }
+    } catch (const io::InputError&) {
+      return image;
+    }
+  }
+  return "";
+}
+
+// Whether this configuration is finished in `dir`, damaged (an image missing or not the one
+// written: `damaged` names it), or its id holds another sweep's result.
+Stored stored_state(const fs::path& dir, const Job& job, std::string& damaged) {
   const std::optional<StoredConfig> stored =
       read_stored_config(dir / config_json_path(job.config->id));
   if (!stored) return Stored::kNone;
   if (stored->fingerprint != job.fingerprint) return Stored::kForeign;
-  return fs::exists(dir / config_frame_path(job.config->id)) &&
-                 fs::exists(dir / config_error_path(job.config->id))
-             ? Stored::kFinished
-             : Stored::kNone;
+  damaged = damaged_image(dir, job, *stored);
+  return damaged.empty() ? Stored::kFinished : Stored::kDamaged;
 }
 
 // Why a row cannot be stored, or "": a NaN or infinite figure would be written as JSON null,
@@ -104,6 +121,9 @@ void finish(const fs::path& dir, const Job& job, const FrameResult& frame, quali
         write_image_and_thumbnail(std::move(measured.error_map), dir, config_error_path(id));
       });
   StoredConfig stored;
+  for (const std::string& file : {config_frame_path(id), config_error_path(id)}) {
+    stored.files[file] = file_digest(io::read_regular_file(dir / file, "image"));
+  }
   stored.fingerprint = job.fingerprint;
   // config_row reads the metrics; the error map went into its PNG above.
   stored.row = config_row(*job.config, frame, measured, config_frame_path(id),
@@ -197,16 +217,36 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
     if (shard_of[index] != this_shard) continue;  // another shard's
     ++summary.this_part;
     status.configurations.push_back(c.id);
-    const Stored state = stored_state(dir, job);
+    std::string damaged;
+    const Stored state = stored_state(dir, job, damaged);
     if (state == Stored::kFinished) {
       ++summary.resumed;
       continue;
     }
     if (state == Stored::kForeign) foreign.insert(c.id);
+    if (state == Stored::kDamaged) {
+      // Its result goes with it: the tables and a merge then treat it as not yet computed,
+      // instead of failing on the image.
+      std::error_code ignored;
+      fs::remove(dir / config_json_path(c.id), ignored);
+      summary.warnings.push_back(fmt::format(
+          "configuration {}: {} is missing or not the image it wrote (damaged or replaced); {}",
+          c.id, damaged,
+          options.compute ? "computing it again" : "run its shard, or the sweep, again"));
+    }
     if (!options.compute || !ledger.empty()) {
       summary.left_by_shards.push_back({c.id, ledger.why_missing(index, c.id)});
     }
     if (options.compute) jobs.push_back(std::move(job));
+  }
+  if (options.shard && !foreign.empty()) {
+    // Shards share a directory: one of another sweep (another --set knob, scene, device or
+    // build) would replace the results the other sweep's shards are computing there.
+    throw SweepError(fmt::format(
+        "--shard {}: {} holds another sweep's results under {} of this shard's configuration "
+        "ids (e.g. {}): refusing to replace them from a shard; give this sweep its own --out, "
+        "or run it without --shard to replace them",
+        to_string(*options.shard), dir.string(), foreign.size(), *foreign.begin()));
   }
   if (options.shard) write_shard_status(dir, status);
 

@@ -11,8 +11,9 @@
 
 #include "driver/sweep_spec.h"
 #include "io/atomic_file.h"
-#include "io/read_file.h"
+#include "io/json_input.h"
 #include "io/temp_files.h"
+#include "util/text.h"
 
 namespace skinsim::driver {
 
@@ -22,6 +23,9 @@ namespace {
 
 // A shard count beyond any cluster array a sweep of kDefaultMaxConfigs could use.
 constexpr int kMaxShards = 100000;
+// A host name or state fits in this; a failure's reason is a message of a line or a few.
+constexpr std::size_t kMaxStatusText = 256;
+constexpr std::size_t kMaxReasonText = 2000;
 
 bool parse_int(std::string_view text, int& value) {
   const char* end = text.data() + text.size();
@@ -85,7 +89,12 @@ void write_shard_status(const fs::path& sweep_dir, const ShardStatus& status) {
                             {"host", status.host.empty() ? io::host_name() : status.host},
                             {"configurations", status.configurations},
                             {"failed", failed}};
-  fs::create_directories(sweep_dir / "shards");
+  std::error_code ec;
+  fs::create_directories(sweep_dir / "shards", ec);
+  if (ec) {
+    throw io::OutputError(fmt::format("cannot create {} (where shards keep their status): {}",
+                                      (sweep_dir / "shards").string(), ec.message()));
+  }
   io::write_file_atomically(status_path(sweep_dir, status.shard), j.dump(1) + "\n");
 }
 
@@ -98,16 +107,21 @@ std::vector<ShardStatus> read_shard_statuses(const fs::path& sweep_dir) {
   }
   for (const fs::path& file : files) {
     try {
-      const nlohmann::json j = nlohmann::json::parse(io::read_regular_file(file, "shard status"));
+      const nlohmann::json j = io::read_json_file(file, "shard status");
       ShardStatus s;
       s.shard = {j.at("shard").get<int>(), j.at("count").get<int>()};
-      s.state = j.at("state").get<std::string>();
-      s.host = j.at("host").get<std::string>();
+      // Printed in a merge's messages: no escape sequences, and not megabytes per configuration.
+      s.state = sanitized(j.at("state").get<std::string>(), kMaxStatusText);
+      s.host = sanitized(j.at("host").get<std::string>(), kMaxStatusText);
       s.configurations = j.at("configurations").get<std::vector<std::string>>();
       for (const nlohmann::json& f : j.at("failed")) {
-        s.failed.emplace_back(f.at("id").get<std::string>(), f.at("reason").get<std::string>());
+        s.failed.emplace_back(f.at("id").get<std::string>(),
+                              sanitized(f.at("reason").get<std::string>(), kMaxReasonText));
       }
-      if (s.shard.count >= 1 && s.shard.index >= 0 && s.shard.index < s.shard.count) {
+      // A count parse_shard refuses is a damaged file: the ledger would size its assignment by
+      // it (a hand-edited 200000000 took 1.5 GB).
+      if (s.shard.count >= 1 && s.shard.count <= kMaxShards && s.shard.index >= 0 &&
+          s.shard.index < s.shard.count) {
         statuses.push_back(std::move(s));
       }
     } catch (const std::exception&) {

@@ -102,6 +102,16 @@ SweepSpec default_sweep_spec() {
   return spec;
 }
 
+void require_not_swept(const SweepSpec& spec, const FixedKnob& fixed) {
+  for (const SweepAxis& axis : spec.axes) {
+    if (axis.knob == fixed.knob) {
+      throw SweepError(fmt::format(
+          "{}: {} is also swept ({}), which sets it in every configuration: drop one of the two",
+          fixed.origin, fixed.knob, axis.origin));
+    }
+  }
+}
+
 void set_axis(SweepSpec& spec, const std::string& knob, const std::vector<std::string>& values,
               const std::string& origin) {
   require_knob(knob, origin);

@@ -55,6 +55,10 @@ SweepSpec default_sweep_spec();
 void set_axis(SweepSpec& spec, const std::string& knob, const std::vector<std::string>& values,
               const std::string& origin);
 
+// Throws SweepError naming `fixed.origin` when its knob is also an axis of `spec`: the axis
+// would set it in every configuration, so the fixed value would be silently ignored.
+void require_not_swept(const SweepSpec& spec, const FixedKnob& fixed);
+
 // The knob names an axis or a fixed knob may use: config_field_names() and "device".
 std::vector<std::string> sweep_knob_names();
 

@@ -97,4 +97,19 @@ void write_file_atomically(const fs::path& path, std::string_view content) {
   }
 }
 
+void require_not_input(const fs::path& output, std::string_view option, const fs::path& input,
+                       std::string_view what) {
+  std::error_code ec;
+  // fs::equivalent compares device and inode of the files the paths resolve to.
+  if (!input.empty() && fs::equivalent(output, input, ec) && !ec) {
+    throw OutputError(fmt::format(
+        "{} {}: is also {} ({}); an output may not replace an input: choose another file", option,
+        output.string(), what, input.string()));
+  }
+}
+
+void replace_file_entry(const fs::path& path, std::string_view content) {
+  replace_atomically(path, path, content);
+}
+
 }  // namespace skinsim::io

@@ -25,4 +25,17 @@ class OutputError : public UserError {
 // - A directory (or socket, block device) is refused.
 void write_file_atomically(const std::filesystem::path& path, std::string_view content);
 
+// Writes `content` through a temporary in `path`'s directory renamed over the directory entry
+// `path`: whatever is there (a symlink included) is replaced, never followed or written
+// through, so a link planted in a shared directory (the reference store) cannot redirect the
+// write. Throws OutputError as above.
+void replace_file_entry(const std::filesystem::path& path, std::string_view content);
+
+// Throws OutputError "<option> <output>: is also <what> (<input>); ..." when `output` names the
+// file `input` names: the same file once symlinks are resolved, or another hard link to it
+// (the same device and inode). An input or output that does not exist is no clash. Checked
+// before any work, so that a command never replaces its own input.
+void require_not_input(const std::filesystem::path& output, std::string_view option,
+                       const std::filesystem::path& input, std::string_view what);
+
 }  // namespace skinsim::io

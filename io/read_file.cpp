@@ -61,11 +61,17 @@ void require_regular_file(const std::filesystem::path& path, std::string_view wh
   check_stat(st, path, what, max_bytes);
 }
 
-std::string read_regular_file(const std::filesystem::path& path, std::string_view what,
-                              std::uintmax_t max_bytes) {
+namespace {
+
+std::string read_opened(const std::filesystem::path& path, std::string_view what,
+                        std::uintmax_t max_bytes, int extra_flags) {
   // O_NONBLOCK: opening a FIFO with no writer would otherwise wait forever.
-  const Fd file{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)};
-  if (file.fd < 0) fail(what, path, std::strerror(errno));
+  const Fd file{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | extra_flags)};
+  if (file.fd < 0) {
+    // O_NOFOLLOW on a symlink fails with ELOOP, whose text ("too many levels") misleads.
+    fail(what, path,
+         (extra_flags & O_NOFOLLOW) && errno == ELOOP ? "is a symlink" : std::strerror(errno));
+  }
   struct stat st {};
   if (::fstat(file.fd, &st) != 0) fail(what, path, std::strerror(errno));
   check_stat(st, path, what, max_bytes);
@@ -94,6 +100,18 @@ std::string read_regular_file(const std::filesystem::path& path, std::string_vie
   }
   content.resize(filled);
   return content;
+}
+
+}  // namespace
+
+std::string read_regular_file(const std::filesystem::path& path, std::string_view what,
+                              std::uintmax_t max_bytes) {
+  return read_opened(path, what, max_bytes, 0);
+}
+
+std::string read_own_file(const std::filesystem::path& path, std::string_view what,
+                          std::uintmax_t max_bytes) {
+  return read_opened(path, what, max_bytes, O_NOFOLLOW);
 }
 
 }  // namespace skinsim::io

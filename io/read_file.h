@@ -33,6 +33,11 @@ void require_regular_file(const std::filesystem::path& path, std::string_view wh
 std::string read_regular_file(const std::filesystem::path& path, std::string_view what,
                               std::uintmax_t max_bytes = kMaxTextFileBytes);
 
+// read_regular_file of `path` itself: a symlink there is refused (O_NOFOLLOW), not followed.
+// For files in a shared directory that skinsim owns (the reference store).
+std::string read_own_file(const std::filesystem::path& path, std::string_view what,
+                          std::uintmax_t max_bytes = kMaxTextFileBytes);
+
 // "12.0 MiB", "512 bytes": sizes in messages.
 std::string format_bytes(std::uintmax_t bytes);
 

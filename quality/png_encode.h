@@ -26,4 +26,11 @@ struct EncodedPng {
 EncodedPng encode_png_u8(int width, int height, int channels, std::span<const std::uint8_t> data,
                          const std::string& what);
 
+struct Image;
+struct Mask;
+// The bytes save_png and save_mask_png (image.h) write, for a writer that places the file
+// itself (the reference store, which never follows a symlink: io::replace_file_entry).
+EncodedPng encode_png(const Image& image, const std::string& what);
+EncodedPng encode_mask_png(const Mask& mask, const std::string& what);
+
 }  // namespace skinsim::quality

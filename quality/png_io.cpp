@@ -115,6 +115,11 @@ void save_png(const Image& image, const std::filesystem::path& path) {
   write_png_u8(path, image.width, image.height, 3, to_rgb8(image));
 }
 
+EncodedPng encode_png(const Image& image, const std::string& what) {
+  check_pixel_count(image, what);
+  return encode_png_u8(image.width, image.height, 3, to_rgb8(image), what);
+}
+
 void save_png_and_round(Image& image, const std::filesystem::path& path) {
   check_pixel_count(image, path);
   write_png_u8(path, image.width, image.height, 3, to_rgb8(image, &image));
@@ -136,11 +141,23 @@ Mask load_mask_png(const std::filesystem::path& path) {
   return mask;
 }
 
-void save_mask_png(const Mask& mask, const std::filesystem::path& path) {
+namespace {
+
+std::vector<std::uint8_t> mask_bytes(const Mask& mask) {
   std::vector<std::uint8_t> bytes(mask.values.size());
   std::transform(mask.values.begin(), mask.values.end(), bytes.begin(),
                  [](std::uint8_t v) -> std::uint8_t { return v != 0 ? 255 : 0; });
-  write_png_u8(path, mask.width, mask.height, 1, bytes);
+  return bytes;
+}
+
+}  // namespace
+
+void save_mask_png(const Mask& mask, const std::filesystem::path& path) {
+  write_png_u8(path, mask.width, mask.height, 1, mask_bytes(mask));
+}
+
+EncodedPng encode_mask_png(const Mask& mask, const std::string& what) {
+  return encode_png_u8(mask.width, mask.height, 1, mask_bytes(mask), what);
 }
 
 void write_png_u8(const std::filesystem::path& path, int width, int height, int channels,

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "io/atomic_file.h"
+#include "io/json_input.h"
 #include "io/read_file.h"
 #include "reports/error.h"
 
@@ -534,12 +535,7 @@ void write_sweep_json(const SweepTable& table, const std::string& path) {
 
 SweepTable read_sweep_json(const std::string& path) {
   const std::string text = io::read_regular_file(path, "sweep results");
-  json j;
-  try {
-    j = json::parse(text);
-  } catch (const json::parse_error& e) {
-    throw ReportError(path + ": not valid JSON: " + e.what());
-  }
+  const json j = io::parse_json(text, "sweep results", path);
   try {
     return j.get<SweepTable>();
   } catch (const ReportError& e) {

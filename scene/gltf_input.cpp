@@ -10,10 +10,10 @@
 #include <string_view>
 #include <vector>
 
+#include "io/json_input.h"
 #include "io/read_file.h"
 #include "scene/error.h"
 #include "scene/gltf_materials.h"
-#include "scene/json_depth.h"
 #include "util/fingerprint.h"
 
 namespace skinsim::scene::gltf {
@@ -64,10 +64,10 @@ std::string_view glb_json_chunk(const std::string& bytes, const std::string& pat
 }
 
 void check_depth(std::string_view json, const std::string& path) {
-  if (auto at = find_nesting_beyond(json, kMaxJsonDepth)) {
+  if (auto at = io::find_nesting_beyond(json, io::kMaxJsonDepth)) {
     fail(path, fmt::format("JSON nests deeper than {} levels (at JSON byte {}); real glTF files "
                            "nest fewer than 20",
-                           kMaxJsonDepth, *at));
+                           io::kMaxJsonDepth, *at));
   }
 }
 

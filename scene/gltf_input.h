@@ -1,7 +1,7 @@
 // Reads a .gltf or .glb into a tinygltf::Model without trusting it. Before tinygltf sees the
 // file: the file and every external buffer/image it names must be a regular file of at most
 // kMaxGltfInputBytes (a FIFO, directory or /dev/zero is refused, not read), a GLB's header and
-// chunk lengths must agree with the file, and the JSON may nest at most kMaxJsonDepth levels.
+// chunk lengths must agree with the file, and the JSON may nest at most io::kMaxJsonDepth levels.
 // Every failure throws SceneError starting with the glTF file's path.
 #pragma once
 

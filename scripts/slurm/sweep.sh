@@ -32,7 +32,10 @@
 set -euo pipefail
 
 prog=${0##*/}
-script_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+# Paths are made absolute with realpath, not `cd DIR && pwd`: cd obeys an exported CDPATH (and
+# then prints the directory it found, which the substitution would capture) and treats '-' as
+# the previous directory.
+script_dir=$(dirname -- "$(realpath -e -- "${BASH_SOURCE[0]}")")
 
 usage() { sed -n '2,/^set -euo/p' "${BASH_SOURCE[0]}" | sed '$d; s/^# \{0,1\}//'; }
 die_usage() {
@@ -104,6 +107,11 @@ done
 
 [[ -n "$shards" ]] || die_usage "--shards N is required"
 [[ "$shards" =~ ^[1-9][0-9]*$ ]] || die_usage "--shards: '$shards' is not a positive integer"
+# skinsim's own limit (--shard K/N), checked by length first: bash arithmetic wraps at 2^63.
+max_shards=100000
+if ((${#shards} > ${#max_shards})) || ((shards > max_shards)); then
+  die_usage "--shards: $shards is more than the $max_shards shards skinsim accepts"
+fi
 [[ -n "$out" ]] || die_usage "--out DIR is required"
 if [[ -n "$cpus" && ! "$cpus" =~ ^[1-9][0-9]*$ ]]; then
   die_usage "--cpus-per-task: '$cpus' is not a positive integer"
@@ -127,7 +135,7 @@ if [[ -z "$skinsim" ]]; then
   fi
 fi
 [[ -f "$skinsim" && -x "$skinsim" ]] || die_usage "--skinsim: '$skinsim' is not an executable file"
-skinsim=$(cd "$(dirname "$skinsim")" && pwd)/$(basename "$skinsim")
+skinsim=$(realpath -e -- "$skinsim")
 
 # The shards share DIR; --threads follows the CPUs Slurm gives each task, unless the sweep
 # arguments already set it.
@@ -143,8 +151,16 @@ for tool in sbatch scontrol scancel; do
   command -v "$tool" >/dev/null 2>&1 || die "'$tool' not found: is this a Slurm submit host?"
 done
 
-mkdir -p "$out"
-out=$(cd "$out" && pwd)
+mkdir -p -- "$out"
+out=$(realpath -e -- "$out")
+# The logs below go into DIR, so claim it as a sweep's first, as skinsim would
+# (docs/outputs.md: a command writes only into an empty directory or one of its own kind).
+marker=$out/.skinsim-output
+if [[ -z "$(ls -A -- "$out")" ]]; then
+  printf '{"kind":"sweep"}\n' >"$marker"
+elif ! grep -qs '"kind":"sweep"' "$marker"; then
+  die_usage "--out $out: is not empty and not a skinsim sweep directory (no .skinsim-output marker): choose another --out"
+fi
 log_dir=$out/slurm
 mkdir -p "$log_dir"
 

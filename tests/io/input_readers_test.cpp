@@ -11,10 +11,15 @@
 #include "budget/baseline_file.h"
 #include "budget/budget_file.h"
 #include "budget/device_fingerprint.h"
+#include "driver/run_compare.h"
+#include "driver/sweep_config_result.h"
 #include "driver/sweep_file.h"
+#include "driver/sweep_shard.h"
 #include "gpu_model/profile_loader.h"
+#include "io/json_input.h"
 #include "reports/sweep_table.h"
 #include "scratch_dir.h"
+#include "util/text.h"
 #include "util/user_error.h"
 
 namespace skinsim::io {
@@ -105,6 +110,88 @@ INSTANTIATE_TEST_SUITE_P(AllReaders, InputReaders,
                            return std::string(std::get<0>(test_info.param).name) + "_" +
                                   std::get<1>(test_info.param).name;
                          });
+
+// Every JSON input skinsim reads, against text nested far deeper than any real one: a clear
+// error naming the file (or, for readers of skinsim's own caches, "no copy"), never a stack
+// overflow in the parser or in the recursive code that later walks the tree.
+struct JsonReader {
+  const char* name;
+  std::function<void(const fs::path&)> read;  // throws UserError, or returns when it ignores it
+  bool refuses;                               // throws, rather than treating it as absent
+};
+
+const JsonReader kJsonReaders[] = {
+    {"baseline", [](const fs::path& p) { budget::load_baseline(p); }, true},
+    {"sweep_results", [](const fs::path& p) { reports::read_sweep_json(p.string()); }, true},
+    {"run_result",
+     [](const fs::path& p) { driver::compare_outputs(p.parent_path(), p.parent_path(), {}, {}); },
+     true},
+    {"stored_config", [](const fs::path& p) { EXPECT_FALSE(driver::read_stored_config(p)); },
+     false},
+    {"shard_status",
+     [](const fs::path& p) {
+       fs::create_directories(p.parent_path() / "shards");
+       fs::copy_file(p, p.parent_path() / "shards" / "shard-0-of-1.json");
+       EXPECT_TRUE(driver::read_shard_statuses(p.parent_path()).empty());
+     },
+     false},
+};
+
+void PrintTo(const JsonReader& reader, std::ostream* os) {
+  *os << reader.name;
+}
+
+class DeepJson : public ::testing::TestWithParam<JsonReader> {};
+
+TEST_P(DeepJson, IsRefusedOrIgnoredNeverACrash) {
+  const fs::path dir = testing::make_scratch_dir();
+  const fs::path path = dir / "result.json";
+  std::ofstream(path) << std::string(100000, '[') << std::string(100000, ']');
+  try {
+    GetParam().read(path);
+    EXPECT_FALSE(GetParam().refuses) << GetParam().name << " accepted it";
+  } catch (const UserError& e) {
+    EXPECT_TRUE(GetParam().refuses) << e.what();
+    EXPECT_NE(std::string(e.what()).find("nests deeper than 64"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(path.string()), std::string::npos) << e.what();
+  }
+  fs::remove_all(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(AllJsonReaders, DeepJson, ::testing::ValuesIn(kJsonReaders),
+                         [](const auto& test_info) { return std::string(test_info.param.name); });
+
+TEST(JsonInput, NestingUpToTheBoundIsRead) {
+  const std::string deepest = std::string(kMaxJsonDepth, '[') + std::string(kMaxJsonDepth, ']');
+  EXPECT_NO_THROW(parse_json(deepest, "test", "deepest"));
+  EXPECT_THROW(parse_json("[" + deepest + "]", "test", "deeper"), InputError);
+  EXPECT_TRUE(parse_json_or_discarded("[" + deepest + "]").is_discarded());
+  EXPECT_THROW(parse_json("{garbage", "test", "garbage"), InputError);
+}
+
+// Text from files a user may edit, printed: no control character reaches the terminal, and
+// a long one is cut at a character boundary, saying how long it was.
+TEST(Sanitized, StripsControlCharactersAndCapsTheLength) {
+  struct Case {
+    std::string in;
+    std::size_t max;
+    std::string out;
+  };
+  const Case cases[] = {
+      {"node4", 256, "node4"},
+      {"a\x1b[31mred\x07", 256, "a?[31mred?"},
+      {"tab\tnl\ncr\rdel\x7f", 256, "tab?nl?cr?del?"},
+      {"csi\xc2\x9b"
+       "31m",
+       256, "csi?31m"},                                 // U+009B, C1 CSI in UTF-8
+      {"\xc3\xa9t\xc3\xa9", 256, "\xc3\xa9t\xc3\xa9"},  // other UTF-8 kept
+      {"abcdef", 3, "abc... (6 bytes)"},
+      {"a\xc3\xa9"
+       "b",
+       2, "a... (4 bytes)"},  // not cut inside the two-byte \xc3\xa9
+  };
+  for (const Case& c : cases) EXPECT_EQ(sanitized(c.in, c.max), c.out) << c.in;
+}
 
 }  // namespace
 }  // namespace skinsim::io

@@ -16,9 +16,9 @@
 #include <string>
 #include <vector>
 
+#include "io/json_input.h"
 #include "scene/error.h"
 #include "scene/gltf_loader.h"
-#include "scene/json_depth.h"
 #include "tests/scene/gltf_fixture.h"
 
 namespace skinsim::scene {
@@ -336,7 +336,7 @@ INSTANTIATE_TEST_SUITE_P(Inputs, AdversarialGltf, ::testing::ValuesIn(cases()),
                          [](const auto& param_info) { return std::string(param_info.param.name); });
 
 TEST(JsonDepth, CountsOnlyBracketsOutsideStrings) {
-  using gltf::find_nesting_beyond;
+  using io::find_nesting_beyond;
   EXPECT_FALSE(find_nesting_beyond("[[1]]", 2));
   EXPECT_EQ(find_nesting_beyond("[[[1]]]", 2), 2u);
   EXPECT_EQ(find_nesting_beyond("{\"a\":{\"b\":[", 2), 10u);
