@@ -38,12 +38,14 @@ struct TextureCounters {
     cache_misses += o.cache_misses;
     dram_bytes += o.dram_bytes;
   }
+  bool operator==(const TextureCounters&) const = default;
 };
 
 // Fragments one draw (one shader program) shaded in one tile.
 struct DrawFragments {
   std::uint32_t draw = 0;  // index into PassCounters::draws
   std::uint64_t fragments_shaded = 0;
+  bool operator==(const DrawFragments&) const = default;
 };
 
 enum class TileCoverage : std::uint8_t { kEmpty = 0, kPartial = 1, kFull = 2 };
@@ -64,6 +66,7 @@ struct TileCounters {
   std::uint64_t color_store_bytes = 0;  // tile memory -> DRAM at tile end (resolve)
   std::uint64_t depth_load_bytes = 0;
   std::uint64_t depth_store_bytes = 0;
+  bool operator==(const TileCounters&) const = default;
 };
 
 // One draw call as the GPU saw it.
@@ -76,8 +79,10 @@ struct DrawCounters {
   std::uint64_t vertices_shaded = 0;
   std::uint64_t triangles_in = 0;
   std::uint64_t fragments_shaded = 0;
+  bool operator==(const DrawCounters&) const = default;
 };
 
+// Equality (defaulted, every field) is what tests of determinism and replay compare.
 struct PassCounters {
   std::string name;
   int width = 0;
@@ -115,6 +120,7 @@ struct PassCounters {
 
   std::vector<DrawCounters> draws;
   std::vector<TileCounters> tiles;  // row-major, tiles_x * tiles_y (outside render area: empty)
+  bool operator==(const PassCounters&) const = default;
 };
 
 }  // namespace skinsim::sim

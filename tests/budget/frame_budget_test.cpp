@@ -69,11 +69,23 @@ TEST_F(FrameBudget, MeasurementIsIdenticalForAnyThreadCount) {
   EXPECT_GT(one.measurement.metrics.at("skin.alu_ops"), 0.0);
 }
 
-TEST_F(FrameBudget, UnchangedFramePassesItsOwnBaseline) {
+// The limits are "<= baseline * 1.05": the same frame against a baseline it is 4% above
+// passes both, and against one it is 6% above fails both.
+TEST_F(FrameBudget, AFrameWithinItsToleranceOfTheBaselinePasses) {
   const Measurement m = measure_frame(*frame_);
-  const BaselineEntry base{"ipad4", "h", "", m.metrics};
-  for (const LimitResult& r : evaluate_budget("small.toml", file_->budgets.at(0), m, &base)) {
-    EXPECT_TRUE(r.passed) << r.limit.metric;
+  const auto baseline_below = [&](double factor) {
+    BaselineEntry base{"ipad4", "h", "", m.metrics};
+    for (auto& [metric, value] : base.metrics) value /= factor;
+    return base;
+  };
+  const BaselineEntry four = baseline_below(1.04), six = baseline_below(1.06);
+  const auto within = evaluate_budget("small.toml", file_->budgets.at(0), m, &four);
+  const auto beyond = evaluate_budget("small.toml", file_->budgets.at(0), m, &six);
+  ASSERT_EQ(within.size(), 2u);
+  ASSERT_EQ(beyond.size(), 2u);
+  for (std::size_t i = 0; i < within.size(); ++i) {
+    EXPECT_TRUE(within[i].passed) << within[i].limit.metric << ": " << within[i].message;
+    EXPECT_FALSE(beyond[i].passed) << beyond[i].limit.metric;
   }
 }
 

@@ -82,14 +82,31 @@ TEST(ResultValues, CountersAreExactAndModelledValuesHaveATolerance) {
   EXPECT_EQ(d.moved[0].name, "timing.frame_ms");
 }
 
-TEST(RunCompare, SameRunIsTheSame) {
+// Two runs made alike are the same; one fragment more, or one pixel a step of 8 bits
+// brighter, is not identical (the pixel is below FLIP's visibility, so not a verdict).
+TEST(RunCompare, EqualRunsAreTheSameAndOneCountOrPixelApartAreNot) {
   const fs::path a = make_run("same_a", result(2.0, 100.0, "8x32"));
-  const reports::Comparison c = compare_outputs(a, a, {}, {});
+  const fs::path b = make_run("same_b", result(2.0, 100.0, "8x32"));
+  const reports::Comparison c = compare_outputs(a, b, {}, {});
   EXPECT_EQ(c.kind, "run");
   EXPECT_FALSE(c.different());
   EXPECT_TRUE(c.changes.empty());
   ASSERT_TRUE(c.configs.at(0).image);
   EXPECT_TRUE(c.configs[0].image->identical);
+
+  const fs::path count = make_run("same_count", result(2.0, 101.0, "8x32"));
+  const reports::Comparison counted = compare_outputs(a, count, {}, {});
+  EXPECT_TRUE(counted.different());
+  ASSERT_EQ(counted.configs.at(0).moved.size(), 1u);
+  EXPECT_EQ(counted.configs[0].moved[0].name, "counters.skin.renderer.fragments_shaded");
+
+  const fs::path pixel = make_run("same_pixel", result(2.0, 100.0, "8x32"));
+  quality::Image frame = quality::Image::filled(64, 64, glm::vec3(0.4f));
+  frame.at(30, 30) = glm::vec3(0.4f + 1.0f / 255.0f);
+  quality::save_png(frame, pixel / "frame.png");
+  const reports::Comparison pixelled = compare_outputs(a, pixel, {}, {});
+  ASSERT_TRUE(pixelled.configs.at(0).image);
+  EXPECT_FALSE(pixelled.configs[0].image->identical);
 }
 
 TEST(RunCompare, OneKnobNamedWhatMovedAndTheFramesVerdictWithCrops) {

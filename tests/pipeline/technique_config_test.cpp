@@ -5,9 +5,14 @@
 #include <algorithm>
 #include <map>
 #include <set>
+#include <sstream>
+#include <stdexcept>
 
 #include "pipeline/config.h"
+#include "pipeline/shader_catalog.h"
 #include "pipeline/technique.h"
+#include "sim/counters.h"
+#include "tests/pipeline/small_frames.h"
 
 namespace skinsim::pipeline {
 namespace {
@@ -81,12 +86,88 @@ TEST(TechniqueConfig, TechniqueKnobsAreKnownKeysOwnedByOneTechniqueOrSharedAsOne
   EXPECT_EQ(std::set<std::string>(names.begin(), names.end()).size(), names.size());
 }
 
+// TechniqueSpec::passes written out: "uv_blur_{1..2}_{h,v}" is uv_blur_1_h, uv_blur_1_v,
+// uv_blur_2_h, uv_blur_2_v (the shell's brace expansion, leftmost slowest).
+std::vector<std::string> expand_passes(const std::string& passes) {
+  std::vector<std::string> items = {""};  // split at the commas outside braces
+  int depth = 0;
+  for (const char c : passes) {
+    depth += c == '{' ? 1 : c == '}' ? -1 : 0;
+    if (c == ',' && depth == 0) {
+      items.emplace_back();
+    } else if (c != ' ') {
+      items.back() += c;
+    }
+  }
+  std::vector<std::string> out;
+  for (const std::string& item : items) {
+    std::vector<std::string> names = {""};
+    std::size_t at = 0;
+    while (at < item.size()) {
+      const std::size_t open = item.find('{', at);
+      const std::string text = item.substr(at, open == std::string::npos ? open : open - at);
+      for (std::string& n : names) n += text;
+      if (open == std::string::npos) break;
+      const std::size_t close = item.find('}', open);
+      if (close == std::string::npos) throw std::invalid_argument("no } in '" + item + "'");
+      const std::string inner = item.substr(open + 1, close - open - 1);
+      std::vector<std::string> choices;
+      if (const std::size_t dots = inner.find(".."); dots != std::string::npos) {
+        for (int i = std::stoi(inner.substr(0, dots)); i <= std::stoi(inner.substr(dots + 2));
+             ++i) {
+          choices.push_back(std::to_string(i));
+        }
+      } else {
+        std::stringstream alternatives(inner);
+        for (std::string a; std::getline(alternatives, a, ',');) choices.push_back(a);
+      }
+      std::vector<std::string> grown;
+      for (const std::string& n : names) {
+        for (const std::string& c : choices) grown.push_back(n + c);
+      }
+      names = std::move(grown);
+      at = close + 1;
+    }
+    out.insert(out.end(), names.begin(), names.end());
+  }
+  return out;
+}
+
+TEST(TechniqueConfig, PassListsExpandLikeTheShell) {
+  EXPECT_EQ(expand_passes("a, b_{1..2}_{h,v}, c"),
+            (std::vector<std::string>{"a", "b_1_h", "b_1_v", "b_2_h", "b_2_v", "c"}));
+}
+
+// Each technique's frame renders the passes its spec lists (after the frame's shadow pass,
+// which every technique shares) and runs only programs `skinsim shaders` lists for it.
 TEST(TechniqueConfig, EveryTechniqueRendersThroughItsSpec) {
+  const std::vector<CatalogEntry> catalog = shader_catalog();
   for (const TechniqueSpec* t : all_techniques()) {
-    EXPECT_NE(t->render, nullptr) << t->name;
-    EXPECT_FALSE(t->shaders().empty()) << t->name;
-    EXPECT_FALSE(t->summary.empty()) << t->name;
     EXPECT_EQ(&find_technique(t->name), t);
+    EXPECT_FALSE(t->summary.empty()) << t->name;
+    ASSERT_NE(t->render, nullptr) << t->name;
+    const FrameOutput out = testing::render(testing::small_config(t->name));
+    std::vector<std::string> rendered;
+    for (const sim::PassCounters& p : out.passes) rendered.push_back(p.name);
+    ASSERT_FALSE(rendered.empty()) << t->name;
+    EXPECT_EQ(rendered.front(), "shadow") << t->name;
+    rendered.erase(rendered.begin());
+    EXPECT_EQ(rendered, expand_passes(t->passes)) << t->name;
+
+    std::set<std::string> listed;  // in `skinsim shaders` as run by this technique
+    for (const CatalogEntry& e : catalog) {
+      if (std::count(e.techniques.begin(), e.techniques.end(), t->name)) {
+        listed.insert(e.program.name);
+      }
+    }
+    for (const sim::PassCounters& p : out.passes) {
+      if (p.name == "shadow") continue;  // the frame's, with its own depth-only programs
+      for (const sim::DrawCounters& d : p.draws) {
+        for (const std::string& program : {d.vertex_program, d.fragment_program}) {
+          EXPECT_TRUE(listed.count(program)) << t->name << " ran " << program << " in " << p.name;
+        }
+      }
+    }
   }
   EXPECT_THROW(find_technique("sss"), ConfigError);
 }

@@ -8,6 +8,7 @@
 #include "pipeline/lighting.h"
 #include "pipeline/shader_variants.h"
 #include "pipeline/shaders/blur.h"
+#include "pipeline/shaders/screen_diffusion.h"
 #include "pipeline/techniques/screen_diffusion_passes.h"
 
 namespace skinsim::pipeline {
@@ -96,7 +97,8 @@ std::vector<sim::NamedProfile> ssao_programs(int taps) {
   const shaders::SsaoUniforms u = ssao_uniforms(taps);
   return {vertex_entry<shaders::PositionNormalVS>(), fragment_entry<shaders::DepthNormalFS>(),
           fragment_entry<shaders::SsaoFS>(u),        fragment_entry<shaders::SsaoOrthoFS>(u),
-          vertex_entry<shaders::BlurVS>(),           fragment_entry<shaders::BlurFS>()};
+          vertex_entry<shaders::QuadVS>(),           vertex_entry<shaders::BlurVS>(),
+          fragment_entry<shaders::BlurFS>()};
 }
 
 }  // namespace skinsim::pipeline

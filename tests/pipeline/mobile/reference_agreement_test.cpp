@@ -33,6 +33,7 @@ TEST_P(FlatPatch, MatchesThePipeline) {
       const glm::vec3 a(f.frame.at(x, y)), b(ref.frame.at(x, y));
       ASSERT_NEAR(a.r, b.r, 3.0f / 255) << x << "," << y;
       ASSERT_NEAR(a.g, b.g, 3.0f / 255) << x << "," << y;
+      ASSERT_NEAR(a.b, b.b, 3.0f / 255) << x << "," << y;
       ++compared;
     }
   }
@@ -46,7 +47,7 @@ INSTANTIATE_TEST_SUITE_P(ReferenceAgreement, FlatPatch,
                            return std::string(reference_profile_name(p.param));
                          });
 
-TEST(ReferenceAgreement, HeadQualityIsHighButNotPerfect) {
+TEST(ReferenceAgreement, HeadQualityIsWhereItWasMeasured) {
   const scene::Scene s = testing::small_head();
   const GpuScene gs(s);
   PipelineConfig c;
@@ -56,10 +57,10 @@ TEST(ReferenceAgreement, HeadQualityIsHighButNotPerfect) {
   const FrameOutput f = render_frame(gs, c, gpu);
   const driver::ReferenceImages ref = driver::reference_images(render_reference(gs, c, 0));
   const driver::FrameQuality q = driver::evaluate_quality(driver::to_image(f.frame), ref);
-  EXPECT_GT(q.metrics.at("ssim_skin"), 0.9);
-  EXPECT_LT(q.metrics.at("ssim_skin"), 1.0);
-  EXPECT_GT(q.metrics.at("flip_skin"), 0.0);
-  EXPECT_LT(q.metrics.at("flip_skin"), 0.3);
+  // Measured: SSIM 0.9759 and FLIP 0.0808 over the skin. The margins (0.005, 10% of FLIP)
+  // let the frame move a little; a change that moves it more updates these, saying why.
+  EXPECT_NEAR(q.metrics.at("ssim_skin"), 0.9759, 0.005);
+  EXPECT_NEAR(q.metrics.at("flip_skin"), 0.0808, 0.008);
 }
 
 // The dipole technique is judged closer to the ground truth with its own profile (Jensen's
