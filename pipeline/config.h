@@ -86,11 +86,13 @@ struct PipelineConfig {
   std::optional<float> camera_distance_m;    // camera to the skin's centre
   float camera_yaw_deg = 0.0f;               // camera orbit around the skin's centre
 
-  // The key light's shadow map (pipeline/shadow_map.h) and transmission (shaders/lights.h).
+  // The key light's shadow map (pipeline/frame_lights.h) and transmission (shaders/lights.h).
   bool shadows = true;
   int shadow_map_size = 1024;
   ShadowFilter shadow_filter = ShadowFilter::kPcf2x2;
-  int shadow_taps = 1;
+  // Four filtered fetches: with one, a grazing receiver shows the map's texel steps (5-10 px
+  // at 2048x1536 across the lips; docs/techniques.md, Light).
+  int shadow_taps = 4;
   sim::TexelFormat shadow_depth = sim::TexelFormat::kDepth16;
   std::optional<glm::vec3> shadow_tint;  // light left in full shadow per channel; unset: none
   bool transmission = true;

@@ -44,7 +44,7 @@ struct LightVaryings {
 };
 
 // The defaults of LightVertexUniforms and LightUniforms are what the default knobs give on
-// the built-in scene (shadows with one fetch, a back light, transmission): the programs'
+// the built-in scene (shadows with four fetches, a back light, transmission): the programs'
 // default profiles in `skinsim shaders`. FrameLights sets every field for a frame.
 
 // What a vertex shader needs to feed LightVaryings.
@@ -75,7 +75,7 @@ struct LightUniforms {
   glm::vec3 ambient{0.0f};
 
   bool shadows = true;
-  int shadow_taps = 1;
+  int shadow_taps = 4;
   std::array<glm::vec2, kMaxShadowTaps> shadow_offsets{};  // uv, tap 0 is (0, 0)
   bool shadow_tinted = false;
   glm::vec3 shadow_tint{0.0f};

@@ -19,10 +19,12 @@ using testing::skin_draw;
 
 constexpr const char* kAnalytic[] = {"ks", "ggx", "dual_ggx"};
 
-// The key light alone (no back light), so that one BRDF LUT read is the whole specular.
+// The key light alone (no back light), so that one BRDF LUT read is the whole specular, and
+// one shadow tap (its only read from a varying), so that the LUT read is the only dependent one.
 PipelineConfig small_config(const std::string& technique) {
   PipelineConfig c = testing::small_config(technique);
   set_config_field(c, "back_light", "0");
+  set_config_field(c, "shadow_taps", "1");
   return c;
 }
 
