@@ -76,8 +76,14 @@ void add_scene_options(CLI::App& cmd, driver::SceneSource& s) {
                  "extras.skinsim.kind, else a name containing 'skin'")
       ->delimiter(',');
   cmd.add_option("--units-per-mm", s.units_per_mm,
-                 "World units per millimetre of the scene (default: glTF metres, 0.001)")
+                 "World units per millimetre of the scene (default: glTF's metres, 0.001, when "
+                 "they give a plausible head; else sized from the head's crown-to-chin height "
+                 "as a 225 mm head)")
       ->check(positive_real(driver::kMaxUnitsPerMm));
+  cmd.add_option("--skin-albedo", s.skin_albedo,
+                 "Skin colour of a scan: sRGB r,g,b (0-255; e.g. 194,150,130, the ColorChecker's "
+                 "'light skin') or an image (sRGB, on the skin's TEXCOORD_0); default: the "
+                 "file's base colour");
 }
 
 KnobAssignment parse_knob_assignment(const std::string& text, const std::string& option) {

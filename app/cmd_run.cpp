@@ -111,6 +111,7 @@ int run(const RunOptions& o) {
 
   nlohmann::json json = driver::frame_result_json(result, o.scene.label());
   json["device"] = device.name;
+  json["scene_scale"] = driver::scene_scale_json(frame_job.gpu_scene->scene());
   if (frame_job.quality) {
     quality::save_png(frame_job.reference->image, out / driver::kRunReferenceImage);
     const std::string mask = driver::reference_mask_path(driver::kRunReferenceImage);
@@ -158,6 +159,11 @@ int run(const RunOptions& o) {
   fmt::print("skinsim run: {} with {} on {} ({}), {}x{}{}{}\n", o.scene.label(), config.technique,
              device.name, device.gpu, config.width, config.height, knobs.empty() ? "" : ", ",
              fmt::join(knobs, ", "));
+  if (!o.scene.builtin()) {
+    const nlohmann::json& scale = json["scene_scale"];
+    fmt::print("scene scale: {:.4g} units/mm ({}); {}\n", scale["units_per_mm"].get<double>(),
+               scale["source"].get<std::string>(), scale["summary"].get<std::string>());
+  }
   fmt::print("{}", gpu_model::format_frame_table(result.timing));
   fmt::print("range {:.3f} to {:.3f} ms over the profile's {} uncertain figures together{}\n",
              result.range.low, result.range.high, result.range.figures,

@@ -104,6 +104,7 @@ driver::SweepSpec build_spec(const SweepOptions& o, const CLI::App& cmd) {
     if (cmd.get_option("--skin-materials")->count())
       spec.scene.skin_materials = o.scene.skin_materials;
     if (cmd.get_option("--units-per-mm")->count()) spec.scene.units_per_mm = o.scene.units_per_mm;
+    if (cmd.get_option("--skin-albedo")->count()) spec.scene.skin_albedo = o.scene.skin_albedo;
   }
   if (o.budget_ms > 0.0) spec.budget_ms = o.budget_ms;
   return spec;

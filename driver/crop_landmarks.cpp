@@ -1,9 +1,12 @@
 #include "driver/crop_landmarks.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <string>
 
 namespace skinsim::driver {
 
@@ -100,21 +103,45 @@ float luminance(const glm::vec3& c) {
   return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;  // ITU-R BT.709 weights
 }
 
-// The reddest interior skin (red minus green, display values) in the lower half of the skin's
-// box, within its middle third across: lips are the most saturated red on a face.
-std::optional<Landmark> lips(const quality::Image& ref, const Box& box, const InteriorTest& in) {
+// Redness independent of how brightly the skin is lit: (red - green) / (red + green + blue).
+float redness(const glm::vec3& c) {
+  const float sum = c.r + c.g + c.b;
+  return sum > 0.0f ? (c.r - c.g) / sum : 0.0f;
+}
+
+// The reddest interior skin in the lower half of the skin's box, within its middle third
+// across: lips are the most saturated red on a face; on skin of one colour, the mouth's crease
+// reddened by diffusion. Only when it is redder than the region's median skin by kLipRedness:
+// a face lit without any red shows none.
+std::optional<Landmark> lips(const quality::Image& ref, const Box& box, const InteriorTest& in,
+                             std::vector<std::string>& not_found) {
   std::optional<Landmark> best;
   float best_red = 0.0f;
+  std::vector<float> reds;
   const int third = (box.x1 - box.x0) / 3;
   for (int y = (box.y0 + box.y1) / 2; y <= box.y1; ++y) {
     for (int x = box.x0 + third; x <= box.x1 - third; ++x) {
       if (!in(x, y)) continue;
-      const glm::vec3& c = ref.at(x, y);
-      if (c.r - c.g > best_red) {
-        best_red = c.r - c.g;
+      const float red = redness(ref.at(x, y));
+      reds.push_back(red);
+      if (!best || red > best_red) {
+        best_red = red;
         best = Landmark{"the lips (the reddest skin in the lower middle of the face)", x, y};
       }
     }
+  }
+  if (!best) {
+    not_found.push_back("the lips: not found (no skin in the lower middle of the frame)");
+    return best;
+  }
+  const auto mid = reds.begin() + static_cast<std::ptrdiff_t>(reds.size() / 2);
+  std::nth_element(reds.begin(), mid, reds.end());
+  if (best_red - *mid < kLipRedness) {
+    not_found.push_back(fmt::format(
+        "the lips: not found (the reddest skin in the lower middle of the frame is only {:.3f} "
+        "redder than its median, under the {} lips show)",
+        best_red - *mid, kLipRedness));
+    return std::nullopt;
   }
   return best;
 }
@@ -154,8 +181,10 @@ std::optional<Landmark> silhouette(const quality::Mask& skin, const Box& box) {
 
 }  // namespace
 
-std::vector<Landmark> find_landmarks(const quality::Image& reference, const quality::Mask& skin) {
+std::vector<Landmark> find_landmarks(const quality::Image& reference, const quality::Mask& skin,
+                                     std::vector<std::string>* not_found) {
   std::vector<Landmark> out;
+  std::vector<std::string> missing;
   const std::optional<Box> box = skin_box(skin);
   if (!box) return out;
   // Interior: 1% of the box's height from any non-skin pixel, so edges of the mask (eyelids,
@@ -163,10 +192,11 @@ std::vector<Landmark> find_landmarks(const quality::Image& reference, const qual
   const int margin = std::max(2, (box->y1 - box->y0) / 100);
   const InteriorTest interior(skin, margin);
   for (const std::optional<Landmark>& found :
-       {eye(skin, *box), lips(reference, *box, interior),
+       {eye(skin, *box), lips(reference, *box, interior, missing),
         shadow_edge(reference, *box, interior, margin), silhouette(skin, *box)}) {
     if (found) out.push_back(*found);
   }
+  if (not_found) *not_found = std::move(missing);
   return out;
 }
 

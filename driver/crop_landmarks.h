@@ -16,9 +16,17 @@ struct Landmark {
   int x = 0, y = 0;  // its centre, in frame pixels
 };
 
+// How much redder ((r - g) / (r + g + b), display values) than the median skin around them
+// lips must be. Measured on references at 1024x768: the built-in head's painted lips 0.23;
+// LeePerrySmith in one flat skin colour framed on its face, the mouth's crease (reddened by
+// diffusion) 0.19; skin of one colour with no reddening 0.
+inline constexpr float kLipRedness = 0.05f;
+
 // In order: eye, lips, shadow edge, silhouette; each is left out when the frame does not
-// show it (e.g. a scan whose eyes are skin-material has no hole in the mask). Deterministic:
-// ties go to the first pixel in row order.
-std::vector<Landmark> find_landmarks(const quality::Image& reference, const quality::Mask& skin);
+// show it (e.g. a scan whose eyes are skin-material has no hole in the mask); `not_found`
+// (if given) receives a sentence for the lips when they were looked for and not found.
+// Deterministic: ties go to the first pixel in row order.
+std::vector<Landmark> find_landmarks(const quality::Image& reference, const quality::Mask& skin,
+                                     std::vector<std::string>* not_found = nullptr);
 
 }  // namespace skinsim::driver

@@ -126,7 +126,8 @@ quality::Image amplified_difference(const quality::Image& a, const quality::Imag
 std::vector<reports::CropWindow> write_crop_windows(const std::vector<Landmark>& landmarks,
                                                     const std::vector<NamedMap>& searches,
                                                     const std::vector<NamedImage>& images,
-                                                    const fs::path& dir, const std::string& stem) {
+                                                    const fs::path& dir, const std::string& stem,
+                                                    const std::vector<std::string>& not_found) {
   std::vector<reports::CropWindow> windows;
   if (images.empty()) return windows;
   const quality::Image& first = *images.front().second;
@@ -148,6 +149,11 @@ std::vector<reports::CropWindow> write_crop_windows(const std::vector<Landmark>&
     const Window window = centred(l.x, l.y, size, 0, 0, first.width, first.height);
     add(l.why, window,
         centred(l.x, l.y, size / kZoom, window.x, window.y, window.x + size, window.y + size));
+  }
+  for (const std::string& why : not_found) {
+    reports::CropWindow sentence;
+    sentence.why = why;
+    windows.push_back(std::move(sentence));
   }
   std::optional<Window> previous;
   for (const auto& [why, error] : searches) {

@@ -38,11 +38,13 @@ using NamedImage = std::pair<std::string, const quality::Image*>;
 // One window centred on each landmark (crop_landmarks.h), then one per search (each avoiding
 // the previous search's; none where the error is zero); every image cut out of each at 1:1
 // and magnified, written to dir/<stem>_w<window>_<image>.png and _x4.png. The windows' paths
-// are relative to `dir`.
+// are relative to `dir`. After the landmarks' windows, one without images for each sentence of
+// `not_found` (landmarks looked for and not found), so the report says so where they would be.
 std::vector<reports::CropWindow> write_crop_windows(const std::vector<Landmark>& landmarks,
                                                     const std::vector<NamedMap>& searches,
                                                     const std::vector<NamedImage>& images,
                                                     const std::filesystem::path& dir,
-                                                    const std::string& stem);
+                                                    const std::string& stem,
+                                                    const std::vector<std::string>& not_found = {});
 
 }  // namespace skinsim::driver

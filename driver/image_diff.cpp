@@ -41,15 +41,16 @@ reports::ImageDiff diff_frames(const std::filesystem::path& a, const std::filesy
   quality::save_png(difference, out_dir / diff.difference_image);
   const quality::ScalarMap error = flip_error_map(frame_b, frame_a, mask);
   // The fixed places (an eye, the lips, ...) need the skin: a sweep's reference mask.
+  std::vector<std::string> not_found;
   const std::vector<Landmark> landmarks =
-      mask ? find_landmarks(frame_a, *mask) : std::vector<Landmark>{};
+      mask ? find_landmarks(frame_a, *mask, &not_found) : std::vector<Landmark>{};
   diff.windows = write_crop_windows(
       landmarks,
       {{"largest difference between A and B", error}, {"next-largest difference", error}},
       {{"A", &frame_a},
        {"B", &frame_b},
        {fmt::format("|B - A| x {:g}", kDifferenceGain), &difference}},
-      out_dir, stem);
+      out_dir, stem, not_found);
   return diff;
 }
 

@@ -2,6 +2,7 @@
 
 #include "gpu_model/timing_json.h"
 #include "pipeline/config.h"
+#include "scene/scene_scale.h"
 
 namespace skinsim::driver {
 
@@ -83,6 +84,36 @@ json to_json(const sim::PassCounters& c) {
             {"depth_store_bytes", c.depth_store_bytes}}},
           {"texture", texture_json(c.texture)},
           {"draws", draws}};
+}
+
+json scene_scale_json(const scene::Scene& s) {
+  const char* source = "--units-per-mm";
+  switch (s.units_source) {
+    case scene::UnitsSource::kGiven:
+      break;
+    case scene::UnitsSource::kFile:
+      source = "file metres";
+      break;
+    case scene::UnitsSource::kHeadHeight:
+      source = "head height";
+      break;
+    case scene::UnitsSource::kBoxHeight:
+      source = "bounding box";
+      break;
+  }
+  json j = {{"units_per_mm", s.units_per_mm},
+            {"source", source},
+            {"typical_head_mm", scene::kTypicalHeadMm}};
+  if (s.head) {
+    const auto point = [](const glm::vec3& p) { return json::array({p.x, p.y, p.z}); };
+    j["head"] = {{"height_units", s.head->height()},
+                 {"height_mm", s.head->height() / s.units_per_mm},
+                 {"crown", point(s.head->crown)},
+                 {"nose_tip", point(s.head->nose_tip)},
+                 {"chin", point(s.head->chin)}};
+  }
+  j["summary"] = scene::describe_scale(s);
+  return j;
 }
 
 json frame_result_json(const FrameResult& r, const std::string& scene_label) {

@@ -12,5 +12,8 @@ namespace skinsim::driver {
 nlohmann::json to_json(const sim::OpProfile& profile);
 nlohmann::json to_json(const sim::PassCounters& pass);  // without the per-tile array
 nlohmann::json frame_result_json(const FrameResult& result, const std::string& scene_label);
+// "scene_scale": units per mm and where they came from ("--units-per-mm", "file metres",
+// "head height", "bounding box"), and the head measured (scene/head_measure.h) if any.
+nlohmann::json scene_scale_json(const scene::Scene& scene);
 
 }  // namespace skinsim::driver

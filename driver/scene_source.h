@@ -19,7 +19,8 @@ struct SceneSource {
   int head_triangles = 60000;
   int texture_size = 1024;
   std::vector<std::string> skin_materials;  // --skin-materials override
-  float units_per_mm = 0.0f;                // <= 0: the file's own (glTF: metres)
+  float units_per_mm = 0.0f;  // <= 0: the file's metres if plausible, else from the head
+  std::string skin_albedo;    // --skin-albedo (scene/skin_albedo.h); empty: the file's colours
   // Receives the loader's warnings (scene::LoadOptions::warn); empty: printed to stderr.
   std::function<void(const std::string&)> warn;
   bool builtin() const { return path.empty() || path == "builtin"; }
@@ -30,9 +31,9 @@ struct SceneSource {
 scene::Scene load_scene(const SceneSource& source, float aspect);
 
 // The scene a result depends on: the options (label, head triangles, texture size, skin
-// materials, units per mm) and, for a glTF file, its content (scene::gltf::
-// content_fingerprint_of: the file and the buffers and images it names), so an edited scan
-// at the same path is not mistaken for the old one. Part of a sweep configuration's
+// materials, units per mm, skin albedo and an albedo image's content) and, for a glTF file, its
+// content (scene::gltf:: content_fingerprint_of: the file and the buffers and images it names), so
+// an edited scan at the same path is not mistaken for the old one. Part of a sweep configuration's
 // fingerprint and of a kept reference's (reference_cache.h). Throws scene::SceneError as loading
 // the file would.
 nlohmann::json scene_fingerprint(const SceneSource& scene);

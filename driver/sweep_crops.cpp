@@ -58,10 +58,11 @@ std::vector<reports::ComparisonPanel> write_comparison_panels(
     if (*rec.chosen == *rec.best) images.erase(images.begin() + 1);  // best == recommended
     // The fixed places first (an eye, the lips, a shadow edge, the silhouette), then where the
     // error is worst.
+    std::vector<std::string> not_found;
     const std::vector<Landmark> landmarks =
-        mask ? find_landmarks(reference, *mask) : std::vector<Landmark>{};
-    panel.windows =
-        write_crop_windows(landmarks, searches, images, sweep_dir, fmt::format("compare/g{}", g));
+        mask ? find_landmarks(reference, *mask, &not_found) : std::vector<Landmark>{};
+    panel.windows = write_crop_windows(landmarks, searches, images, sweep_dir,
+                                       fmt::format("compare/g{}", g), not_found);
     panels.push_back(std::move(panel));
   }
   if (!panels.empty()) write_colour_bar(sweep_dir / bar_path);

@@ -131,10 +131,20 @@ void parse_scene(const toml::table& scene, const std::string& name, const std::s
     } else if (k == "units_per_mm") {
       s.units_per_mm = static_cast<float>(number(node, at));
       if (!(s.units_per_mm > 0.0f)) throw SweepError(at + ": must be > 0");
+    } else if (k == "skin_albedo") {
+      const auto* text = node.as_string();
+      if (!text) throw SweepError(at + ": expected a string (\"r,g,b\" or an image path)");
+      s.skin_albedo = text->get();
+      // An image path, like `path`, is relative to the sweep file.
+      const std::filesystem::path beside = std::filesystem::path(base_dir) / s.skin_albedo;
+      if (std::filesystem::path(s.skin_albedo).is_relative() &&
+          std::filesystem::is_regular_file(beside)) {
+        s.skin_albedo = beside.lexically_normal().string();
+      }
     } else {
       throw SweepError(at +
                        ": unknown key (known: path, head_triangles, texture_size, "
-                       "skin_materials, units_per_mm)");
+                       "skin_materials, units_per_mm, skin_albedo)");
     }
   }
 }

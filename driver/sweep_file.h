@@ -9,7 +9,8 @@
 //   [scene]
 //   path = "head.glb"          # relative to the sweep file; "builtin" (default)
 //   skin_materials = ["all"]
-//   units_per_mm = 0.035
+//   units_per_mm = 0.0196      # optional: else metres if plausible, else from the head
+//   skin_albedo = "194,150,130"  # or an image, relative to the sweep file
 //   [report]
 //   budget_ms = 33.3
 //

@@ -83,8 +83,8 @@ struct PipelineConfig {
   std::optional<float> light_azimuth_deg;    // key light around the up axis, 0 = camera side
   std::optional<float> light_elevation_deg;  // key light above the horizon
   std::optional<float> back_light;           // back light strength, 1 = the studio rim light
-  std::optional<float> camera_distance_m;    // camera to the skin's centre
-  float camera_yaw_deg = 0.0f;               // camera orbit around the skin's centre
+  std::optional<float> camera_distance_m;    // camera to the head's centre (lighting.h)
+  float camera_yaw_deg = 0.0f;               // camera orbit around the head's centre
 
   // The key light's shadow map (pipeline/frame_lights.h) and transmission (shaders/lights.h).
   bool shadows = true;

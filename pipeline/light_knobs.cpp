@@ -54,10 +54,11 @@ std::vector<KnobSpec> light_knobs() {
                              &PipelineConfig::back_light, {0.0, 10.0})),
       shapes_reference(
           optional_real_knob("camera_distance_m", "--camera-distance",
-                             "Camera distance to the skin's centre in metres (auto: the scene's)",
+                             "Camera distance to the head's centre (a scan's measured head, else "
+                             "the skin's) in metres (auto: the scene's)",
                              &PipelineConfig::camera_distance_m, {0.05, 1000.0, true, false})),
       shapes_reference(real_knob("camera_yaw_deg", "--camera-yaw",
-                                 "Camera orbit around the skin's centre about the up axis, degrees",
+                                 "Camera orbit around the head's centre about the up axis, degrees",
                                  &PipelineConfig::camera_yaw_deg, {-180.0, 180.0})),
       std::move(shadows),
       shadow_knob(integer_knob("shadow_map_size", "--shadow-map-size",

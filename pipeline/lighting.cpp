@@ -1,6 +1,7 @@
 #include "pipeline/lighting.h"
 
 #include <cmath>
+#include <optional>
 
 #include "pipeline/gpu_scene.h"
 #include "scene/studio_lighting.h"
@@ -18,7 +19,9 @@ CharacterFrame character_frame(const GpuScene& gs) {
   const scene::Camera& cam = gs.scene().camera;
   CharacterFrame f;
   const Bounds b = gs.has_skin() ? gs.skin_bounds() : gs.bounds();
-  f.centre = b.centre();
+  // A scan's measured head, so that a bust orbits its face and not its chest.
+  const std::optional<scene::HeadLandmarks>& head = gs.scene().head;
+  f.centre = head ? head->centre() : b.centre();
   f.up = glm::normalize(cam.up);
   glm::vec3 to_camera = cam.position - f.centre;
   to_camera -= f.up * glm::dot(to_camera, f.up);

@@ -1,7 +1,8 @@
 // The lights and camera of one frame: the scene's, with the light and framing knobs applied
 // (PipelineConfig: light_azimuth_deg, light_elevation_deg, back_light, camera_distance_m,
 // camera_yaw_deg). Directions are in the character's frame: "front" is the horizontal
-// direction from the skin's centre towards the scene's camera, "up" the camera's up.
+// direction from the subject's centre (a scan's measured head, scene::Scene::head, else the
+// skin's box) towards the scene's camera, "up" the camera's up; the camera orbits that centre.
 #pragma once
 
 #include <glm/glm.hpp>

@@ -65,6 +65,10 @@ std::string image_slider_html(const std::vector<std::pair<std::string, std::stri
 std::string crop_windows_html(const std::vector<CropWindow>& windows) {
   std::string h;
   for (const CropWindow& w : windows) {
+    if (w.images.empty()) {  // a landmark looked for and not found: only the sentence
+      h += "<p><b>" + esc(w.why) + "</b></p>\n";
+      continue;
+    }
     h += "<p><b>" + esc(w.why) + "</b>: " +
          esc(fmt::format("{}x{} pixels at ({}, {}); below, the {}x{} pixels at ({}, {}) "
                          "magnified {}x",

@@ -24,4 +24,11 @@ Camera frame_front(const Bounds& bounds, float yfov_radians, float aspect, float
   return cam;
 }
 
+Camera frame_face(const HeadLandmarks& head, float yfov_radians, float aspect) {
+  Bounds box;
+  box.grow(head.box_min);
+  box.grow(head.box_max);
+  return frame_front(box, yfov_radians, aspect, 0.10f);
+}
+
 }  // namespace skinsim::scene

@@ -12,4 +12,9 @@ namespace skinsim::scene {
 // znear/zfar bracket the box. Requires a non-empty box.
 Camera frame_front(const Bounds& bounds, float yfov_radians, float aspect, float margin);
 
+// frame_front() of the head's crown-to-chin box (head_measure.h) with a 10% margin: the
+// camera aims at the middle of the face and the head fills the frame, whatever else the scan
+// holds (a bust's neck and shoulders).
+Camera frame_face(const HeadLandmarks& head, float yfov_radians, float aspect);
+
 }  // namespace skinsim::scene

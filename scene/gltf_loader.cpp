@@ -16,6 +16,8 @@
 #include "scene/gltf_nodes.h"
 #include "scene/gltf_primitive.h"
 #include "scene/load_warnings.h"
+#include "scene/scene_scale.h"
+#include "scene/skin_albedo.h"
 #include "scene/studio_lighting.h"
 #include "scene/validate.h"
 
@@ -204,20 +206,22 @@ Scene load_gltf(const std::string& path, const LoadOptions& opts) {
     throw SceneError(fmt::format("{}: scenes[{}] contains no triangles", path, scene_index));
   }
 
+  classify_materials(scene, opts.skin_materials);
+  size_scene(scene, opts.units_per_mm, warn);
   const Bounds bounds = scene_bounds(scene);
   if (!apply_file_camera(model, nodes, bounds, path, scene.camera)) {
-    scene.camera = frame_front(bounds, opts.auto_camera_yfov_radians, opts.aspect, 0.05f);
+    scene.camera = scene.head
+                       ? frame_face(*scene.head, opts.auto_camera_yfov_radians, opts.aspect)
+                       : frame_front(bounds, opts.auto_camera_yfov_radians, opts.aspect, 0.05f);
   }
   scene.key_light = default_key_light();
   scene.back_light = default_back_light(scene.key_light);
   scene.ambient = default_ambient();
   apply_file_light(model, nodes, path, warn, scene.key_light);
   scene.environment = make_studio_environment(opts.environment_size, scene.key_light);
-  scene.units_per_mm = opts.units_per_mm > 0.0f ? opts.units_per_mm : 0.001f;
-  classify_materials(scene, opts.skin_materials);
+  if (!opts.skin_albedo.empty()) apply_skin_albedo(scene, opts.skin_albedo);
   validate_scene(scene);
-  warn_implausible_head_size(scene, warn);
-  warn_untextured_materials(scene, warn);
+  warn_untextured_materials(scene, warn, opts.skin_albedo.empty());
   return scene;
 }
 

@@ -5,14 +5,15 @@
 // POINTS/LINES primitives are skipped with a warning) with POSITION, NORMAL, TEXCOORD_0,
 // TANGENT; materials (base colour factor/texture, normal texture + scale, metallic-
 // roughness factors/texture, KHR_materials_specular specularFactor as reflectivity,
-// extras.skinsim.kind); the images those materials use, decoded to RGBA; the first
+// extras.skinsim.kind; occlusionTexture and the specular extension's textures are named in
+// a warning and not read); the images those materials use, decoded to RGBA; the first
 // perspective camera in the node tree; the first KHR_lights_punctual directional light.
 //
 // What is made up when missing: smooth normals (glTF asks for flat normals; a head scan
 // without normals is meant to be smooth), MikkTSpace-style tangents (mesh_attributes.h),
-// planar UVs from the primitive's x/y extent, a camera framing the scene from +Z (glTF
-// assets face +Z), the default key light + ambient, and always the studio environment
-// (studio_lighting.h).
+// planar UVs from the primitive's x/y extent, a camera framing the head (head_measure.h),
+// else the scene, from +Z (glTF assets face +Z), the scale (scene_scale.h), the default key light +
+// ambient, and always the studio environment (studio_lighting.h).
 //
 // Every error throws SceneError with a message that starts with the file path.
 #pragma once
@@ -26,8 +27,9 @@
 namespace skinsim::scene {
 
 struct LoadOptions {
-  // World units per millimetre; <= 0 means glTF's metres (0.001). Scans exported in other
-  // units (LeePerrySmith.glb is about 8 units tall) need this set for correct diffusion widths.
+  // World units per millimetre; <= 0: glTF's metres when they give a head of plausible size,
+  // else sized from the head itself (scene_scale.h; LeePerrySmith.glb's head is about 4.4
+  // units from crown to chin).
   float units_per_mm = 0.0f;
   // Frame aspect (width / height) and vertical field of view for the auto-framed camera.
   float aspect = 4.0f / 3.0f;
@@ -35,6 +37,8 @@ struct LoadOptions {
   int environment_size = 64;
   // Passed to classify_materials() (the CLI's --skin-materials).
   std::vector<std::string> skin_materials;
+  // The CLI's --skin-albedo (skin_albedo.h): empty keeps the file's base colours.
+  std::string skin_albedo;
   // Receives non-fatal problems (skipped primitives, ignored lights...). Empty: stderr.
   std::function<void(const std::string&)> warn;
 };

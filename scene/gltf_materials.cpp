@@ -220,10 +220,24 @@ void convert_materials(const tinygltf::Model& model, const std::string& file, Sc
                                                   where + ".metallicRoughnessTexture", warn);
     m.normal_texture =
         images.resolve(src.normalTexture.index, false, where + ".normalTexture", warn);
+    if (src.occlusionTexture.index >= 0) {
+      warn(
+          fmt::format("{}: {}.occlusionTexture ignored: skinsim bakes ambient occlusion from the "
+                      "geometry",
+                      file, where));
+    }
     if (auto it = src.extensions.find("KHR_materials_specular"); it != src.extensions.end()) {
       const tinygltf::Value& ext = it->second;
       if (ext.IsObject() && ext.Has("specularFactor")) {
         m.reflectivity = static_cast<float>(number_or(ext.Get("specularFactor"), 1.0));
+      }
+      for (const char* texture : {"specularTexture", "specularColorTexture"}) {
+        if (ext.IsObject() && ext.Has(texture)) {
+          warn(
+              fmt::format("{}: {}.extensions.KHR_materials_specular.{} ignored: skinsim reads "
+                          "the specularFactor only",
+                          file, where, texture));
+        }
       }
     }
     m.extras_kind = extras_kind(src, file, index);

@@ -1,5 +1,5 @@
-// Notices for a user bringing their own head scan: plausibility of its size in the given
-// units, and materials drawn with neutral defaults because they have no textures.
+// Notices for a user bringing their own head scan: materials drawn with neutral defaults
+// because they have no textures (its size: scene_scale.h).
 #pragma once
 
 #include <functional>
@@ -9,18 +9,11 @@
 
 namespace skinsim::scene {
 
-// A head is about 200-250 mm tall; outside this range the units are almost surely wrong.
-inline constexpr float kPlausibleHeadMinMm = 100.0f;
-inline constexpr float kPlausibleHeadMaxMm = 400.0f;
-inline constexpr float kTypicalHeadMm = 225.0f;
-
-// Warns when the skin meshes' height (Y extent, glTF is Y-up) at scene.units_per_mm is
-// outside [kPlausibleHeadMinMm, kPlausibleHeadMaxMm], suggesting a --units-per-mm value.
-void warn_implausible_head_size(const Scene& scene,
-                                const std::function<void(const std::string&)>& warn);
-
-// Warns once, naming every material in use that has no texture at all.
+// Warns once, naming every material in use that has no texture at all (skin materials only
+// when `include_skin`: not when --skin-albedo gave them their colour), and for skin suggests
+// --skin-albedo.
 void warn_untextured_materials(const Scene& scene,
-                               const std::function<void(const std::string&)>& warn);
+                               const std::function<void(const std::string&)>& warn,
+                               bool include_skin);
 
 }  // namespace skinsim::scene

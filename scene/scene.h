@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -79,6 +80,25 @@ struct CubeMap {
   std::array<std::vector<glm::vec4>, 6> faces;
 };
 
+// A head found in the skin's geometry by measure_head() (head_measure.h), +Y up, the face
+// looking along +Z. `box` is the skin between the chin and the crown.
+struct HeadLandmarks {
+  glm::vec3 crown{0.0f};     // highest skin point
+  glm::vec3 nose_tip{0.0f};  // most forward point of the face
+  glm::vec3 chin{0.0f};      // menton on the front profile (see head_measure.h)
+  glm::vec3 box_min{0.0f}, box_max{0.0f};
+  float height() const { return crown.y - chin.y; }  // crown to chin, scene units
+  glm::vec3 centre() const { return 0.5f * (box_min + box_max); }
+};
+
+// Where Scene::units_per_mm came from.
+enum class UnitsSource {
+  kGiven,       // --units-per-mm (LoadOptions::units_per_mm), or the built-in head's metres
+  kFile,        // glTF's metres, which give a head of plausible size
+  kHeadHeight,  // the measured head height taken as a typical head's (kTypicalHeadMm)
+  kBoxHeight,   // no head measured: the skin's bounding-box height taken as a head's
+};
+
 struct Scene {
   std::string source;  // file path, or "builtin:default-head"
   std::vector<Mesh> meshes;
@@ -92,6 +112,9 @@ struct Scene {
   CubeMap environment;
   // World units per millimetre: diffusion profiles are in mm (skin-techniques.md section 4).
   float units_per_mm = 0.001f;  // glTF is in metres
+  UnitsSource units_source = UnitsSource::kGiven;
+  // The head the camera frames and orbits; absent when the skin's shape did not show one.
+  std::optional<HeadLandmarks> head;
 };
 
 // Decides Material::kind. Rule, first match wins:

@@ -247,25 +247,66 @@ TEST(Cli, OrthographicCameraRendersWithReference) {
   }
 }
 
-// Without --units-per-mm the scan (7.95 units tall) is read as metres: the run says so, says
-// why the LOD shader was chosen, and records both in result.json's "warnings".
-TEST(Cli, ScanInWrongUnitsWarnsAboutSizeAndLod) {
+// Without --units-per-mm the scan (a bust 7.95 units tall, its head about 4.4 crown to chin)
+// is sized from its head: the run says so and records the scale in result.json. With a wrong
+// --units-per-mm it warns, suggests the head's value, says why the LOD shader was chosen, and
+// records the warnings; the untextured skin's warning points at --skin-albedo.
+TEST(Cli, ScanIsSizedFromItsHeadAndWrongUnitsWarn) {
   if (!std::filesystem::exists(skinsim::test_paths::kLeePerrySmith))
     GTEST_SKIP() << "asset not present";
-  const auto dir = temp_dir("lee_units");
-  const Result r =
-      run(std::string("run --scene ") + skinsim::test_paths::kLeePerrySmith +
-          " --skin-materials all --no-reference --resolution 256x192 --out " + dir.string());
-  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string scan = std::string("run --scene ") + skinsim::test_paths::kLeePerrySmith +
+                           " --skin-materials all --no-reference --resolution 256x192 --out ";
+  const auto read = [](const std::filesystem::path& file) {
+    std::ifstream in(file);
+    return std::string((std::istreambuf_iterator<char>(in)), {});
+  };
+
+  const auto sized_dir = temp_dir("lee_sized");
+  const Result sized = run(scan + sized_dir.string());
+  ASSERT_EQ(sized.exit_code, 0) << sized.output;
   for (const char* expected :
-       {"skinsim run: warning: ", "--units-per-mm 0.0353", "LOD shader was chosen: camera distance",
-        "> lod_distance_m 2 m", "has no textures"}) {
-    EXPECT_NE(r.output.find(expected), std::string::npos) << expected << "\n" << r.output;
+       {"the head is 4.", "units from crown to chin", "sized as a life-size head instead: 0.019",
+        "scene scale: 0.019", "units/mm (head height)", "--skin-albedo r,g,b"}) {
+    EXPECT_NE(sized.output.find(expected), std::string::npos) << expected << "\n" << sized.output;
   }
-  std::ifstream in(dir / "result.json");
-  const std::string json((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_EQ(sized.output.find("LOD shader was chosen"), std::string::npos) << sized.output;
+  const std::string sized_json = read(sized_dir / "result.json");
+  EXPECT_NE(sized_json.find("\"scene_scale\""), std::string::npos);
+  EXPECT_NE(sized_json.find("\"source\": \"head height\""), std::string::npos) << sized_json;
+  EXPECT_NE(sized_json.find("\"height_units\": 4."), std::string::npos) << sized_json;
+
+  const auto metres_dir = temp_dir("lee_units");
+  const Result metres = run(scan + metres_dir.string() + " --units-per-mm 0.001");
+  ASSERT_EQ(metres.exit_code, 0) << metres.output;
+  for (const char* expected :
+       {"skinsim run: warning: ", "from crown to chin", "at --units-per-mm 0.001",
+        "pass --units-per-mm 0.019", "LOD shader was chosen: camera distance",
+        "> lod_distance_m 2 m", "has no textures"}) {
+    EXPECT_NE(metres.output.find(expected), std::string::npos) << expected << "\n" << metres.output;
+  }
+  const std::string json = read(metres_dir / "result.json");
   EXPECT_NE(json.find("\"warnings\""), std::string::npos);
   EXPECT_NE(json.find("LOD shader was chosen"), std::string::npos);
+  EXPECT_NE(json.find("\"source\": \"--units-per-mm\""), std::string::npos) << json;
+}
+
+// --skin-albedo refused before any work, naming the option: a colour out of range, a file
+// that is no image, and the built-in head (which has its own painted albedo).
+TEST(Cli, SkinAlbedoRefusesBadInput) {
+  const auto dir = temp_dir("skin_albedo");
+  std::ofstream(dir / "not_an_image.png") << "text";
+  std::vector<std::string> cases = {"--skin-albedo 1,2,3 --out " + (dir / "a").string()};
+  if (std::filesystem::exists(skinsim::test_paths::kLeePerrySmith)) {
+    const std::string scan = std::string("--scene ") + skinsim::test_paths::kLeePerrySmith +
+                             " --skin-materials all --out " + (dir / "b").string();
+    cases.push_back(scan + " --skin-albedo 256,0,0");
+    cases.push_back(scan + " --skin-albedo " + (dir / "not_an_image.png").string());
+  }
+  for (const std::string& args : cases) {
+    const Result r = run("run --no-reference --resolution 64x48 " + args);
+    EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.output;
+    EXPECT_NE(r.output.find("--skin-albedo"), std::string::npos) << args << "\n" << r.output;
+  }
 }
 
 // Sweep inputs refused before any work: exit 2 with the option or file, line and key named.

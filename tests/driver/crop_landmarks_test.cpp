@@ -60,5 +60,28 @@ TEST(CropLandmarks, NoSkinNoLandmarksAndNoHoleNoEye) {
   EXPECT_EQ(found[0].why.find("eye"), std::string::npos);
 }
 
+// Skin of one flat colour (an untextured scan), lit and shadowed: the reddest spot in the
+// lower middle is no redder than the rest, so there are no lips, and the search says so.
+TEST(CropLandmarks, FlatColouredSkinHasNoLipsAndSaysSo) {
+  Face face;
+  for (int y = 140; y < 160; ++y) {
+    for (int x = 85; x < 115; ++x) {
+      const float light = x < 130 ? 0.8f : 0.3f;
+      if (face.skin.values[static_cast<std::size_t>(y) * 200 + x])
+        face.image.at(x, y) = glm::vec3(light, 0.7f * light, 0.6f * light);
+    }
+  }
+  std::vector<std::string> not_found;
+  const std::vector<Landmark> found = find_landmarks(face.image, face.skin, &not_found);
+  ASSERT_EQ(found.size(), 3u);
+  for (const Landmark& l : found) EXPECT_EQ(l.why.find("lips"), std::string::npos) << l.why;
+  ASSERT_EQ(not_found.size(), 1u);
+  EXPECT_NE(not_found[0].find("the lips: not found"), std::string::npos) << not_found[0];
+
+  // With the red patch they are found and nothing is missing.
+  EXPECT_EQ(find_landmarks(Face().image, Face().skin, &not_found).size(), 4u);
+  EXPECT_TRUE(not_found.empty());
+}
+
 }  // namespace
 }  // namespace skinsim::driver

@@ -21,6 +21,7 @@ device = "iphone5"
 path = "heads/lee.glb"
 skin_materials = ["all"]
 units_per_mm = 0.04
+skin_albedo = "194,150,130"
 [report]
 budget_ms = 16.7
 )",
@@ -33,6 +34,7 @@ budget_ms = 16.7
   EXPECT_EQ(spec.scene.path, "/data/sweeps/heads/lee.glb");  // relative to the file
   EXPECT_EQ(spec.scene.skin_materials, std::vector<std::string>{"all"});
   EXPECT_FLOAT_EQ(spec.scene.units_per_mm, 0.04f);
+  EXPECT_EQ(spec.scene.skin_albedo, "194,150,130");  // a colour, not a file beside it
   EXPECT_DOUBLE_EQ(spec.budget_ms, 16.7);
 }
 

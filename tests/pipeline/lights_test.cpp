@@ -223,5 +223,26 @@ TEST(Framing, AnglesAreInTheCharactersFrame) {
   EXPECT_NEAR(glm::dot(glm::normalize(yawed.position - centre), towards_camera), 0.0f, 0.1f);
 }
 
+// A bust orbits its face: --camera-distance places the camera at that distance from the
+// measured head's centre and aims at it, not at the skin's box (which the shoulders pull
+// down to the chin).
+TEST(Framing, CameraDistanceOrbitsAScansHead) {
+  const std::string path = test_paths::kLeePerrySmith;
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "asset not found: " << path;
+  scene::LoadOptions o;
+  o.skin_materials = {"all"};
+  o.environment_size = 4;
+  o.warn = [](const std::string&) {};
+  const scene::Scene scan = scene::load_gltf(path, o);
+  ASSERT_TRUE(scan.head);
+  const GpuScene gs(scan);
+  const PipelineConfig c = with(small_config("wrap"), "camera_distance_m", "0.5");
+  const scene::Camera cam = frame_camera(gs, c);
+  const glm::vec3 head = scan.head->centre();
+  EXPECT_NEAR(glm::length(cam.target - head), 0.0f, 1e-4f);
+  EXPECT_NEAR(glm::length(cam.position - head), 500.0f * scan.units_per_mm, 1e-3f);
+  EXPECT_GT(cam.target.y, gs.skin_bounds().centre().y + 1.0f);  // above the bust's centre
+}
+
 }  // namespace
 }  // namespace skinsim::pipeline

@@ -134,7 +134,8 @@ TEST(GltfLoad, PointsPrimitiveSkippedWithWarning) {
 }
 
 // The 1 x 1 quad as a skin material: warnings for an implausible head size (with the
-// --units-per-mm that would make it 225 mm) and for a material with no textures.
+// --units-per-mm that would make it 225 mm, or, with none given, sized so) and for a
+// material with no textures.
 struct SizeCase {
   float units_per_mm;
   bool expect_size_warning;
@@ -155,7 +156,11 @@ TEST_P(HeadSizeWarning, WarnsOutsidePlausibleHeadHeights) {
   for (const std::string& w : warnings) {
     if (w.find("1 units tall") != std::string::npos) {
       size_warned = true;
-      EXPECT_NE(w.find("--units-per-mm 0.00444"), std::string::npos) << w;  // 1 / 225
+      // 1 / 225: suggested for a given scale, taken without one (a quad has no face, so its
+      // box height stands for the head's).
+      EXPECT_NE(w.find(GetParam().units_per_mm > 0.0f ? "--units-per-mm 0.00444" : "no head found"),
+                std::string::npos)
+          << w;
     }
     if (w.find("material 'skin' has no textures") != std::string::npos) untextured_warned = true;
   }
@@ -330,6 +335,32 @@ TEST(GltfLoad, MaterialsAndEmbeddedImages) {
   EXPECT_FLOAT_EQ(color.texels[1].a, 64.0f / 255.0f);
 }
 
+// KHR_materials_specular's factor is the reflectivity; the textures skinsim does not read
+// (occlusion: it bakes its own; the specular extension's textures) are named, not dropped
+// silently.
+TEST(GltfLoad, SpecularFactorReadAndUnreadTexturesNamed) {
+  GltfFixture f("unread_textures");
+  f.add_quad_mesh(true, true);
+  const int view = f.add_view(kPng, sizeof(kPng));
+  f.json()["images"] = {{{"bufferView", view}, {"mimeType", "image/png"}}};
+  f.json()["textures"] = {{{"source", 0}}};
+  f.json()["materials"] = {{{"name", "skin"},
+                            {"occlusionTexture", {{"index", 0}}},
+                            {"extensions",
+                             {{"KHR_materials_specular",
+                               {{"specularFactor", 0.5}, {"specularTexture", {{"index", 0}}}}}}}}};
+  f.json()["meshes"][0]["primitives"][0]["material"] = 0;
+  std::vector<std::string> warnings;
+  const Scene s = load_gltf(f.write_glb("scene"), quiet(&warnings));
+  EXPECT_FLOAT_EQ(s.materials[0].reflectivity, 0.5f);
+  int named = 0;
+  for (const std::string& w : warnings) {
+    named += w.find("materials[0].occlusionTexture ignored") != std::string::npos;
+    named += w.find("KHR_materials_specular.specularTexture ignored") != std::string::npos;
+  }
+  EXPECT_EQ(named, 2);
+}
+
 TEST(GltfLoad, SkinOverrideBeatsExtras) {
   GltfFixture f("override");
   f.add_quad_mesh(true, true);
@@ -370,10 +401,12 @@ TEST(GltfLoad, LeePerrySmith) {
   }
   EXPECT_EQ(triangles, 17684u);
   EXPECT_EQ(s.materials[0].kind, MaterialKind::kSkin);
-  // The file's camera/lamp nodes are in another scene; ours is framed from the front (+Z).
+  // The file's camera/lamp nodes are in another scene; ours frames the face from the front
+  // (+Z; test_scene_head checks the head it measures).
   const Bounds b = scene_bounds(s);
   EXPECT_GT(s.camera.position.z, b.max.z);
-  expect_near(s.camera.target, b.center(), 1e-4f);
+  ASSERT_TRUE(s.head);
+  expect_near(s.camera.target, s.head->centre(), 1e-4f);
 }
 
 }  // namespace
