@@ -8,7 +8,7 @@ cannot go stale silently:
 - a block that shows `$ skinsim ARGS` and its output is what skinsim ARGS prints now
   (docs/validation.md's example: its figures, the uncertain-figure count);
 - every output file a doc names (`results.csv`, `report.html`, ...) is written by a small run,
-  sweep, compare or export, or is a file the repository tracks.
+  sweep, compare, export or truth, or is a file the repository tracks.
 Usage: docs_consistency_test.py SKINSIM SOURCE_DIR WORK_DIR"""
 import json
 import pathlib
@@ -106,7 +106,7 @@ def check_transcripts():
 
 
 def produced_files():
-    """Names of the files a small run, sweep, compare and export write."""
+    """Names of the files a small run, sweep, compare, export and truth write."""
     if WORK.exists():
         shutil.rmtree(WORK)
     run_a, run_b = WORK / "a", WORK / "b"
@@ -117,6 +117,9 @@ def produced_files():
     skinsim("sweep", "--scales", "1", "--luts", "16x64", "--resolutions", "64x48", "--out",
             str(WORK / "s"))
     skinsim("export", *SMALL, "--out", str(WORK / "x"))
+    # The path-traced truth of run a, one sample (Blender: scripts/install-deps.sh installs it).
+    skinsim("truth", "--device", "ipad4", *SMALL, "--samples", "1", "--compare", str(run_a),
+            "--out", str(WORK / "t"))
     return {p.name for p in WORK.rglob("*") if p.is_file()}
 
 
@@ -130,7 +133,7 @@ def check_output_names(produced):
             name = path.rsplit("/", 1)[-1]
             if name in produced or name in tree or name in PATTERNS:
                 continue
-            fail(f"{doc.name} names `{path}`, which no run, sweep, compare or export writes and "
+            fail(f"{doc.name} names `{path}`, which no run, sweep, compare, export or truth writes and "
                  "the repository does not hold")
 
 

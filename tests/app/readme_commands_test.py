@@ -2,7 +2,8 @@
 in a sandbox laid out like the repository (build/skinsim, data/, ../shared), so the paths it
 names (an example profile, a sweep file, a budget file) must exist there or be made by an
 earlier README line. A line runs verbatim except for a small --resolution (--resolutions for a
-sweep) appended to commands that render, so the whole README costs about a minute. A TOML
+sweep) appended to commands that render, and one sample a pixel for `truth`, so the whole
+README costs about a minute. A TOML
 block the README says to "Save this as `PATH`" is written to PATH first.
 
 Lines that build or install (scripts/*.sh, cmake), or need a scheduler, are listed in SKIPPED
@@ -89,6 +90,9 @@ def cheap(words):
         return words + ["--resolution", RESOLUTION]
     if sub == "sweep" and "--resolutions" not in words:  # a merge too: the same sweep
         return words + ["--resolutions", RESOLUTION]
+    if sub == "truth" and "--samples" in words:  # one sample a pixel: seconds, not minutes
+        at = words.index("--samples") + 1
+        return words[:at] + ["1"] + words[at + 1:]
     return words
 
 

@@ -61,7 +61,7 @@ TEST(SweepFile, ErrorsNameFileLineAndKey) {
   expect_error("[axez]\nscale = [1]\n", "s.toml:1: axez: unknown table");
   expect_error("[fixed]\nscale = 1\n", "s.toml: no [axes] given");
   expect_error("[report]\nbudget_ms = -1\n[axes]\nscale = [1]\n",
-               "s.toml:2: report.budget_ms: must be > 0");
+               "s.toml:2: report.budget_ms: must be a finite number of milliseconds > 0");
 }
 
 // Hostile sweep files: each must end as a SweepError naming the file, line and key at fault.
@@ -87,7 +87,7 @@ TEST(SweepFile, AdversarialFilesAreRefusedNamingFileLineAndKey) {
       {"huge integer knob", "[axes]\nblur_iterations = [4294967297]\n",
        "s.toml:2: axes.blur_iterations: bad value"},
       {"nan budget", "[axes]\nscale = [1]\n[report]\nbudget_ms = nan\n",
-       "s.toml:4: report.budget_ms: must be > 0"},
+       "s.toml:4: report.budget_ms: must be a finite number of milliseconds > 0"},
       {"inf units", "[axes]\nscale = [1]\n[scene]\nunits_per_mm = -inf\n",
        "s.toml:4: scene.units_per_mm: must be > 0"},
       {"empty device", "[axes]\nscale = [1]\n[fixed]\ndevice = \"\"\n",

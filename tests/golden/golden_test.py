@@ -16,6 +16,7 @@ On a mismatch the new frame and a difference image are written to OUT_DIR/TECHNI
 import json
 import os
 import struct
+import shutil
 import subprocess
 import sys
 import zlib
@@ -39,6 +40,9 @@ def variant_args(golden_dir):
 
 
 def render(skinsim, technique, args, threads, out_dir):
+    # The test's own scratch directory: skinsim run replaces only directories it marked, and
+    # one left by an older build (another marker) would be refused.
+    shutil.rmtree(out_dir, ignore_errors=True)
     subprocess.run([skinsim, "run", "--technique", technique, "--device", DEVICE,
                     "--resolution", RESOLUTION, "--no-reference", "--threads", str(threads),
                     "--out", out_dir] + args, check=True, stdout=subprocess.DEVNULL)

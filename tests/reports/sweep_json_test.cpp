@@ -105,8 +105,8 @@ TEST(SweepJson, FileErrorsNameTheFile) {
   std::ofstream(path) << "{ not json";
   try {
     read_sweep_json(path);
-    FAIL() << "expected ReportError";
-  } catch (const ReportError& e) {
+    FAIL() << "expected io::InputError";
+  } catch (const io::InputError& e) {  // io::parse_json's, as for every JSON a user may edit
     EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
   }
   EXPECT_THROW(read_sweep_json(temp_file("does_not_exist.json")), io::InputError);
