@@ -31,9 +31,12 @@ std::string power_of_two_range(int lo, int hi) {
 
 }  // namespace
 
-bool Interval::contains(double v) const {
-  const bool above = lo_open ? v > lo : v >= lo;
-  const bool below = hi_open ? v < hi : v <= hi;
+bool Interval::contains(float v) const {
+  // The bounds as the knob's float holds them: "0.05" typed for (0.05, ...] is 0.05f, which
+  // as a double lies above 0.05 and would pass an open bound it equals.
+  const auto lo_f = static_cast<float>(lo), hi_f = static_cast<float>(hi);
+  const bool above = lo_open ? v > lo_f : v >= lo_f;
+  const bool below = hi_open ? v < hi_f : v <= hi_f;
   return above && below;  // NaN fails both
 }
 
@@ -54,8 +57,8 @@ int parse_knob_int(const std::string& key, const std::string& text) {
 glm::vec3 parse_knob_rgb(const std::string& key, const std::string& text) {
   const auto c1 = text.find(',');
   const auto c2 = c1 == std::string::npos ? c1 : text.find(',', c1 + 1);
-  if (c2 == std::string::npos) {
-    throw ConfigError(fmt::format("{}: expected 'r,g,b', got '{}'", key, text));
+  if (c2 == std::string::npos || text.find(',', c2 + 1) != std::string::npos) {
+    throw ConfigError(fmt::format("{}: expected three numbers 'r,g,b', got '{}'", key, text));
   }
   return {parse_knob_float(key, text.substr(0, c1)),
           parse_knob_float(key, text.substr(c1 + 1, c2 - c1 - 1)),

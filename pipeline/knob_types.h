@@ -17,7 +17,7 @@ struct Interval {
   double hi = 0.0;
   bool lo_open = false;
   bool hi_open = false;
-  bool contains(double v) const;  // false for NaN
+  bool contains(float v) const;  // compared as floats, the knobs' type; false for NaN
   std::string text() const;
 };
 

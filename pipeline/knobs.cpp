@@ -43,7 +43,7 @@ KnobSpec resolution_knob() {
   k.reference = true;
   k.name = "resolution";
   k.flag = "--resolution";
-  k.values = "WxH within 16..8192 per axis, or display";
+  k.values = "WxH within 16..8192 per axis and 0.1..10 wide per high, or display";
   k.help = "Render resolution (default: the device's display)";
   k.set = [](PipelineConfig& c, const std::string& text) {
     std::tie(c.width, c.height) =
@@ -54,10 +54,17 @@ KnobSpec resolution_knob() {
   };
   k.invalid = [](const PipelineConfig& c) -> std::string {
     if ((c.width == 0) != (c.height == 0)) return "resolution needs both width and height";
-    if (c.width == 0 || (c.width >= 16 && c.width <= 8192 && c.height >= 16 && c.height <= 8192)) {
-      return "";
+    if (c.width != 0 && (c.width < 16 || c.width > 8192 || c.height < 16 || c.height > 8192)) {
+      return fmt::format("resolution must be within 16..8192 per axis, got {}x{}", c.width,
+                         c.height);
     }
-    return fmt::format("resolution must be within 16..8192 per axis, got {}x{}", c.width, c.height);
+    // The cameras frame a head at aspect ratios 0.1 to 10 (scene/procedural_head.cpp).
+    const double aspect = c.width == 0 ? 1.0 : static_cast<double>(c.width) / c.height;
+    if (aspect < 0.1 || aspect > 10.0) {
+      return fmt::format("resolution {}x{} is {:.3g} wide per high; it must be 0.1..10", c.width,
+                         c.height, aspect);
+    }
+    return "";
   };
   return k;
 }

@@ -234,6 +234,23 @@ def empty_shard_is_refused(d):
     return expect(r, 2, "--shard") or ("computed" if (d / "s" / "configs").exists() else "")
 
 
+def open_range_edge_is_refused(d):
+    # docs/knobs.md: --camera-distance in (0.05, 1000]; 0.05 as a float lies just above 0.05.
+    return expect(run(["run", *FRAME, "--camera-distance", "0.05", "--out", d / "r"]), 2,
+                  "camera_distance_m must be in (0.05, 1000]")
+
+
+def extreme_aspect_names_the_resolution(d):
+    r = run(["run", "--resolution", "16x8192", "--out", d / "r"])
+    return expect(r, 2, "resolution 16x8192", "0.1..10") or (
+        "an internal name" if "DefaultSceneOptions" in r[1] else "")
+
+
+def four_component_tint_says_three_numbers(d):
+    return expect(run(["run", *FRAME, "--shadow-tint", "1,1,1,1", "--out", d / "r"]), 2,
+                  "expected three numbers 'r,g,b', got '1,1,1,1'")
+
+
 def sweep_file_budget_inf_is_refused_with_its_line(d):
     f = write(d / "s.toml", '[axes]\nscale = [1, 0.5]\n\n[report]\nbudget_ms = inf\n')
     return expect(run(["sweep", "--sweep-file", f, "--out", d / "s"]), 2, f"{f}:5",
@@ -369,6 +386,9 @@ CASES = [
     set_on_a_swept_knob_is_refused,
     empty_shard_is_refused,
     sweep_file_budget_inf_is_refused_with_its_line,
+    open_range_edge_is_refused,
+    extreme_aspect_names_the_resolution,
+    four_component_tint_says_three_numbers,
     budget_resolution_given_twice_is_refused,
     cache_dir_off_in_any_case,
     swapped_cached_reference_is_not_used,
