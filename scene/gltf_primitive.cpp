@@ -84,7 +84,14 @@ std::optional<Mesh> convert_primitive(const tinygltf::Model& model, int mesh_ind
   }
   const glm::mat3 linear(world);
   const float det = glm::determinant(linear);
-  if (!std::isfinite(det) || std::abs(det) < 1e-30f) {
+  if (!std::isfinite(det)) {
+    warn(
+        fmt::format("{}: {}: node transform scales by more than a float holds (determinant {}); "
+                    "skipped",
+                    file, where, det));
+    return std::nullopt;
+  }
+  if (std::abs(det) < 1e-30f) {
     warn(fmt::format("{}: {}: node transform is singular (zero scale); skipped", file, where));
     return std::nullopt;
   }

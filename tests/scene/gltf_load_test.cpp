@@ -133,6 +133,23 @@ TEST(GltfLoad, PointsPrimitiveSkippedWithWarning) {
   EXPECT_NE(warnings[0].find("primitives[1]"), std::string::npos);
 }
 
+// A scale past float's range is not "zero scale": the warning says what it is.
+TEST(GltfLoad, OverflowingNodeScaleIsNamedAsSuch) {
+  GltfFixture f("overflowing_scale");
+  f.add_quad_mesh(true, true);
+  f.add_quad_mesh(true, true);
+  f.json()["nodes"][1]["scale"] = {1e20, 1e20, 1e20};
+  std::vector<std::string> warnings;
+  const Scene s = load_gltf(f.write_glb("scene"), quiet(&warnings));
+  EXPECT_EQ(s.meshes.size(), 1u);
+  bool named = false;
+  for (const std::string& w : warnings) {
+    EXPECT_EQ(w.find("zero scale"), std::string::npos) << w;
+    named = named || w.find("more than a float holds") != std::string::npos;
+  }
+  EXPECT_TRUE(named);
+}
+
 // The 1 x 1 quad as a skin material: warnings for an implausible head size (with the
 // --units-per-mm that would make it 225 mm, or, with none given, sized so) and for a
 // material with no textures.
