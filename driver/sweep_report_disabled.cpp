@@ -7,6 +7,8 @@ namespace skinsim::driver {
 SweepReportOutcome write_sweep_report(reports::SweepTable& table, const std::string& out_dir,
                                       bool) {
   finish_sweep_data(table, out_dir);
+  // A report.html from a build with the report library would not show these tables.
+  remove_stale_report(out_dir);
   SweepReportOutcome outcome;
   outcome.note =
       "this build has no charts or report.html (configured with -DSKINSIM_BUILD_REPORTS=OFF); "

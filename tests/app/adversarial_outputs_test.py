@@ -221,7 +221,9 @@ def empty_merge_leaves_no_stale_report(d):
     write(out / "report.html", "<html>an earlier sweep</html>")
     r = run(["sweep", *SWEEP, "--set", "blur_iterations=2", "--out", out, "--merge"])
     stale = (out / "report.html").exists()
-    return expect(r, 1, "no finished configuration") or ("report.html left" if stale else "")
+    # A build without the report library (the sanitizer stage) says so instead.
+    said = "no finished configuration" if "no charts or report.html" not in r[1] else ""
+    return expect(r, 1, said) or ("report.html left" if stale else "")
 
 
 def set_on_a_swept_knob_is_refused(d):
