@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 
+#include "gpu_model/profile_loader.h"
 #include "pipeline/knob.h"
 #include "util/parse_number.h"
 #include "util/user_error.h"
@@ -14,6 +15,11 @@ namespace skinsim::app {
 std::string default_data_dir() {
   if (const char* env = std::getenv("SKINSIM_DATA_DIR"); env && *env) return env;
   return SKINSIM_DEFAULT_DATA_DIR;
+}
+
+gpu_model::DeviceProfile load_device(const DeviceOptions& options) {
+  return gpu_model::load_device_profile(
+      options.device, options.data_dir.empty() ? default_data_dir() : options.data_dir);
 }
 
 CLI::Validator integer_in(int lo, int hi) {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "driver/scene_source.h"
+#include "gpu_model/device_profile.h"
 #include "pipeline/config.h"
 
 namespace skinsim::app {
@@ -37,5 +38,8 @@ CLI::Validator non_negative_real(double max);
 
 // The shipped data directory: $SKINSIM_DATA_DIR, else the source tree's data/.
 std::string default_data_dir();
+
+// The profile --device names, from --data-dir or the default data directory.
+gpu_model::DeviceProfile load_device(const DeviceOptions& options);
 
 }  // namespace skinsim::app

@@ -7,7 +7,6 @@
 #include "app/cli_options.h"
 #include "app/commands.h"
 #include "driver/frame_export.h"
-#include "gpu_model/profile_loader.h"
 #include "io/atomic_file.h"
 #include "io/run_directory.h"
 
@@ -26,8 +25,7 @@ struct ExportOptions {
 
 int run_export(const ExportOptions& o) {
   const sim::sl::GlslDialect dialect = driver::parse_glsl_dialect(o.glsl);
-  const std::string data_dir = o.device.data_dir.empty() ? default_data_dir() : o.device.data_dir;
-  const gpu_model::DeviceProfile device = gpu_model::load_device_profile(o.device.device, data_dir);
+  const gpu_model::DeviceProfile device = load_device(o.device);
   const pipeline::PipelineConfig config = driver::resolve_config(o.config, device);
   io::RunDirectory run_directory(o.out, "export");
 

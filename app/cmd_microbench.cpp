@@ -4,7 +4,6 @@
 
 #include "app/cli_options.h"
 #include "app/commands.h"
-#include "gpu_model/profile_loader.h"
 #include "microbench/microbench.h"
 
 namespace skinsim::app {
@@ -35,10 +34,7 @@ Command add_microbench_command(CLI::App& app) {
       ->delimiter(',');
   cmd->add_flag("--json", o->json, "Print JSON instead of a table");
   return [o] {
-    const std::string data_dir =
-        o->device.data_dir.empty() ? default_data_dir() : o->device.data_dir;
-    const gpu_model::DeviceProfile profile =
-        gpu_model::load_device_profile(o->device.device, data_dir);
+    const gpu_model::DeviceProfile profile = load_device(o->device);
     microbench::MicrobenchOptions options = o->bench;
     options.threads = o->device.threads;
     const auto results = microbench::run_microbenchmarks(profile, options);

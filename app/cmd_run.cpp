@@ -14,7 +14,6 @@
 #include "driver/images.h"
 #include "driver/reference_cache.h"
 #include "driver/result_json.h"
-#include "gpu_model/profile_loader.h"
 #include "gpu_model/sensitivity.h"
 #include "gpu_model/timing_json.h"
 #include "gpu_model/timing_table.h"
@@ -67,8 +66,7 @@ void print_reference_source(const driver::FrameJobResult& r, const driver::Frame
 }
 
 int run(const RunOptions& o) {
-  const std::string data_dir = o.device.data_dir.empty() ? default_data_dir() : o.device.data_dir;
-  const gpu_model::DeviceProfile device = gpu_model::load_device_profile(o.device.device, data_dir);
+  const gpu_model::DeviceProfile device = load_device(o.device);
   const pipeline::PipelineConfig config = driver::resolve_config(o.config, device);
   // Checked before any work, so a bad --out fails fast; swapped in only if the run succeeds.
   io::RunDirectory run_directory(o.out);

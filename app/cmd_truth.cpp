@@ -17,7 +17,6 @@
 #include "driver/truth_image.h"
 #include "driver/truth_render.h"
 #include "driver/truth_scene.h"
-#include "gpu_model/profile_loader.h"
 #include "io/atomic_file.h"
 #include "io/run_directory.h"
 #include "util/user_error.h"
@@ -73,10 +72,9 @@ std::string figures(const nlohmann::json& m) {
 }
 
 int run_truth(const TruthOptions& o) {
-  const std::string data_dir = o.device.data_dir.empty() ? default_data_dir() : o.device.data_dir;
-  const gpu_model::DeviceProfile device = gpu_model::load_device_profile(o.device.device, data_dir);
+  const gpu_model::DeviceProfile device = load_device(o.device);
   const pipeline::PipelineConfig config = driver::resolve_config(o.config, device);
-  io::RunDirectory run_directory(o.out);
+  io::RunDirectory run_directory(o.out, "truth");
   const std::filesystem::path& out = run_directory.staging();
 
   // Read before the minutes of rendering, so a wrong directory fails at once.

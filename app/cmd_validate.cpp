@@ -11,7 +11,6 @@
 #include "driver/frame_job.h"
 #include "driver/validate_compare.h"
 #include "driver/validate_measurements.h"
-#include "gpu_model/profile_loader.h"
 #include "io/atomic_file.h"
 #include "pipeline/technique.h"
 
@@ -32,8 +31,7 @@ int validate(const ValidateCliOptions& o) {
   if (!o.json.empty()) io::require_not_input(o.json, "--json", o.measured, "the measurements");
   // The measurements first: a bad file fails before any rendering.
   const driver::Measurements measured = driver::read_measurements(o.measured);
-  const std::string data_dir = o.device.data_dir.empty() ? default_data_dir() : o.device.data_dir;
-  const gpu_model::DeviceProfile device = gpu_model::load_device_profile(o.device.device, data_dir);
+  const gpu_model::DeviceProfile device = load_device(o.device);
   const pipeline::PipelineConfig config = driver::resolve_config(o.config, device);
 
   driver::FrameJob job;

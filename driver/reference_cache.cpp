@@ -1,7 +1,6 @@
 #include "driver/reference_cache.h"
 
 #include <fmt/format.h>
-#include <xxhash.h>
 
 #include <exception>
 
@@ -11,6 +10,7 @@
 #include "quality/image.h"
 #include "quality/png_encode.h"
 #include "util/build_identity.h"
+#include "util/fingerprint.h"
 
 namespace skinsim::driver {
 
@@ -21,14 +21,11 @@ namespace {
 // XXH3 (64 bits) of the pixels as loaded: the 8-bit image's values are exact (k / 255), so
 // the images kept and the ones loaded back from their PNGs digest alike.
 std::string pixel_digest(const ReferenceImages& images) {
-  XXH3_state_t* state = XXH3_createState();
-  if (!state) throw std::bad_alloc();
-  XXH3_64bits_reset(state);
-  XXH3_64bits_update(state, images.image.rgb.data(), images.image.rgb.size() * sizeof(glm::vec3));
-  XXH3_64bits_update(state, images.skin.values.data(), images.skin.values.size());
-  const XXH64_hash_t hash = XXH3_64bits_digest(state);
-  XXH3_freeState(state);
-  return fmt::format("xxh3-64:{:016x}", hash);
+  const auto bytes = [](const auto& values) {
+    return std::string_view(reinterpret_cast<const char*>(values.data()),
+                            values.size() * sizeof(values[0]));
+  };
+  return xxh3_fingerprint({bytes(images.image.rgb), bytes(images.skin.values)});
 }
 
 nlohmann::json images_entry(const ReferenceImages& images) {

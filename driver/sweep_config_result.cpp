@@ -1,7 +1,6 @@
 #include "driver/sweep_config_result.h"
 
 #include <fmt/format.h>
-#include <xxhash.h>
 
 #include <algorithm>
 #include <cmath>
@@ -22,10 +21,6 @@ namespace {
 constexpr int kFormatVersion = 4;
 
 }  // namespace
-
-std::string file_digest(std::string_view bytes) {
-  return fmt::format("xxh3-64:{:016x}", XXH3_64bits(bytes.data(), bytes.size()));
-}
 
 reports::ConfigResult config_row(const SweepConfig& config, const FrameResult& frame,
                                  const FrameQuality& quality, const std::string& frame_image,

@@ -26,13 +26,10 @@ struct StoredConfig {
   std::vector<reports::SensitivityRow> sensitivity;
   std::vector<std::string> assumptions;  // uncertain device figures, one sentence each
   // Its images (relative to the sweep directory) and a digest of each as written
-  // (file_digest), so a resumed sweep or a merge tells a damaged one and computes it again.
+  // (xxh3_fingerprint, util/fingerprint.h), so a resumed sweep or a merge tells a damaged one
+  // and computes it again.
   std::map<std::string, std::string> files;
 };
-
-// "xxh3-64:<16 hex digits>" of a file's bytes (XXH3: fast enough to check every stored image
-// of a sweep on each resume; it tells damage apart, it does not resist forgery).
-std::string file_digest(std::string_view bytes);
 
 // The pass whose per-tile cost the report maps (the final skin shading, the costliest).
 inline constexpr const char* kHeatmapPass = "skin";

@@ -74,7 +74,7 @@ std::string damaged_image(const fs::path& dir, const Job& job, const StoredConfi
     const auto digest = stored.files.find(image);
     try {
       if (digest == stored.files.end() ||
-          file_digest(io::read_regular_file(dir / image, "image")) != digest->second) {
+          xxh3_fingerprint({io::read_regular_file(dir / image, "image")}) != digest->second) {
         return image;
       }
     } catch (const io::InputError&) {
@@ -115,15 +115,18 @@ void finish(const fs::path& dir, const Job& job, const FrameResult& frame, quali
   FrameQuality measured = evaluate_quality(image, *job.reference);
   // Each PNG's deflate stream is encoded by one thread: the two at once, each with its
   // thumbnail for the report while its pixels are at hand.
+  // Each returns its file's digest, of the bytes it wrote (no reading back).
+  std::string frame_digest, error_digest;
   tbb::parallel_invoke(
-      [&] { write_image_and_thumbnail(std::move(image), dir, config_frame_path(id)); },
       [&] {
-        write_image_and_thumbnail(std::move(measured.error_map), dir, config_error_path(id));
+        frame_digest = write_image_and_thumbnail(std::move(image), dir, config_frame_path(id));
+      },
+      [&] {
+        error_digest =
+            write_image_and_thumbnail(std::move(measured.error_map), dir, config_error_path(id));
       });
   StoredConfig stored;
-  for (const std::string& file : {config_frame_path(id), config_error_path(id)}) {
-    stored.files[file] = file_digest(io::read_regular_file(dir / file, "image"));
-  }
+  stored.files = {{config_frame_path(id), frame_digest}, {config_error_path(id), error_digest}};
   stored.fingerprint = job.fingerprint;
   // config_row reads the metrics; the error map went into its PNG above.
   stored.row = config_row(*job.config, frame, measured, config_frame_path(id),

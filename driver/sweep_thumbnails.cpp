@@ -9,6 +9,7 @@
 
 #include "quality/resize.h"
 #include "reports/html_text.h"
+#include "util/fingerprint.h"
 
 namespace skinsim::driver {
 
@@ -53,12 +54,14 @@ void write_thumbnails(const reports::SweepTable& table, const fs::path& sweep_di
   });
 }
 
-void write_image_and_thumbnail(quality::Image image, const fs::path& sweep_dir,
-                               const std::string& relative) {
-  quality::save_png_and_round(image, sweep_dir / relative);
+std::string write_image_and_thumbnail(quality::Image image, const fs::path& sweep_dir,
+                                      const std::string& relative) {
+  const std::string digest =
+      xxh3_fingerprint({quality::save_png_and_round(image, sweep_dir / relative).bytes()});
   // After the image: write_thumbnails takes a thumbnail older than its image for a stale one.
   fs::create_directories(sweep_dir / "thumbs");
   write_thumbnail(image, sweep_dir, relative);
+  return digest;
 }
 
 }  // namespace skinsim::driver

@@ -21,8 +21,9 @@ void write_thumbnails(const reports::SweepTable& table, const std::filesystem::p
 // the pixels in memory instead of the file read back: the thumbnail write_thumbnails would make
 // from that PNG, byte for byte, without decoding it (a sweep's frames and error maps: 32
 // PNGs of 2048x1536 decoded after the last configuration, otherwise). Takes the image to
-// round it in place: a frame's copy would be 36 MiB more at the sweep's peak.
-void write_image_and_thumbnail(quality::Image image, const std::filesystem::path& sweep_dir,
-                               const std::string& relative);
+// round it in place: a frame's copy would be 36 MiB more at the sweep's peak. Returns the PNG's
+// xxh3_fingerprint (util/fingerprint.h), of the bytes written.
+std::string write_image_and_thumbnail(quality::Image image, const std::filesystem::path& sweep_dir,
+                                      const std::string& relative);
 
 }  // namespace skinsim::driver

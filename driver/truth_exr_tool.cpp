@@ -25,10 +25,10 @@ int to_raw(const std::string& from, const std::string& to) {
   }
   const oiio::ImageSpec& spec = in.spec();
   const int channels = spec.nchannels;
+  const int c1 = channels >= 3 ? 1 : 0, c2 = channels >= 3 ? 2 : 0;  // grey: replicated
   LinearImage image{spec.width, spec.height, {}};
   image.rgb.resize(static_cast<std::size_t>(spec.width) * spec.height);
   for (oiio::ImageBuf::ConstIterator<float> p(in); !p.done(); ++p) {
-    const int c1 = channels >= 3 ? 1 : 0, c2 = channels >= 3 ? 2 : 0;
     image.rgb[static_cast<std::size_t>(p.y() - spec.y) * spec.width + (p.x() - spec.x)] = {
         p[0], p[c1], p[c2]};
   }

@@ -1,10 +1,10 @@
 #include "driver/truth_image.h"
 
-#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "driver/truth_process.h"
+#include "util/srgb.h"
 #include "util/user_error.h"
 
 namespace skinsim::driver {
@@ -24,11 +24,6 @@ void convert(const std::string& mode, const std::filesystem::path& from,
   }
 }
 
-float srgb_encode(float c) {
-  c = std::clamp(c, 0.0f, 1.0f);
-  return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-}
-
 }  // namespace
 
 LinearImage read_linear_image(const std::filesystem::path& path, const std::filesystem::path& log) {
@@ -45,14 +40,6 @@ LinearImage read_linear_image(const std::filesystem::path& path, const std::file
     }
   }
   return image;
-}
-
-void write_linear_exr(const LinearImage& image, const std::filesystem::path& path,
-                      const std::filesystem::path& log) {
-  const std::filesystem::path raw = path.string() + ".raw";
-  write_raw_image(image, raw);
-  convert("from-raw", raw, path, log);
-  std::filesystem::remove(raw);
 }
 
 quality::Image display_image(const LinearImage& image) {

@@ -27,9 +27,6 @@ LinearImage read_raw_image(const std::filesystem::path& path);
 // Any image OpenImageIO reads (EXR, HDR, TIFF, ...), through skinsim-exr; `log` receives the
 // helper's messages. Throws UserError naming the file when it cannot be read.
 LinearImage read_linear_image(const std::filesystem::path& path, const std::filesystem::path& log);
-// Writes an OpenEXR (float, RGB) through skinsim-exr.
-void write_linear_exr(const LinearImage& image, const std::filesystem::path& path,
-                      const std::filesystem::path& log);
 
 // As skinsim's frames are seen: sRGB-encoded, clamped to [0,1], rounded to 8 bits (as the
 // reference.png a run writes), so the metrics compare like with like.

@@ -16,6 +16,7 @@
 #include "pipeline/lighting.h"
 #include "pipeline/shaders/eye.h"
 #include "quality/image.h"
+#include "util/unorm8.h"
 
 namespace skinsim::driver {
 
@@ -85,12 +86,7 @@ json material_json(const scene::Scene& sc, const scene::Material& m,
     const std::string name = "textures/image" + std::to_string(m.base_color_texture) + ".png";
     if (!textures.contains(name)) {
       std::vector<std::uint8_t> bytes(image.texels.size() * 4);
-      for (std::size_t i = 0; i < image.texels.size(); ++i) {
-        for (int c = 0; c < 4; ++c) {
-          const float v = std::clamp(image.texels[i][c], 0.0f, 1.0f);
-          bytes[i * 4 + c] = static_cast<std::uint8_t>(std::lround(v * 255.0f));
-        }
-      }
+      unorm8_nearest(&image.texels.data()->x, bytes.size(), bytes.data(), nullptr);
       quality::write_png_u8(dir / name, image.width, image.height, 4, bytes);
       textures[name] = image.name;
     }

@@ -9,6 +9,8 @@
 #include <span>
 #include <vector>
 
+#include "quality/png_encode.h"
+
 namespace skinsim::quality {
 
 struct Image {
@@ -48,8 +50,9 @@ void save_png(const Image& image, const std::filesystem::path& path);
 // Makes `image` what load_png reads back from the PNG save_png writes of it, bit for bit,
 // without the file: each value becomes its nearest byte's (util/unorm8.h).
 void round_to_saved_png(Image& image);
-// save_png, then round_to_saved_png, with each value rounded once for both.
-void save_png_and_round(Image& image, const std::filesystem::path& path);
+// save_png, then round_to_saved_png, with each value rounded once for both. Returns the bytes
+// written (png_encode.h).
+EncodedPng save_png_and_round(Image& image, const std::filesystem::path& path);
 
 // Masks as 8-bit grey PNGs: any non-zero value counts.
 Mask load_mask_png(const std::filesystem::path& path);
@@ -57,8 +60,8 @@ void save_mask_png(const Mask& mask, const std::filesystem::path& path);
 
 // Writes `channels` interleaved 8-bit channels (1..4) of a width x height image: encoded in
 // memory, then written with io::write_file_atomically (checked, temp file + rename),
-// so readers never see a half-written file.
-void write_png_u8(const std::filesystem::path& path, int width, int height, int channels,
-                  std::span<const std::uint8_t> data);
+// so readers never see a half-written file. Returns the bytes written.
+EncodedPng write_png_u8(const std::filesystem::path& path, int width, int height, int channels,
+                        std::span<const std::uint8_t> data);
 
 }  // namespace skinsim::quality

@@ -120,9 +120,9 @@ EncodedPng encode_png(const Image& image, const std::string& what) {
   return encode_png_u8(image.width, image.height, 3, to_rgb8(image), what);
 }
 
-void save_png_and_round(Image& image, const std::filesystem::path& path) {
+EncodedPng save_png_and_round(Image& image, const std::filesystem::path& path) {
   check_pixel_count(image, path);
-  write_png_u8(path, image.width, image.height, 3, to_rgb8(image, &image));
+  return write_png_u8(path, image.width, image.height, 3, to_rgb8(image, &image));
 }
 
 void round_to_saved_png(Image& image) {
@@ -160,8 +160,8 @@ EncodedPng encode_mask_png(const Mask& mask, const std::string& what) {
   return encode_png_u8(mask.width, mask.height, 1, mask_bytes(mask), what);
 }
 
-void write_png_u8(const std::filesystem::path& path, int width, int height, int channels,
-                  std::span<const std::uint8_t> data) {
+EncodedPng write_png_u8(const std::filesystem::path& path, int width, int height, int channels,
+                        std::span<const std::uint8_t> data) {
   if (width <= 0 || height <= 0 || channels < 1 || channels > 4) {
     throw QualityError("cannot write '" + path.string() + "': invalid size " +
                        std::to_string(width) + "x" + std::to_string(height) + "x" +
@@ -174,8 +174,9 @@ void write_png_u8(const std::filesystem::path& path, int width, int height, int 
   }
   // Encoded in memory, then written by the checked atomic writer: a full disk is reported
   // and a truncated PNG never replaces a good one.
-  io::write_file_atomically(path,
-                            encode_png_u8(width, height, channels, data, path.string()).bytes());
+  EncodedPng png = encode_png_u8(width, height, channels, data, path.string());
+  io::write_file_atomically(path, png.bytes());
+  return png;
 }
 
 }  // namespace skinsim::quality

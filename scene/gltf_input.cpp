@@ -15,6 +15,7 @@
 #include "scene/error.h"
 #include "scene/gltf_materials.h"
 #include "util/fingerprint.h"
+#include "util/text.h"
 
 namespace skinsim::scene::gltf {
 namespace {
@@ -146,10 +147,7 @@ bool refuse_write(std::string* err, const std::string&, const std::vector<unsign
 }
 
 std::string lower_extension(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return std::tolower(c); });
-  return ext;
+  return lowercase(fs::path(path).extension().string());
 }
 
 // The file's bytes and its JSON, checked as parse_gltf_file needs them before tinygltf runs.

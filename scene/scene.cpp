@@ -1,18 +1,10 @@
 #include "scene/scene.h"
 
 #include <algorithm>
-#include <cctype>
+
+#include "util/text.h"
 
 namespace skinsim::scene {
-namespace {
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
-
-}  // namespace
 
 void classify_materials(Scene& scene, const std::vector<std::string>& skin_override) {
   const bool all_skin =
@@ -20,7 +12,7 @@ void classify_materials(Scene& scene, const std::vector<std::string>& skin_overr
   for (Material& m : scene.materials) {
     const bool overridden =
         std::find(skin_override.begin(), skin_override.end(), m.name) != skin_override.end();
-    const std::string name = lower(m.name);
+    const std::string name = lowercase(m.name);
     if (all_skin || overridden) {
       m.kind = MaterialKind::kSkin;
     } else if (m.extras_kind == "skin") {

@@ -27,8 +27,9 @@ inline constexpr float kTypicalHeadMm = 225.0f;
 void size_scene(Scene& scene, float given_units_per_mm,
                 const std::function<void(const std::string&)>& warn);
 
-// One line for the user: what the head measures and the units per mm it gives, e.g.
-// "head 4.41 units crown to chin (crown y 3.97, chin y -0.44): 0.0196 units/mm for 225 mm".
+// One line for the user: what the head measures and the units per mm it gives, e.g. "head
+// 4.38 units crown to chin (crown y 3.973, chin y -0.4072), 225 mm at 0.01947 units/mm; a 225
+// mm head would be 0.0195 units/mm".
 std::string describe_scale(const Scene& scene);
 
 }  // namespace skinsim::scene

@@ -3,42 +3,50 @@
 #include <fmt/format.h>
 #include <stb/stb_image.h>
 
-#include <cmath>
 #include <memory>
 #include <optional>
-#include <regex>
+#include <string_view>
 
 #include "io/read_file.h"
 #include "scene/error.h"
 #include "scene/gltf_materials.h"
+#include "util/parse_number.h"
+#include "util/srgb.h"
 
 namespace skinsim::scene {
 namespace {
 
-// The sRGB transfer function's inverse (IEC 61966-2-1).
-float srgb_to_linear(float c) {
-  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+// `text` without the spaces and tabs around it.
+std::string_view trimmed(std::string_view text) {
+  const std::size_t first = text.find_first_not_of(" \t");
+  if (first == std::string_view::npos) return {};
+  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
 }
 
-// "r,g,b" with each in [0, 255]; nullopt when `spec` does not look like three numbers.
+// "r,g,b" with each in [0, 255]; nullopt when `spec` does not look like three numbers (then it
+// names an image). Plain string handling rather than std::regex: GCC 12 reports false
+// -Wmaybe-uninitialized warnings inside <regex> under the sanitizers (io/temp_files.cpp).
 std::optional<glm::vec3> parse_colour(const std::string& spec) {
-  static const std::regex kColour(R"(\s*([-+0-9.eE]+)\s*,\s*([-+0-9.eE]+)\s*,\s*([-+0-9.eE]+)\s*)");
-  std::smatch m;
-  if (!std::regex_match(spec, m, kColour)) return std::nullopt;
+  std::string_view parts[3];
+  std::string_view rest = spec;
+  for (int i = 0; i < 3; ++i) {
+    const std::size_t comma = i < 2 ? rest.find(',') : rest.size();
+    if (comma == std::string_view::npos) return std::nullopt;
+    parts[i] = trimmed(rest.substr(0, comma));
+    if (parts[i].empty() ||
+        parts[i].find_first_not_of("+-0123456789.eE") != std::string_view::npos) {
+      return std::nullopt;
+    }
+    rest.remove_prefix(i < 2 ? comma + 1 : comma);
+  }
   glm::vec3 c;
   for (int i = 0; i < 3; ++i) {
-    std::size_t used = 0;
-    double v = -1.0;
-    try {
-      v = std::stod(m[i + 1].str(), &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != static_cast<std::size_t>(m[i + 1].length()) || !(v >= 0.0 && v <= 255.0)) {
+    const std::optional<double> v = parse_real(parts[i]);
+    if (!v || !(*v >= 0.0 && *v <= 255.0)) {
       throw SceneError(fmt::format(
           "--skin-albedo '{}': each of r,g,b must be a number from 0 to 255 (sRGB)", spec));
     }
-    c[i] = static_cast<float>(v);
+    c[i] = static_cast<float>(*v);
   }
   return c;
 }
@@ -97,8 +105,8 @@ void apply_skin_albedo(Scene& scene, const std::string& spec) {
     if (m.kind != MaterialKind::kSkin) continue;
     m.base_color_texture = texture;
     const glm::vec3 c = colour ? *colour / 255.0f : glm::vec3(1.0f);
-    m.base_color_factor = glm::vec4(srgb_to_linear(c.r), srgb_to_linear(c.g), srgb_to_linear(c.b),
-                                    m.base_color_factor.a);
+    m.base_color_factor =
+        glm::vec4(srgb_decode(c.r), srgb_decode(c.g), srgb_decode(c.b), m.base_color_factor.a);
   }
 }
 

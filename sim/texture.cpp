@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "sim/fp16.h"
+#include "util/text.h"
 #include "util/unorm8.h"
 
 namespace skinsim::sim {
@@ -46,9 +47,7 @@ const char* format_name(TexelFormat format) {
 }
 
 TexelFormat parse_format(const std::string& name) {
-  std::string lower = name;
-  std::transform(lower.begin(), lower.end(), lower.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string lower = lowercase(name);
   if (lower == "rgba8") return TexelFormat::kRGBA8;
   if (lower == "rgba16f") return TexelFormat::kRGBA16F;
   if (lower == "rgba32f") return TexelFormat::kRGBA32F;

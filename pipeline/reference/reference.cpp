@@ -23,6 +23,7 @@
 #include "pipeline/shaders/background.h"
 #include "pipeline/shaders/eye.h"
 #include "sim/gpu.h"
+#include "util/srgb.h"
 
 namespace skinsim::pipeline {
 
@@ -136,11 +137,6 @@ GBuffer render_gbuffer(const GpuScene& gs, const PipelineConfig& cfg, const View
   }
   gpu.execute(pass);
   return g;
-}
-
-float srgb_encode(float c) {
-  c = std::max(c, 0.0f);
-  return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
 }
 
 // Dual-lobe Kelemen/Szirmay-Kalos specular (d'Eon & Luebke, GPU Gems 3, ch. 14), exact.

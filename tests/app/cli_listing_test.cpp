@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "tests/app/run_skinsim.h"
+#include "tests/text_lines.h"
 
 namespace {
 
@@ -31,12 +32,7 @@ nlohmann::json read_json(const std::filesystem::path& path) {
   return nlohmann::json::parse(in);
 }
 
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
+using skinsim::testing::lines_of;
 
 TEST(CliListing, KnobsNameEveryOption) {
   Result plain = run("knobs");

@@ -6,16 +6,12 @@
 #include "reports/csv_writer.h"
 #include "reports/error.h"
 #include "tests/reports/synthetic_sweep.h"
+#include "tests/text_lines.h"
 
 namespace skinsim::reports {
 namespace {
 
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
+using skinsim::testing::lines_of;
 
 TEST(SweepCsv, HeaderListsKnobsTotalsPassesAndMetrics) {
   const std::vector<std::string> lines = lines_of(sweep_csv(testing::synthetic_sweep()));

@@ -11,6 +11,9 @@
 
 namespace skinsim::scene::testing {
 
+// A 2x1 RGBA PNG: (255, 0, 0, 255), (0, 128, 255, 64).
+extern const std::vector<std::uint8_t> kTwoPixelPng;
+
 class GltfFixture {
  public:
   // A temp directory unique to `test_name`.
@@ -28,6 +31,8 @@ class GltfFixture {
   // One triangle (or quad as 2 triangles) mesh in a node in scene 0. Returns the mesh index.
   // Positions in the z = 0 plane facing +Z, UVs with v down.
   int add_quad_mesh(bool with_normals, bool with_uvs);
+  // kTwoPixelPng embedded as the only image and texture; returns the texture's index (0).
+  int add_png_texture();
 
   nlohmann::json& json() { return json_; }
   std::vector<std::uint8_t>& bin() { return bin_; }

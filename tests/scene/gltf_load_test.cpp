@@ -305,19 +305,11 @@ TEST(GltfLoad, DefaultLightAndEnvironmentWithoutExtension) {
 }
 
 // A 2x1 RGBA PNG: (255, 0, 0, 255), (0, 128, 255, 64).
-const std::uint8_t kPng[] = {
-    0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48, 0x44,
-    0x52, 0x00, 0x00, 0x00, 0x02, 0x00, 0x00, 0x00, 0x01, 0x08, 0x06, 0x00, 0x00, 0x00, 0xf4,
-    0x22, 0x7f, 0x8a, 0x00, 0x00, 0x00, 0x11, 0x49, 0x44, 0x41, 0x54, 0x78, 0x9c, 0x63, 0xf8,
-    0xcf, 0xc0, 0xf0, 0x9f, 0xa1, 0xe1, 0xbf, 0x03, 0x00, 0x10, 0xba, 0x03, 0xbe, 0x47, 0x96,
-    0x20, 0xa0, 0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
 
 TEST(GltfLoad, MaterialsAndEmbeddedImages) {
   GltfFixture f("materials");
   f.add_quad_mesh(true, true);
-  const int view = f.add_view(kPng, sizeof(kPng));
-  f.json()["images"] = {{{"bufferView", view}, {"mimeType", "image/png"}}};
-  f.json()["textures"] = {{{"source", 0}}};
+  f.add_png_texture();
   f.json()["materials"] = {{{"name", "Face"},
                             {"pbrMetallicRoughness",
                              {{"baseColorFactor", {0.5, 0.25, 1, 1}},
@@ -358,9 +350,7 @@ TEST(GltfLoad, MaterialsAndEmbeddedImages) {
 TEST(GltfLoad, SpecularFactorReadAndUnreadTexturesNamed) {
   GltfFixture f("unread_textures");
   f.add_quad_mesh(true, true);
-  const int view = f.add_view(kPng, sizeof(kPng));
-  f.json()["images"] = {{{"bufferView", view}, {"mimeType", "image/png"}}};
-  f.json()["textures"] = {{{"source", 0}}};
+  f.add_png_texture();
   f.json()["materials"] = {{{"name", "skin"},
                             {"occlusionTexture", {{"index", 0}}},
                             {"extensions",
