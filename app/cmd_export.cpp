@@ -8,6 +8,7 @@
 #include "app/commands.h"
 #include "driver/frame_export.h"
 #include "io/atomic_file.h"
+#include "io/free_space.h"
 #include "io/run_directory.h"
 
 namespace skinsim::app {
@@ -39,18 +40,22 @@ int run_export(const ExportOptions& o) {
   job.threads = o.device.threads;
   driver::ExportedFrame frame = driver::export_frame(job, dialect, o.data);
   frame.description["scene"] = o.scene.label();
-
+  const std::string description = frame.description.dump(2) + "\n";
+  std::uintmax_t bytes = description.size();
+  for (const auto& entry : frame.files) bytes += entry.second.size();
   const std::filesystem::path& out = run_directory.staging();
+  io::require_free_space(out, bytes, "skinsim export --out " + o.out);
   std::filesystem::create_directories(out / "shaders");
   if (o.data) std::filesystem::create_directories(out / "data");
   for (const auto& [path, source_text] : frame.files) {
     io::write_file_atomically((out / path).string(), source_text);
   }
-  io::write_file_atomically((out / "frame.json").string(), frame.description.dump(2) + "\n");
+  io::write_file_atomically((out / "frame.json").string(), description);
   run_directory.commit();
-  fmt::print("skinsim export: {} on {}, {}x{}: {} passes, {} files (GLSL {}) in {}/\n",
+  fmt::print("skinsim export: {} on {}, {}x{}: {} passes, {} files (GLSL {}), {} in {}/\n",
              config.technique, device.name, config.width, config.height,
-             frame.description["passes"].size(), frame.files.size(), o.glsl, o.out);
+             frame.description["passes"].size(), frame.files.size(), o.glsl, io::megabytes(bytes),
+             o.out);
   return 0;
 }
 

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "driver/frame_work.h"
 #include "driver/images.h"
 #include "driver/reference_cache.h"
 #include "driver/skin_diagnosis.h"
@@ -41,6 +42,9 @@ FrameJobResult run_frame_job(const FrameJob& job) {
   const float aspect = static_cast<float>(job.config.width) / static_cast<float>(job.config.height);
   r.scene = std::make_unique<scene::Scene>(load_scene(job.scene, aspect));
   r.gpu_scene = std::make_unique<pipeline::GpuScene>(*r.scene);
+  const FrameWork work = estimate_frame_work(*r.gpu_scene, job.config);
+  require_bounded_work(work, job.config, job.scene.label());
+  for (const std::string& note : frame_work_notes(work, job.config)) warn(note);
   r.frame = run_frame(*r.gpu_scene, job.config, *job.device, job.threads, job.capture);
   for (const std::string& notice : r.frame.output.notices) warn(notice);
   if (job.reference) {

@@ -2,6 +2,7 @@
 // apart from the reference and the image quality, so a program that only emulates frames
 // (bench/thread_scaling) links no image library.
 #include "driver/frame_job.h"
+#include "driver/frame_work.h"
 #include "gpu_model/frame_cost.h"
 #include "gpu_model/gpu_config.h"
 #include "sim/pass_memo.h"
@@ -22,6 +23,7 @@ FrameResult run_frame(const pipeline::GpuScene& scene, const pipeline::PipelineC
                       const gpu_model::DeviceProfile& device, int threads,
                       const PassCapture& capture, sim::PassMemo* memo) {
   SKINSIM_CHECK(config.width > 0 && config.height > 0);  // resolve_config first
+  require_bounded_work(estimate_frame_work(scene, config), config, scene.scene().source);
   sim::Gpu gpu(gpu_model::gpu_config(device, threads));
   if (capture) gpu.set_pass_capture(capture);
   gpu.set_pass_memo(memo);
