@@ -301,21 +301,12 @@ Command add_sweep_command(CLI::App& app) {
                   "TOML sweep file ([axes], [fixed], [scene], "
                   "[report]; see docs/sweeps.md)")
       ->check(CLI::ExistingFile);
-  axis_option(*cmd, *o, "--scales", "scale",
-              "Integration-buffer scales, e.g. 1,0.5,0.25,0.125 (default sweep: those)");
-  axis_option(*cmd, *o, "--luts", "lut",
-              "BRDF LUT sizes WxH, e.g. 8x32,16x64,32x128,64x256 (default sweep: those)");
-  axis_option(*cmd, *o, "--lut-formats", "lut_format", "BRDF LUT formats: rgba8,rgba16f");
-  axis_option(*cmd, *o, "--blur-iterations", "blur_iterations",
-              "Blur iteration counts, e.g. 1,2,4");
-  axis_option(*cmd, *o, "--techniques", "technique",
-              "Techniques (" + fmt::format("{}", fmt::join(pipeline::technique_names(), ", ")) +
-                  ") or 'all'; an axis a technique does not use (e.g. scales for wrap, LUT "
-                  "sizes with an analytic specular) runs once for it, at the default");
+  for (const pipeline::KnobSpec& knob : pipeline::all_knobs()) {
+    if (!knob.sweep_flag.empty())
+      axis_option(*cmd, *o, knob.sweep_flag, knob.name, knob.sweep_help);
+  }
   axis_option(*cmd, *o, "--devices", "device",
               "Device profiles: shipped names (see `skinsim devices`) or .toml files");
-  axis_option(*cmd, *o, "--resolutions", "resolution",
-              "Render resolutions WxH, or 'display' for the device's (default)");
   cmd->add_option("--set", o->fixed,
                   "Hold a knob fixed for every configuration: knob=value (repeatable; knobs as "
                   "in `skinsim run`, e.g. blur_width_mm=2, gamma=srgb)");

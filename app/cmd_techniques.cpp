@@ -84,12 +84,14 @@ int print_knobs(Format format) {
   if (format == Format::kJson) {
     nlohmann::json out = nlohmann::json::array();
     for (const pipeline::KnobSpec& k : pipeline::all_knobs()) {
-      out.push_back({{"name", k.name},
-                     {"option", k.flag},
-                     {"values", k.values},
-                     {"default", k.get(defaults)},
-                     {"techniques", users_of(k)},
-                     {"help", k.help}});
+      nlohmann::json row = {{"name", k.name},
+                            {"option", k.flag},
+                            {"values", k.values},
+                            {"default", k.get(defaults)},
+                            {"techniques", users_of(k)},
+                            {"help", k.help}};
+      if (!k.sweep_flag.empty()) row["sweep_option"] = k.sweep_flag;
+      out.push_back(std::move(row));
     }
     fmt::print("{}\n", out.dump(2));
   } else if (format == Format::kMarkdown) {

@@ -9,6 +9,8 @@
 #include <map>
 #include <set>
 
+#include "pipeline/knob.h"
+
 namespace skinsim::driver {
 
 namespace {
@@ -40,13 +42,11 @@ std::string canonical_value(const std::string& knob, const std::string& value,
   return pipeline::get_config_field(scratch, knob);
 }
 
-// Numbers need the knob's name to be readable in an id ("scale0.5"); words do not ("mobile").
+// KnobSpec::id_prefix; a device is named by its profile, being no knob of the config.
 std::string id_prefix(const std::string& knob) {
-  static const std::map<std::string, std::string> prefixes = {
-      {"technique", ""},  {"device", ""}, {"lut_format", ""},
-      {"resolution", ""}, {"gamma", ""},  {"blur_iterations", "blur"}};
-  const auto it = prefixes.find(knob);
-  return it != prefixes.end() ? it->second : knob;
+  if (knob == "device") return "";
+  const pipeline::KnobSpec& k = pipeline::find_knob(knob);
+  return k.id_prefix.value_or(k.name);
 }
 
 std::string id_part(const std::string& knob, const std::string& value) {

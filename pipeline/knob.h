@@ -1,10 +1,12 @@
 // One knob of a frame as a row of a table: every interface reads the rows (the `run` options,
-// sweep axes, --set, budget files, validation messages, whether a knob applies to a technique,
-// `skinsim knobs` and docs/knobs.md), so a knob is added in one place. The way pbrt-v4 builds
-// objects from a parameter set, with the parameters described once.
+// sweep axes and their options, configuration ids, --set, budget files, validation messages,
+// whether a knob applies to a technique, `skinsim knobs` and docs/knobs.md), so a knob is added in
+// one place. The way pbrt-v4 builds objects from a parameter set, with the parameters described
+// once.
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,6 +33,13 @@ struct KnobSpec {
   // Whether the reference frame depends on it (the scene's framing and light, the BRDF
   // parameters): sweeps render one reference per combination of these.
   bool reference = false;
+  // The sweep's own option for the knob as an axis, and its help ("--scales", "Integration-
+  // buffer scales, e.g. 1,0.5,0.25,0.125"); empty: swept from sweep files only.
+  std::string sweep_flag;
+  std::string sweep_help;
+  // What a configuration's id puts before the knob's value: numbers need a name to be
+  // readable ("scale0.5"), words do not ("mobile"). Unset: the knob's name.
+  std::optional<std::string> id_prefix;
 };
 
 // Every knob: the ones all techniques use, then each technique's own (technique.h), in

@@ -101,6 +101,12 @@ KnobSpec shapes_reference(KnobSpec knob) {
   return knob;
 }
 
+KnobSpec swept_by(KnobSpec knob, std::string sweep_flag, std::string sweep_help) {
+  knob.sweep_flag = std::move(sweep_flag);
+  knob.sweep_help = std::move(sweep_help);
+  return knob;
+}
+
 KnobSpec switch_knob(std::string name, std::string flag, std::string help,
                      bool PipelineConfig::*field) {
   KnobSpec k = row(std::move(name), std::move(flag), "on or off", std::move(help));

@@ -38,6 +38,8 @@ KnobSpec integer_knob(std::string name, std::string flag, std::string help,
                       int PipelineConfig::*field, int lo, int hi, bool power_of_two = false);
 // The row with KnobSpec::reference set.
 KnobSpec shapes_reference(KnobSpec knob);
+// The row with the sweep's option for it as an axis (KnobSpec::sweep_flag, sweep_help).
+KnobSpec swept_by(KnobSpec knob, std::string sweep_flag, std::string sweep_help);
 // "on" or "off".
 KnobSpec switch_knob(std::string name, std::string flag, std::string help,
                      bool PipelineConfig::*field);

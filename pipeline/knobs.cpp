@@ -23,6 +23,11 @@ KnobSpec technique_knob() {
   k.flag = "--technique";
   k.values = fmt::format("{}", fmt::join(technique_names(), ", "));
   k.help = "Skin technique (docs/techniques.md)";
+  k.sweep_flag = "--techniques";
+  k.sweep_help = "Techniques (" + k.values +
+                 ") or 'all'; an axis a technique does not use (e.g. scales for wrap, LUT sizes "
+                 "with an analytic specular) runs once for it, at the default";
+  k.id_prefix = "";
   k.set = [](PipelineConfig& c, const std::string& text) {
     c.technique = find_technique(text).name;
   };
@@ -45,6 +50,9 @@ KnobSpec resolution_knob() {
   k.flag = "--resolution";
   k.values = "WxH within 16..8192 per axis and 0.1..10 wide per high, or display";
   k.help = "Render resolution (default: the device's display)";
+  k.sweep_flag = "--resolutions";
+  k.sweep_help = "Render resolutions WxH, or 'display' for the device's (default)";
+  k.id_prefix = "";
   k.set = [](PipelineConfig& c, const std::string& text) {
     std::tie(c.width, c.height) =
         text == "display" ? std::pair{0, 0} : parse_size(text, "resolution");
@@ -107,6 +115,9 @@ KnobSpec lut_format_knob() {
   k.flag = "--lut-format";
   k.values = "rgba8 or rgba16f";
   k.help = "BRDF LUT texel format (the paper's mobile formats); read only with specular ks_lut";
+  k.sweep_flag = "--lut-formats";
+  k.sweep_help = "BRDF LUT formats: rgba8,rgba16f";
+  k.id_prefix = "";
   k.set = [](PipelineConfig& c, const std::string& text) {
     try {
       c.lut_format = sim::parse_format(text);
@@ -141,11 +152,16 @@ const std::vector<KnobSpec>& common_knobs() {
         size_knob("lut", "--lut", "BRDF LUT size (N.H x N.V); read only with specular ks_lut",
                   &PipelineConfig::lut_width, &PipelineConfig::lut_height, 2, 1024);
     lut.applies = reads_brdf_lut;
+    lut = swept_by(std::move(lut), "--luts",
+                   "BRDF LUT sizes WxH, e.g. 8x32,16x64,32x128,64x256 (default sweep: those)");
+    KnobSpec gamma =
+        choice_knob("gamma", "--gamma", "Skin gamma: gamma 2.0 as in GPU Pro 5, or exact sRGB",
+                    "square or srgb", &PipelineConfig::gamma, parse_gamma, gamma_name);
+    gamma.id_prefix = "";
     std::vector<KnobSpec> rows{
         technique_knob(),
         resolution_knob(),
-        choice_knob("gamma", "--gamma", "Skin gamma: gamma 2.0 as in GPU Pro 5, or exact sRGB",
-                    "square or srgb", &PipelineConfig::gamma, parse_gamma, gamma_name),
+        std::move(gamma),
         lobe_knob("lobe1", &PipelineConfig::lobe1,
                   "First specular lobe (Beckmann m and weight; the weights sum to 1)"),
         lobe_knob("lobe2", &PipelineConfig::lobe2, "Second specular lobe"),

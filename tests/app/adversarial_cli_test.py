@@ -5,8 +5,10 @@ a FIFO, a device, a directory), exits 2 naming it. Also the raw-argument checks:
 and a non-UTF-8 scene path that must not crash the JSON step.
 Usage: adversarial_cli_test.py SKINSIM WORK_DIR"""
 import concurrent.futures
+import json
 import os
 import pathlib
+import re
 import shutil
 import subprocess
 import sys
@@ -18,27 +20,23 @@ OUT = str(WORK / "out")
 failures = []
 
 # Option -> the names a message may use for it (the flag, or the knob a budget file types).
+# The scene and device options by hand; every knob that takes numbers from the knob table
+# (`skinsim knobs --json`), so a knob added there is tested here without an edit.
 NUMERIC_OPTIONS = {
     "--threads": ["--threads"],
     "--head-triangles": ["--head-triangles"],
     "--texture-size": ["--texture-size"],
     "--units-per-mm": ["--units-per-mm"],
-    "--scale": ["--scale"],
-    "--lut": ["--lut"],
-    "--blur-iterations": ["--blur-iterations"],
-    "--blur-width-mm": ["--blur-width-mm"],
-    "--normal-offset-mm": ["--normal-offset-mm"],
-    "--lobe1": ["--lobe1"],
-    "--lobe2": ["--lobe2"],
-    "--specular-intensity": ["--specular-intensity"],
-    "--resolution": ["--resolution"],
-    "--lod-distance": ["--lod-distance"],
-    "--preintegrated-lut": ["--preintegrated-lut"],
-    "--wrap": ["--wrap"],
-    "--burley-samples": ["--burley-samples"],
-    "--burley-distance-mm": ["--burley-distance-mm"],
-    "--texture-space-size": ["--texture-space-size"],
 }
+# A knob whose values are only words ("on or off", "ks_lut, ks, ggx or dual_ggx") takes none.
+WORDS_ONLY = re.compile(r"[a-z_-]+((, | or )[a-z_-]+)*")
+KNOBS = json.loads(subprocess.run([SKINSIM, "knobs", "--json"], capture_output=True,
+                                  check=True).stdout)
+for knob in KNOBS:
+    if not WORDS_ONLY.fullmatch(knob["values"]):
+        NUMERIC_OPTIONS[knob["option"]] = [knob["option"], knob["name"]]
+if len(NUMERIC_OPTIONS) < 4 + 25:
+    sys.exit(f"FAIL: only {len(NUMERIC_OPTIONS) - 4} numeric knobs in `skinsim knobs --json`")
 BAD_VALUES = ["nan", "inf", "-inf", "1e308", "0x10", " 1", "1 ", ""]
 
 

@@ -30,6 +30,15 @@ std::vector<sim::NamedProfile> programs() {
   return s;
 }
 
+KnobSpec blur_iterations_knob() {
+  KnobSpec k =
+      swept_by(integer_knob("blur_iterations", "--blur-iterations", "Separable blur iterations",
+                            &PipelineConfig::blur_iterations, 1, 8),
+               "--blur-iterations", "Blur iteration counts, e.g. 1,2,4");
+  k.id_prefix = "blur";
+  return k;
+}
+
 }  // namespace
 
 const TechniqueSpec& mobile_technique() {
@@ -39,11 +48,12 @@ const TechniqueSpec& mobile_technique() {
       .summary = "GPU Pro 5 screen-space irradiance pipeline (docs/pipeline.md)",
       .knobs =
           {
-              real_knob("scale", "--scale",
-                        "Integration-buffer size per axis as a fraction of the frame",
-                        &PipelineConfig::scale, {0.0, 1.0, true, false}),
-              integer_knob("blur_iterations", "--blur-iterations", "Separable blur iterations",
-                           &PipelineConfig::blur_iterations, 1, 8),
+              swept_by(real_knob("scale", "--scale",
+                                 "Integration-buffer size per axis as a fraction of the frame",
+                                 &PipelineConfig::scale, {0.0, 1.0, true, false}),
+                       "--scales",
+                       "Integration-buffer scales, e.g. 1,0.5,0.25,0.125 (default sweep: those)"),
+              blur_iterations_knob(),
               optional_real_knob("blur_width_mm", "--blur-width-mm",
                                  "Blur standard deviation on the skin in mm (auto: from the "
                                  "six-Gaussian profile)",
