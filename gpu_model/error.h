@@ -1,5 +1,5 @@
-// User-facing errors of the cost model. Each message names the file (profiles) or the pass
-// and field (counters) at fault.
+// Errors of the cost model. Each message names the file (profiles) or the pass and field
+// (counters) at fault.
 #pragma once
 
 #include <stdexcept>
@@ -21,10 +21,12 @@ class ProfileError : public Error {
   using Error::Error;
 };
 
-// Pass counters are inconsistent with themselves or with the device profile.
-class CounterError : public Error {
+// Pass counters are inconsistent with themselves or with the device profile. Counters come
+// only from the emulator, so this is a bug in skinsim, not bad input: it is no UserError, and
+// `skinsim` reports it as an internal error (exit 3).
+class CounterError : public std::logic_error {
  public:
-  using Error::Error;
+  using std::logic_error::logic_error;
 };
 
 }  // namespace skinsim::gpu_model

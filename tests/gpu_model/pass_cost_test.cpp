@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <type_traits>
+
 #include "gpu_model/error.h"
 #include "gpu_model/tile_schedule.h"
 #include "test_support.h"
@@ -259,6 +261,10 @@ TEST(PassCost, MoreBandwidthIsNeverSlower) {
   p.dram_peak_gb_per_s.value = 0.1;
   EXPECT_EQ(estimate_pass(pass, p).bottleneck, Unit::kBandwidth);
 }
+
+// Counters come only from the emulator: inconsistent ones are a bug in skinsim (exit 3), not
+// bad input (exit 2, UserError).
+static_assert(!std::is_base_of_v<UserError, CounterError>);
 
 std::string counter_error(const sim::PassCounters& pass, const DeviceProfile& p) {
   try {
