@@ -18,6 +18,7 @@
 #include "scene/load_warnings.h"
 #include "scene/scene_scale.h"
 #include "scene/skin_albedo.h"
+#include "scene/sole_skin.h"
 #include "scene/studio_lighting.h"
 #include "scene/validate.h"
 
@@ -207,6 +208,11 @@ Scene load_gltf(const std::string& path, const LoadOptions& opts) {
   }
 
   classify_materials(scene, opts.skin_materials);
+  if (opts.skin_materials.empty()) {
+    if (const std::string note = take_sole_material_as_skin(scene); !note.empty()) {
+      warn(fmt::format("{}: {}", path, note));
+    }
+  }
   size_scene(scene, opts.units_per_mm, warn);
   const Bounds bounds = scene_bounds(scene);
   if (!apply_file_camera(model, nodes, bounds, path, scene.camera)) {

@@ -123,6 +123,8 @@ struct Scene {
 //   2. glTF extras {"skinsim": {"kind": "skin"|"eye"|"other"}};
 //   3. a name containing "skin" (any case) is skin; containing "eye" is eye;
 //   4. otherwise other.
+// The glTF loader then takes a scan's only material as skin when its shape is a head
+// (sole_skin.h).
 void classify_materials(Scene& scene, const std::vector<std::string>& skin_override);
 
 }  // namespace skinsim::scene

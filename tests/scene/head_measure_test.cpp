@@ -20,6 +20,7 @@
 #include "scene/procedural_head.h"
 #include "scene/scene_scale.h"
 #include "scene/skin_albedo.h"
+#include "scene/sole_skin.h"
 #include "tests/scene/gltf_fixture.h"
 #include "tests/test_paths.h"
 
@@ -251,6 +252,73 @@ TEST_F(SkinAlbedo, BadInputNamesTheOption) {
       EXPECT_NE(std::string(e.what()).find("--skin-albedo"), std::string::npos) << e.what();
     }
   }
+}
+
+// The built-in head's skin alone, as a scan without names would have it: one material.
+Scene unnamed_head_scan(const std::vector<std::string>& material_names) {
+  Scene s;
+  const Scene& builtin = builtin_head();
+  for (const std::string& name : material_names) {
+    Material m;
+    m.name = name;
+    s.materials.push_back(m);
+  }
+  for (const Mesh& m : builtin.meshes) {
+    if (builtin.materials[m.material].kind != MaterialKind::kSkin) continue;
+    Mesh copy = m;
+    copy.material = 0;
+    s.meshes.push_back(std::move(copy));
+  }
+  classify_materials(s, {});
+  return s;
+}
+
+TEST(SoleSkin, AScansOnlyMaterialShapedLikeAHeadIsSkin) {
+  Scene s = unnamed_head_scan({"Material.002"});
+  ASSERT_EQ(s.materials[0].kind, MaterialKind::kOther);  // by name
+  const std::string note = take_sole_material_as_skin(s);
+  EXPECT_EQ(s.materials[0].kind, MaterialKind::kSkin);
+  EXPECT_NE(note.find("'Material.002' is taken as skin"), std::string::npos) << note;
+}
+
+TEST(SoleSkin, NotWhenTwoMaterialsCouldBeSkinOrOneIsMarkedOther) {
+  Scene two = unnamed_head_scan({"Material.002", "Material.003"});
+  EXPECT_EQ(take_sole_material_as_skin(two), "");
+  EXPECT_EQ(two.materials[0].kind, MaterialKind::kOther);
+  Scene marked = unnamed_head_scan({"Material.002"});
+  marked.materials[0].extras_kind = "other";
+  EXPECT_EQ(take_sole_material_as_skin(marked), "");
+  EXPECT_EQ(marked.materials[0].kind, MaterialKind::kOther);
+}
+
+TEST(SoleSkin, NotWhenItsShapeIsNoHead) {
+  Scene card;
+  card.materials.push_back(Material{});
+  card.materials[0].name = "card";
+  Mesh quad;
+  quad.material = 0;
+  quad.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+  quad.normals.assign(4, glm::vec3(0, 0, 1));
+  quad.indices = {0, 1, 2, 0, 2, 3};
+  card.meshes.push_back(quad);
+  EXPECT_EQ(take_sole_material_as_skin(card), "");
+  EXPECT_EQ(card.materials[0].kind, MaterialKind::kOther);
+}
+
+TEST(SoleSkin, LeePerrySmithIsSkinWithoutSkinMaterials) {
+  const std::string path = test_paths::kLeePerrySmith;
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "asset not found: " << path;
+  std::vector<std::string> warnings;
+  LoadOptions o;
+  o.environment_size = 4;
+  o.warn = collect(&warnings);
+  const Scene s = load_gltf(path, o);
+  ASSERT_EQ(s.materials.size(), 1u);
+  EXPECT_EQ(s.materials[0].kind, MaterialKind::kSkin);
+  ASSERT_TRUE(s.head);
+  bool said = false;
+  for (const std::string& w : warnings) said = said || w.find("is taken as skin") != w.npos;
+  EXPECT_TRUE(said);
 }
 
 }  // namespace
