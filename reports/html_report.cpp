@@ -121,8 +121,8 @@ std::string verdicts_section(const SweepTable& t, const ReportOptions& o) {
   const std::vector<std::string> unswept = unswept_knobs(t);
   if (!unswept.empty()) {
     h +=
-        esc(fmt::format(" The other {} knobs had one value in every configuration (listed "
-                        "above the table), so the sweep says nothing about them.",
+        esc(fmt::format(" The other {} knobs had one value wherever they apply, so the sweep "
+                        "says nothing about them.",
                         unswept.size()));
   }
   return h + "</p>\n</div>\n";
@@ -180,7 +180,9 @@ std::string panel_html(const SweepTable& t, const ComparisonPanel& p) {
   }
   return "<h3>" + esc(p.group) + "</h3>\n" + image_slider_html(frames, left, 0, p.difference_gain) +
          crop_windows_html(p.windows) +
-         colour_bar_html(p.colour_bar, p.difference_gain, "|recommended - reference|");
+         colour_bar_html(p.colour_bar, p.difference_gain,
+                         p.best == p.chosen ? "|recommended - reference|"
+                                            : "|recommended - reference| and |recommended - best|");
 }
 
 std::string comparison_section(const SweepTable& t) {

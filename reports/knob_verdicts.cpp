@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -67,23 +68,16 @@ std::string area_of(const std::string& metric) {
   return metric == "flip_skin" ? "skin" : "the frame";
 }
 
-// Knobs with two or more values (or present in some rows only) within some group.
+// Knobs with two or more values within some group (a knob only some techniques use counts
+// its values where it is used).
 std::set<std::string> judged_knobs(const SweepTable& t) {
+  std::map<std::pair<std::string, std::string>, std::set<std::string>> values;  // (group, knob)
+  for (const ConfigResult& r : t.rows) {
+    for (const auto& [k, v] : r.knobs) values[{r.group, k}].insert(v);
+  }
   std::set<std::string> out;
-  for (const std::string& group : groups_in_order(t)) {
-    std::map<std::string, std::set<std::string>> values;
-    std::size_t members = 0;
-    for (const ConfigResult& r : t.rows) {
-      if (r.group != group) continue;
-      ++members;
-      for (const auto& [k, v] : r.knobs) values[k].insert(v);
-    }
-    for (const auto& [k, vs] : values) {
-      const std::size_t with = static_cast<std::size_t>(std::count_if(
-          t.rows.begin(), t.rows.end(),
-          [&](const ConfigResult& r) { return r.group == group && r.knobs.count(k); }));
-      if (vs.size() > 1 || with < members) out.insert(k);
-    }
+  for (const auto& [key, vs] : values) {
+    if (vs.size() > 1) out.insert(key.second);
   }
   return out;
 }
@@ -176,6 +170,8 @@ std::vector<const ConfigResult*> sorted_by_value(std::vector<const ConfigResult*
   return rows;
 }
 
+// Each technique's finest row against the group's best: its frame time, and whether it
+// looks different (vs_best).
 KnobVerdict technique_verdict(const std::string& group, const std::map<std::string, Rows>& techs,
                               const std::string& metric) {
   KnobVerdict v;
@@ -192,10 +188,28 @@ KnobVerdict technique_verdict(const std::string& group, const std::map<std::stri
     return v;
   }
   v.around = best->id;
-  const std::string time = time_part(finest, *best, kTechnique, v.time_effect);
-  const std::string seen =
-      visible_part(finest, *best, kTechnique, &ConfigResult::vs_best, metric, v.visible_effect);
-  v.sentence = fmt::format("technique (each at its best knobs): {}; {}.", time, seen);
+  const double threshold = kNoTimeEffect * best->frame_ms;
+  std::string others;
+  for (const ConfigResult* f : finest) {
+    if (f == best) continue;
+    const double delta = f->frame_ms - best->frame_ms;
+    v.time_effect = v.time_effect || std::abs(delta) >= threshold;
+    const std::string time = std::abs(delta) < threshold ? "no time difference"
+                             : delta < 0.0               ? fmt::format("saves {:.2f} ms", -delta)
+                                           : fmt::format("costs {:.2f} ms more", delta);
+    std::string seen = "not compared";
+    if (f->vs_best && f->vs_best->against == best->id) {
+      v.visible_effect = v.visible_effect || f->vs_best->visible;
+      seen = f->vs_best->visible ? fmt::format("visibly different on {} px of {}",
+                                               count_text(f->vs_best->visible_px), area_of(metric))
+                                 : "looks the same";
+    }
+    others +=
+        fmt::format("; {} {:.2f} ms ({}), {}", knob_value(*f, kTechnique), f->frame_ms, time, seen);
+  }
+  v.sentence = fmt::format(
+      "technique (each at its best knobs): {} is the closest to the reference at {:.2f} ms{}.",
+      knob_value(*best, kTechnique), best->frame_ms, others);
   return v;
 }
 
@@ -308,9 +322,7 @@ std::vector<std::string> unswept_knobs(const SweepTable& table) {
   }
   std::vector<std::string> out;
   for (const auto& [k, vs] : values) {
-    const bool everywhere = std::all_of(table.rows.begin(), table.rows.end(),
-                                        [&](const ConfigResult& r) { return r.knobs.count(k); });
-    if (vs.size() == 1 && everywhere) out.push_back(k + "=" + *vs.begin());
+    if (vs.size() == 1) out.push_back(k + "=" + *vs.begin());
   }
   return out;
 }

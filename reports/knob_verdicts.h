@@ -58,7 +58,8 @@ struct TechniqueError {
 
 std::vector<TechniqueError> technique_errors(const SweepTable& table, const std::string& metric);
 
-// Knobs with one value in every row (they are not judged), "name=value" sorted by name.
+// Knobs with one value wherever they are used (they are not judged), "name=value" sorted by
+// name.
 std::vector<std::string> unswept_knobs(const SweepTable& table);
 
 // The findings results.json keeps beside the rows: metric, recommendations, knob verdicts
