@@ -228,7 +228,25 @@ std::string errors_html(const SweepTable& t, const ReportOptions& o) {
   for (const TechniqueError& e : errors) {
     h += "<li>" + esc(e.group.empty() ? "" : e.group + ": ") + esc(e.sentence) + "</li>\n";
   }
-  return h + "</ul>\n";
+  h += "</ul>\n";
+  std::size_t compared = 0, visible = 0;
+  for (const ConfigResult& r : t.rows) {
+    if (r.reference_image.empty()) continue;
+    ++compared;
+    visible += r.visible_vs_reference;
+  }
+  if (compared > 0) {
+    h += "<p>" +
+         esc(fmt::format(
+             "{} of {} configurations differ visibly from the reference (visible vs reference){}",
+             visible, compared,
+             visible == compared
+                 ? ": every technique's best does too, so that column measures the technique "
+                   "error, and the knobs are told apart by visible vs finest."
+                 : ".")) +
+         "</p>\n";
+  }
+  return h;
 }
 
 std::string table_section(const SweepTable& t, const ReportOptions& o,

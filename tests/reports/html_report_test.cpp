@@ -204,6 +204,18 @@ TEST(HtmlReport, ExplainsTechniqueErrorAgainstKnobErrorBesideTheTable) {
   EXPECT_NE(text.find("Technique error and knob error"), std::string::npos);
   const TechniqueError e = technique_errors(sweep, "flip_skin").front();
   EXPECT_NE(text.find(html_escape(e.sentence)), std::string::npos) << e.sentence;
+  // Every row visibly different from the reference: the page says what that column measures.
+  SweepTable all_visible = sweep;
+  for (ConfigResult& r : all_visible.rows) {
+    r.reference_image = "refs/reference.png";
+    r.visible_vs_reference = true;
+  }
+  const std::string explained = section_of(
+      read_text(write_report(all_visible, fresh_output_dir(), no_charts())), "Configurations");
+  EXPECT_NE(explained.find("16 of 16 configurations differ visibly from the reference (visible "
+                           "vs reference): every technique&#39;s best does too"),
+            std::string::npos)
+      << explained.substr(0, 3000);
 }
 
 TEST(HtmlReport, TheSliderOffersEveryFrameOfTheGroupAndTheirDifference) {
