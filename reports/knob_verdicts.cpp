@@ -18,14 +18,6 @@ namespace {
 
 constexpr const char* kTechnique = "technique";
 
-std::vector<std::string> groups_in_order(const SweepTable& t) {
-  std::vector<std::string> order;
-  for (const ConfigResult& r : t.rows) {
-    if (std::find(order.begin(), order.end(), r.group) == order.end()) order.push_back(r.group);
-  }
-  return order;
-}
-
 // A group's rows of one technique, in table order.
 using Rows = std::vector<const ConfigResult*>;
 
@@ -35,21 +27,6 @@ std::map<std::string, Rows> by_technique(const SweepTable& t, const std::string&
     if (r.group == group) out[knob_value(r, kTechnique)].push_back(&r);
   }
   return out;
-}
-
-// The lowest metric; ties: the cheaper, then the earlier (the rule vs_finest and vs_best
-// were measured against, driver/sweep_comparisons.h).
-const ConfigResult* finest_of(const Rows& rows, const std::string& metric) {
-  const ConfigResult* best = nullptr;
-  for (const ConfigResult* r : rows) {
-    const auto q = r->quality.find(metric);
-    if (q == r->quality.end()) continue;
-    if (!best || q->second < best->quality.at(metric) ||
-        (q->second == best->quality.at(metric) && r->frame_ms < best->frame_ms)) {
-      best = r;
-    }
-  }
-  return best;
 }
 
 // "1,234": pixel counts read at a glance.
@@ -179,9 +156,9 @@ KnobVerdict technique_verdict(const std::string& group, const std::map<std::stri
   v.knob = kTechnique;
   std::vector<const ConfigResult*> finest;
   for (const auto& [technique, rows] : techs) {
-    if (const ConfigResult* f = finest_of(rows, metric)) finest.push_back(f);
+    if (const ConfigResult* f = lowest_metric(rows, metric)) finest.push_back(f);
   }
-  const ConfigResult* best = finest_of(finest, metric);
+  const ConfigResult* best = lowest_metric(finest, metric);
   if (!best) {
     v.kind = KnobVerdict::Kind::not_isolated;
     v.sentence = "technique: no technique has the quality metric, so none is judged.";
@@ -261,7 +238,7 @@ std::vector<KnobVerdict> knob_verdicts(const SweepTable& table, const std::strin
     const std::map<std::string, Rows> techs = by_technique(table, group);
     if (techs.size() > 1) out.push_back(technique_verdict(group, techs, metric));
     for (const auto& [technique, rows] : techs) {
-      const ConfigResult* around = finest_of(rows, metric);
+      const ConfigResult* around = lowest_metric(rows, metric);
       if (!around) continue;
       for (const std::string& knob : judged) {
         if (knob == kTechnique || !around->knobs.count(knob)) continue;  // not its knob
@@ -276,7 +253,7 @@ std::vector<TechniqueError> technique_errors(const SweepTable& table, const std:
   std::vector<TechniqueError> out;
   for (const std::string& group : groups_in_order(table)) {
     for (const auto& [technique, rows] : by_technique(table, group)) {
-      const ConfigResult* finest = finest_of(rows, metric);
+      const ConfigResult* finest = lowest_metric(rows, metric);
       if (!finest) continue;
       TechniqueError e;
       e.group = group;

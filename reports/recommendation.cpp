@@ -136,26 +136,44 @@ std::string recommend_metric(const std::vector<ConfigResult>& rows) {
   return any_skin ? "flip_skin" : "flip_frame";
 }
 
-std::vector<Recommendation> recommend(const SweepTable& table, const std::string& metric) {
+std::vector<std::string> groups_in_order(const SweepTable& table) {
   std::vector<std::string> order;
   for (const ConfigResult& r : table.rows) {
     if (std::find(order.begin(), order.end(), r.group) == order.end()) order.push_back(r.group);
   }
+  return order;
+}
+
+const ConfigResult* lowest_metric(const std::vector<const ConfigResult*>& rows,
+                                  const std::string& metric) {
+  const ConfigResult* best = nullptr;
+  for (const ConfigResult* r : rows) {
+    const auto q = r->quality.find(metric);
+    if (q == r->quality.end()) continue;
+    if (!best || q->second < best->quality.at(metric) ||
+        (q->second == best->quality.at(metric) && r->frame_ms < best->frame_ms)) {
+      best = r;
+    }
+  }
+  return best;
+}
+
+std::vector<Recommendation> recommend(const SweepTable& table, const std::string& metric) {
   std::vector<Recommendation> out;
-  for (const std::string& group : order) {
+  for (const std::string& group : groups_in_order(table)) {
     Recommendation rec;
     rec.group = group;
     Members members;
+    std::vector<const ConfigResult*> candidates;
     for (std::size_t i = 0; i < table.rows.size(); ++i) {
       const ConfigResult& r = table.rows[i];
       if (r.group != group || !r.quality.count(metric)) continue;
       members.rows.push_back(r);
       members.index.push_back(i);
-      if (!rec.best || r.quality.at(metric) < table.rows[*rec.best].quality.at(metric) ||
-          (r.quality.at(metric) == table.rows[*rec.best].quality.at(metric) &&
-           r.frame_ms < table.rows[*rec.best].frame_ms)) {
-        rec.best = i;
-      }
+      candidates.push_back(&r);
+    }
+    if (const ConfigResult* best = lowest_metric(candidates, metric)) {
+      rec.best = static_cast<std::size_t>(best - table.rows.data());
     }
     if (rec.best) {
       const Pick chosen =

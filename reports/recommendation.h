@@ -49,6 +49,15 @@ std::vector<Recommendation> recommend(const SweepTable& table, const std::string
 // shows skin), else flip_frame.
 std::string recommend_metric(const std::vector<ConfigResult>& rows);
 
+// The groups of the table's rows, in first-appearance order.
+std::vector<std::string> groups_in_order(const SweepTable& table);
+
+// The best of `rows` by `metric` (lower is better); ties: the cheaper, then the earlier (the
+// rule vs_finest and vs_best were measured against, driver/sweep_comparisons.h). nullptr when
+// no row has the metric.
+const ConfigResult* lowest_metric(const std::vector<const ConfigResult*>& rows,
+                                  const std::string& metric);
+
 // The rule above, for the report.
 std::string recommendation_rule_text();
 
