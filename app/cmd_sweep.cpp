@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 
 #include "app/cli_options.h"
 #include "app/commands.h"
@@ -23,6 +24,7 @@
 #include "driver/sweep_spec.h"
 #include "io/run_directory.h"
 #include "io/temp_files.h"
+#include "reports/knob_verdicts.h"
 #include "reports/recommendation.h"
 
 namespace skinsim::app {
@@ -110,10 +112,23 @@ driver::SweepSpec build_spec(const SweepOptions& o, const CLI::App& cmd) {
   return spec;
 }
 
+// What each knob did, in one sentence per knob and group, then each group's recommendation
+// with its range and runner-up (the report's first two sections).
 void print_recommendations(const reports::SweepTable& table) {
-  for (const reports::Recommendation& r :
-       reports::recommend(table, driver::recommend_metric(table.rows))) {
+  const std::string metric = reports::recommend_metric(table.rows);
+  std::optional<std::string> group;
+  for (const reports::KnobVerdict& v : reports::knob_verdicts(table, metric)) {
+    if (v.group != group) {
+      group = v.group;
+      fmt::print("knob verdicts for {}:\n", *group);
+    }
+    fmt::print("  {}\n", v.sentence);
+  }
+  for (const reports::Recommendation& r : reports::recommend(table, metric)) {
     fmt::print("recommended for {}: {}\n", r.group, r.verdict);
+    for (const std::string* note : {&r.range_note, &r.runner_up_note}) {
+      if (!note->empty()) fmt::print("  {}\n", *note);
+    }
   }
 }
 

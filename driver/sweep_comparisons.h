@@ -15,7 +15,7 @@ namespace skinsim::driver {
 
 // Sets every row's group ("ipad4, 2048x1536", plus the swept light and framing knobs that
 // shape the reference), vs_finest and vs_best. `metric` picks the best rows (lower is better;
-// recommend_metric). Rows whose images are missing keep no comparison.
+// reports::recommend_metric). Rows whose images are missing keep no comparison.
 void add_comparisons(const SweepSpec& spec, reports::SweepTable& table,
                      const std::filesystem::path& sweep_dir, const std::string& metric);
 

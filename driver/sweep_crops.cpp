@@ -49,13 +49,20 @@ std::vector<reports::ComparisonPanel> write_comparison_panels(
       searches.emplace_back("largest difference from the best configuration",
                             flip_error_map(chosen_frame, best_frame, mask));
     }
+    // Each window shows both differences, so a window found against the best shows the
+    // difference it was found in, not only the one against the reference.
     const quality::Image difference = amplified_difference(chosen_frame, reference);
+    const quality::Image from_best = amplified_difference(chosen_frame, best_frame);
     std::vector<NamedImage> images = {
         {"reference", &reference},
         {"best: " + best.id, &best_frame},
         {"recommended: " + chosen.id, &chosen_frame},
-        {fmt::format("|recommended - reference| x {:g}", kDifferenceGain), &difference}};
-    if (*rec.chosen == *rec.best) images.erase(images.begin() + 1);  // best == recommended
+        {fmt::format("|recommended - reference| x {:g}", kDifferenceGain), &difference},
+        {fmt::format("|recommended - best| x {:g}", kDifferenceGain), &from_best}};
+    if (*rec.chosen == *rec.best) {  // best == recommended
+      images.pop_back();
+      images.erase(images.begin() + 1);
+    }
     // The fixed places first (an eye, the lips, a shadow edge, the silhouette), then where the
     // error is worst.
     std::vector<std::string> not_found;

@@ -4,6 +4,7 @@
 #include "driver/sweep_thumbnails.h"
 #include "reports/display_check.h"
 #include "reports/html_report.h"
+#include "reports/recommendation.h"
 
 namespace skinsim::driver {
 
@@ -22,7 +23,7 @@ SweepReportOutcome write_sweep_report(reports::SweepTable& table, const std::str
     charts = false;
   }
   reports::ReportOptions options;
-  options.quality_metric = recommend_metric(table.rows);
+  options.quality_metric = reports::recommend_metric(table.rows);
   if (options.quality_metric == "flip_frame") {
     options.metric_label =
         "FLIP mean over the frame (lower is better; the reference shows no skin)";

@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include <algorithm>
 #include <filesystem>
 #include <optional>
 #include <set>
@@ -34,13 +33,6 @@ std::string joined(const std::set<std::string>& values) {
 
 }  // namespace
 
-std::string recommend_metric(const std::vector<reports::ConfigResult>& rows) {
-  const bool any_skin = std::any_of(rows.begin(), rows.end(), [](const reports::ConfigResult& r) {
-    return r.quality.count("flip_skin") > 0;
-  });
-  return any_skin ? "flip_skin" : "flip_frame";
-}
-
 reports::SweepTable assemble_sweep_table(const SweepSpec& spec,
                                          const std::vector<SweepConfig>& configs,
                                          const std::map<std::string, nlohmann::json>& fingerprints,
@@ -66,7 +58,7 @@ reports::SweepTable assemble_sweep_table(const SweepSpec& spec,
   table.resolution = joined(resolutions);
   if (stored.empty()) return table;
 
-  const std::string metric = recommend_metric(table.rows);
+  const std::string metric = reports::recommend_metric(table.rows);
   add_comparisons(spec, table, out_dir, metric);
   const std::vector<reports::Recommendation> recommendations = reports::recommend(table, metric);
   const std::optional<std::size_t> first = recommendations.front().chosen;
@@ -85,7 +77,7 @@ reports::SweepTable assemble_sweep_table(const SweepSpec& spec,
 
 void finish_sweep_data(reports::SweepTable& table, const std::string& out_dir) {
   if (!table.rows.empty()) {
-    const std::string metric = recommend_metric(table.rows);
+    const std::string metric = reports::recommend_metric(table.rows);
     table.panels = write_comparison_panels(table, reports::recommend(table, metric), out_dir,
                                            metric == "flip_skin");
   }

@@ -13,11 +13,6 @@
 
 namespace skinsim::driver {
 
-// The quality metric that picks the recommended configuration (lower is better): FLIP over
-// skin, or over the whole frame when no row has skin metrics (the scene shows no skin, and
-// the sweep said why).
-std::string recommend_metric(const std::vector<reports::ConfigResult>& rows);
-
 // Rows for the configurations of `configs` that are finished in `out_dir` with the fingerprint
 // run_sweep expects (`fingerprints`, SweepRunSummary::fingerprints), in expansion order;
 // unfinished ones and another sweep's results stored under the same ids are left out. Each row

@@ -12,6 +12,7 @@
 #include "reports/csv_writer.h"
 #include "reports/error.h"
 #include "reports/image_compare_html.h"
+#include "reports/knob_verdicts.h"
 #include "reports/palette.h"
 #include "reports/pareto.h"
 #include "reports/recommendation.h"
@@ -92,6 +93,41 @@ std::string header_section(const SweepTable& t, const ReportOptions& o) {
   return h;
 }
 
+// One sentence per knob, per group, from the sweep's own rows (knob_verdicts).
+std::string verdicts_section(const SweepTable& t, const ReportOptions& o) {
+  const std::vector<KnobVerdict> verdicts = knob_verdicts(t, o.quality_metric);
+  std::string h = "<h2>What each knob does</h2>\n<div class=\"summary\">\n";
+  if (verdicts.empty()) h += "<p>No knob was varied within a group, so none is judged.</p>\n";
+  std::optional<std::string> group;
+  for (const KnobVerdict& v : verdicts) {
+    if (v.group != group) {
+      if (group) h += "</ul>\n";
+      group = v.group;
+      h += "<p><b>" + esc(v.group.empty() ? "All configurations" : v.group) + "</b></p>\n<ul>\n";
+    }
+    h += "<li>" + esc(v.sentence) + "</li>\n";
+  }
+  if (group) h += "</ul>\n";
+  h += "<p><i>How these are measured:</i> each knob is varied around its technique's finest "
+       "configuration (the lowest " +
+       esc(o.quality_metric) +
+       " against the reference): the configurations that differ from it in that knob alone "
+       "give its frame times and, compared with the finest frame, its visible effect (the "
+       "visibility rule under Recommendation). " +
+       esc(fmt::format("A change under {:g}% of the frame time is reported as no time effect.",
+                       kNoTimeEffect * 100.0)) +
+       " The technique is judged on each technique's finest configuration against the "
+       "group's best.";
+  const std::vector<std::string> unswept = unswept_knobs(t);
+  if (!unswept.empty()) {
+    h +=
+        esc(fmt::format(" The other {} knobs had one value wherever they apply, so the sweep "
+                        "says nothing about them.",
+                        unswept.size()));
+  }
+  return h + "</p>\n</div>\n";
+}
+
 std::string recommendation_section(const SweepTable& t, const ReportOptions& o,
                                    const std::vector<Recommendation>& recommendations) {
   std::string h = "<h2>Recommendation</h2>\n<div class=\"recommend\">\n";
@@ -114,6 +150,9 @@ std::string recommendation_section(const SweepTable& t, const ReportOptions& o,
       for (const auto& [k, v] : r.knobs) h += "<code>" + esc(k) + "=" + esc(v) + "</code> ";
     }
     h += "</p>\n";
+    for (const std::string* note : {&rec.range_note, &rec.runner_up_note}) {
+      if (!note->empty()) h += "<p>" + esc(*note) + "</p>\n";
+    }
   }
   h += "<p><i>How it is chosen:</i> " + esc(recommendation_rule_text()) + "</p>\n";
   h += "<p><i>Frame-time ranges</i> (low to high) are the cost model re-evaluated with every "
@@ -123,26 +162,38 @@ std::string recommendation_section(const SweepTable& t, const ReportOptions& o,
   return h;
 }
 
-// A slider between two of the panel's full frames, then per window the crops at 1:1 and
-// magnified, with the difference's colour scale.
-std::string panel_html(const ComparisonPanel& p) {
-  std::vector<std::pair<std::string, std::string>> frames = {
-      {"reference", p.reference_image},
-      {"recommended: " + p.chosen, p.chosen_image},
-      {"best: " + p.best, p.best_image}};
-  if (p.best == p.chosen) frames.pop_back();
-  return "<h3>" + esc(p.group) + "</h3>\n" + image_slider_html(frames, 1, 0) +
+// A slider between any two of the group's full frames (the reference and every configuration,
+// the recommended one on the left), with their difference; then per window the crops at 1:1
+// and magnified, with the difference's colour scale.
+std::string panel_html(const SweepTable& t, const ComparisonPanel& p) {
+  std::vector<std::pair<std::string, std::string>> frames = {{"reference", p.reference_image}};
+  std::size_t left = 0;
+  for (const ConfigResult& r : t.rows) {
+    if (r.group != p.group || r.frame_image.empty()) continue;
+    std::string what = r.id == p.chosen ? "recommended: " : r.id == p.best ? "best: " : "";
+    if (r.id == p.chosen) left = frames.size();
+    frames.emplace_back(what + name_of(r), r.frame_image);
+  }
+  if (left == 0) {  // a panel from a results.json whose rows lack frames: its own two
+    frames.emplace_back("recommended: " + p.chosen, p.chosen_image);
+    left = frames.size() - 1;
+  }
+  return "<h3>" + esc(p.group) + "</h3>\n" + image_slider_html(frames, left, 0, p.difference_gain) +
          crop_windows_html(p.windows) +
-         colour_bar_html(p.colour_bar, p.difference_gain, "|recommended - reference|");
+         colour_bar_html(p.colour_bar, p.difference_gain,
+                         p.best == p.chosen ? "|recommended - reference|"
+                                            : "|recommended - reference| and |recommended - best|");
 }
 
 std::string comparison_section(const SweepTable& t) {
   if (t.panels.empty()) return "";
   std::string h =
-      "<h2>What the recommendation looks like</h2>\n<p>The reference, the recommended "
-      "configuration and the group's best configuration, whole and where they differ most "
-      "(windows found in the FLIP error over skin). Click any image for full size.</p>\n";
-  for (const ComparisonPanel& p : t.panels) h += panel_html(p);
+      "<h2>What the recommendation looks like</h2>\n<p>Pick any two frames of the group (the "
+      "reference or any configuration) for the slider, flip between them, or tick "
+      "<i>difference</i> to see where they differ. Below, the windows where the recommended "
+      "frame differs most (found in the FLIP error over skin), cut out of the reference, the "
+      "best and the recommended frame. Click any image for full size.</p>\n";
+  for (const ComparisonPanel& p : t.panels) h += panel_html(t, p);
   return h + image_compare_script();
 }
 
@@ -162,6 +213,42 @@ std::string yes_no(bool v) {
   return v ? "yes" : "no";
 }
 
+// Technique error against knob error, per technique and group (technique_errors).
+std::string errors_html(const SweepTable& t, const ReportOptions& o) {
+  const std::vector<TechniqueError> errors = technique_errors(t, o.quality_metric);
+  if (errors.empty()) return "";
+  std::string h =
+      "<p><b>Technique error and knob error.</b> A configuration's " + esc(o.quality_metric) +
+      " against the reference mixes two things: what its technique approximates, which even "
+      "its best knob values leave (the <i>technique error</i>: the technique's finest "
+      "configuration against the reference), and what its own knob values add on top (the "
+      "<i>knob error</i>: its frame against that finest frame, the <i>FLIP vs finest</i> "
+      "column). A knob error far below the technique error means the knobs are not where the "
+      "quality goes.</p>\n<ul>\n";
+  for (const TechniqueError& e : errors) {
+    h += "<li>" + esc(e.group.empty() ? "" : e.group + ": ") + esc(e.sentence) + "</li>\n";
+  }
+  h += "</ul>\n";
+  std::size_t compared = 0, visible = 0;
+  for (const ConfigResult& r : t.rows) {
+    if (r.reference_image.empty()) continue;
+    ++compared;
+    visible += r.visible_vs_reference;
+  }
+  if (compared > 0) {
+    h += "<p>" +
+         esc(fmt::format(
+             "{} of {} configurations differ visibly from the reference (visible vs reference){}",
+             visible, compared,
+             visible == compared
+                 ? ": every technique's best does too, so that column measures the technique "
+                   "error, and the knobs are told apart by visible vs finest."
+                 : ".")) +
+         "</p>\n";
+  }
+  return h;
+}
+
 std::string table_section(const SweepTable& t, const ReportOptions& o,
                           const std::set<std::size_t>& chosen) {
   const auto [varying, fixed] = split_knobs(t);
@@ -170,7 +257,7 @@ std::string table_section(const SweepTable& t, const ReportOptions& o,
   for (std::size_t i : pareto_front(t.rows, o.quality_metric, o.higher_is_better)) {
     front.insert(i);
   }
-  std::string h = "<h2>Configurations</h2>\n";
+  std::string h = "<h2>Configurations</h2>\n" + errors_html(t, o);
   if (!fixed.empty()) {
     h += "<p>Same for every configuration: ";
     for (const auto& [k, v] : fixed) h += "<code>" + esc(k) + "=" + esc(v) + "</code> ";
@@ -397,7 +484,7 @@ std::string write_report(const SweepTable& table, const std::string& dir,
   std::string page = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
   page += "<title>" + esc(options.title) + "</title>\n<style>" + kPageStyle + kStyle +
           kImageCompareStyle + "</style>\n</head>\n";
-  page += "<body>\n" + header_section(table, options) +
+  page += "<body>\n" + header_section(table, options) + verdicts_section(table, options) +
           recommendation_section(table, options, recommendations) + comparison_section(table) +
           charts_section(figures, options.draw_charts) + timeline_section(table, chosen) +
           techniques_section(table, options) + table_section(table, options, chosen) +

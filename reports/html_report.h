@@ -1,6 +1,7 @@
-// report.html: the page a lead reads in two minutes: device and scene, the recommended
-// configuration and why, the charts, a per-configuration table, frame and error-map
-// thumbnails, and the model's assumptions with their sensitivity.
+// report.html: the page a lead reads in two minutes: device and scene, one sentence per
+// swept knob (knob_verdicts.h), the recommended configuration and why, the charts, a
+// per-configuration table, frame and error-map thumbnails, and the model's assumptions with their
+// sensitivity.
 #pragma once
 
 #include <functional>

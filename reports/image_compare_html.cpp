@@ -8,7 +8,7 @@ namespace skinsim::reports {
 
 const char* const kImageCompareStyle = R"(
 .stack { position: relative; max-width: 1024px; } .stack img { width: 100%; display: block; }
-.stack img.over { position: absolute; top: 0; left: 0; }
+.stack img.over { position: absolute; top: 0; left: 0; } .stack { isolation: isolate; }
 input.split { width: 100%; max-width: 1024px; }
 table.crops th, table.crops td { text-align: center; }
 table.crops th { font-size: 0.8em; max-width: 140px; overflow-wrap: anywhere; }
@@ -35,6 +35,13 @@ document.querySelectorAll('.compare').forEach(function (c) {
   c.querySelector('button.flip').addEventListener('click', function () {
     split.value = split.value > 50 ? 0 : 100; clip();
   });
+  var diff = c.querySelector('input.diff'), stack = c.querySelector('.stack');
+  if (diff) diff.addEventListener('change', function () {
+    over.style.mixBlendMode = diff.checked ? 'difference' : '';
+    stack.style.filter = diff.checked ? 'brightness(' + diff.value + ')' : '';
+    split.disabled = diff.checked;
+    if (diff.checked) over.style.clipPath = 'none'; else clip();
+  });
   clip();
 });
 )";
@@ -42,7 +49,7 @@ document.querySelectorAll('.compare').forEach(function (c) {
 }  // namespace
 
 std::string image_slider_html(const std::vector<std::pair<std::string, std::string>>& frames,
-                              std::size_t left, std::size_t right) {
+                              std::size_t left, std::size_t right, double difference_gain) {
   const auto options = [&](std::size_t selected) {
     std::string o;
     for (std::size_t i = 0; i < frames.size(); ++i) {
@@ -54,7 +61,14 @@ std::string image_slider_html(const std::vector<std::pair<std::string, std::stri
   std::string h = "<div class=\"compare\">\n<p>Left <select class=\"left\">" + options(left) +
                   "</select> right <select class=\"right\">" + options(right) +
                   "</select> <button type=\"button\" class=\"flip\">flip</button> (drag the "
-                  "slider, or flip to alternate the two as FLIP's observer does)</p>\n";
+                  "slider, or flip to alternate the two as FLIP's observer does)";
+  if (difference_gain > 0.0) {
+    h += fmt::format(
+        " <label><input type=\"checkbox\" class=\"diff\" value=\"{0:g}\"> difference</label> "
+        "(|left - right| per channel of the display values, x {0:g}: black where they agree)",
+        difference_gain);
+  }
+  h += "</p>\n";
   h += "<div class=\"stack\"><img class=\"under\" src=\"" + link(frames[right].second) +
        "\" alt=\"right image\"><img class=\"over\" src=\"" + link(frames[left].second) +
        "\" alt=\"left image\"></div>\n<input type=\"range\" min=\"0\" max=\"100\" "

@@ -16,9 +16,13 @@ namespace skinsim::reports {
 extern const char* const kImageCompareStyle;
 
 // A slider between frames[left] (shown left of the split) and frames[right]; the selects offer
-// every frame. Frames are (label, relative path). Needs image_compare_script() on the page.
+// every frame. Frames are (label, relative path). With `difference_gain` > 0 a checkbox shows
+// |left - right| instead, x difference_gain, for whichever two frames are selected: the
+// browser blends them (CSS mix-blend-mode: difference, then brightness), so any pair works
+// without a difference image per pair and without reading pixels in script (which a page
+// opened from file:// may not do). Needs image_compare_script() on the page.
 std::string image_slider_html(const std::vector<std::pair<std::string, std::string>>& frames,
-                              std::size_t left, std::size_t right);
+                              std::size_t left, std::size_t right, double difference_gain = 0.0);
 
 // Per window: what it shows and where, and its crops at 1:1 above the magnified ones.
 std::string crop_windows_html(const std::vector<CropWindow>& windows);

@@ -12,6 +12,7 @@
 #include "io/json_input.h"
 #include "io/read_file.h"
 #include "reports/error.h"
+#include "reports/knob_verdicts.h"
 
 namespace skinsim::reports {
 
@@ -530,7 +531,9 @@ void validate_sweep_table(const SweepTable& t) {
 
 void write_sweep_json(const SweepTable& table, const std::string& path) {
   validate_sweep_table(table);
-  io::write_file_atomically(path, json(table).dump(2) + "\n");
+  json j = table;
+  j["findings"] = findings_json(table);  // derived from the rows: parse_table skips it
+  io::write_file_atomically(path, j.dump(2) + "\n");
 }
 
 SweepTable read_sweep_json(const std::string& path) {

@@ -372,6 +372,31 @@ TEST(Cli, SweepWithAHungDisplayWritesTheReportWithoutCharts) {
   EXPECT_TRUE(std::filesystem::exists(dir / "results.json"));
 }
 
+// The sweep prints what each swept knob did and the recommendation's range and runner-up,
+// the same sentences results.json keeps under "findings".
+TEST(Cli, SweepPrintsEachKnobsVerdictAndTheRunnerUp) {
+  const auto dir = temp_dir("sweep_verdicts");
+  const Result r = run(
+      "sweep --no-charts --scales 1,0.25 --luts 8x32 --resolutions 128x96 --head-triangles 2000 "
+      "--texture-size 64 --out " +
+      dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::ifstream in(dir / "results.json");
+  const nlohmann::json findings = nlohmann::json::parse(in).at("findings");
+  ASSERT_EQ(findings.at("knob_verdicts").size(), 1u) << findings.dump(1);  // the scale
+  const std::string verdict = findings["knob_verdicts"][0]["sentence"];
+  EXPECT_EQ(verdict.rfind("scale (mobile): ", 0), 0u) << verdict;
+  EXPECT_NE(r.output.find("knob verdicts for ipad4, 128x96:\n  " + verdict + "\n"),
+            std::string::npos)
+      << r.output;
+  const nlohmann::json& rec = findings.at("recommendations").at(0);
+  for (const char* note : {"range_note", "runner_up_note"}) {
+    const std::string text = rec.at(note);
+    ASSERT_FALSE(text.empty()) << note;
+    EXPECT_NE(r.output.find("  " + text + "\n"), std::string::npos) << r.output;
+  }
+}
+
 // A scene whose skin materials match nothing: every configuration is still rendered and
 // measured over the whole frame, the sweep says once why there are no skin metrics and what to
 // pass, and recommends by FLIP over the frame.

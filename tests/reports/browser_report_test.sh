@@ -33,6 +33,10 @@ mkdir -p "$work"
   fail "the sweep failed: $(tail -n 5 "$work/sweep.log")"
 page=$work/sweep/report.html
 grep -q 'class="compare"' "$page" || fail "the report has no comparison panel"
+# Both sides of the slider offer the reference and both configurations, and a difference view.
+options=$(grep -o '<select class="left">.*</select> right' "$page" | grep -o '<option' | wc -l)
+((options == 3)) || fail "the slider's left side offers $options frames, expected 3"
+grep -q 'class="diff"' "$page" || fail "the slider has no difference view"
 
 # check_page NAME PAGE: no network links, no script errors, a non-blank screenshot NAME.png.
 check_page() {
@@ -56,6 +60,15 @@ check_page() {
     fail "the screenshot of $name looks blank (standard deviation ${stddev:-?})"
 }
 check_page report "$page"
+# The same page with its slider switched to the other configuration and the difference view:
+# the script that does both runs without errors in the browser.
+switch='var c = document.querySelector(".compare"), l = c.querySelector("select.left");
+l.selectedIndex = l.options.length - 1; l.dispatchEvent(new Event("change"));
+var d = c.querySelector("input.diff"); d.checked = true; d.dispatchEvent(new Event("change"));
+if (getComputedStyle(c.querySelector("img.over")).mixBlendMode !== "difference")
+  throw new Error("the difference view did not switch on");'
+sed "s|</body>|<script>${switch//$'\n'/ }</script></body>|" "$page" >"$work/sweep/report_difference.html"
+check_page report_difference "$work/sweep/report_difference.html"
 
 # Two runs one knob apart: compare.html with its slider and crops.
 run=(--resolution 256x192 --head-triangles 4000 --texture-size 128 --no-reference)

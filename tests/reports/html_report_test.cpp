@@ -13,6 +13,7 @@
 #include "io/read_file.h"
 #include "reports/display_check.h"
 #include "reports/error.h"
+#include "reports/knob_verdicts.h"
 #include "reports/pareto.h"
 #include "reports/recommendation.h"
 #include "tests/reports/synthetic_sweep.h"
@@ -163,6 +164,86 @@ TEST(HtmlReport, StatesTheRecommendationWithItsRangeAndRule) {
             std::string::npos)
       << text;
   EXPECT_NE(text.find("How it is chosen"), std::string::npos);
+}
+
+// The text of the <h2> section that starts with `heading`, up to the next <h2>.
+std::string section_of(const std::string& html, const std::string& heading) {
+  const std::size_t at = html.find("<h2>" + heading);
+  if (at == std::string::npos) return "";
+  return html.substr(at, html.find("<h2>", at + 1) - at);
+}
+
+TEST(HtmlReport, StatesEachKnobsVerdictBeforeTheRecommendation) {
+  const SweepTable sweep = synthetic_sweep();
+  const std::string html = read_text(write_report(sweep, fresh_output_dir(), no_charts()));
+  const std::string verdicts = section_of(html, "What each knob does");
+  ASSERT_FALSE(verdicts.empty());
+  EXPECT_LT(html.find("<h2>What each knob does"), html.find("<h2>Recommendation"));
+  const std::vector<KnobVerdict> expected = knob_verdicts(sweep, "flip_skin");
+  ASSERT_EQ(expected.size(), 2u);  // lut and scale
+  for (const KnobVerdict& v : expected) {
+    EXPECT_NE(verdicts.find(html_escape(v.sentence)), std::string::npos) << v.sentence;
+  }
+}
+
+TEST(HtmlReport, RecommendationNamesItsRangeAgainstTheBudgetAndTheRunnerUp) {
+  SweepTable sweep = synthetic_sweep();
+  const Recommendation r = recommend(sweep, "flip_skin").front();
+  ASSERT_FALSE(r.range_note.empty());
+  ASSERT_FALSE(r.runner_up_note.empty());
+  const std::string text =
+      section_of(read_text(write_report(sweep, fresh_output_dir(), no_charts())), "Recommendation");
+  EXPECT_NE(text.find(html_escape(r.range_note)), std::string::npos) << r.range_note;
+  EXPECT_NE(text.find(html_escape(r.runner_up_note)), std::string::npos) << r.runner_up_note;
+}
+
+TEST(HtmlReport, ExplainsTechniqueErrorAgainstKnobErrorBesideTheTable) {
+  const SweepTable sweep = synthetic_sweep();
+  const std::string text =
+      section_of(read_text(write_report(sweep, fresh_output_dir(), no_charts())), "Configurations");
+  EXPECT_NE(text.find("Technique error and knob error"), std::string::npos);
+  const TechniqueError e = technique_errors(sweep, "flip_skin").front();
+  EXPECT_NE(text.find(html_escape(e.sentence)), std::string::npos) << e.sentence;
+  // Every row visibly different from the reference: the page says what that column measures.
+  SweepTable all_visible = sweep;
+  for (ConfigResult& r : all_visible.rows) {
+    r.reference_image = "refs/reference.png";
+    r.visible_vs_reference = true;
+  }
+  const std::string explained = section_of(
+      read_text(write_report(all_visible, fresh_output_dir(), no_charts())), "Configurations");
+  EXPECT_NE(explained.find("16 of 16 configurations differ visibly from the reference (visible "
+                           "vs reference): every technique&#39;s best does too"),
+            std::string::npos)
+      << explained.substr(0, 3000);
+}
+
+TEST(HtmlReport, TheSliderOffersEveryFrameOfTheGroupAndTheirDifference) {
+  SweepTable sweep = synthetic_sweep();
+  const Recommendation r = recommend(sweep, "flip_skin").front();
+  ComparisonPanel panel;
+  panel.chosen = sweep.rows[*r.chosen].id;
+  panel.best = sweep.rows[*r.best].id;
+  panel.reference_image = "refs/reference.png";
+  panel.chosen_image = sweep.rows[*r.chosen].frame_image;
+  panel.best_image = sweep.rows[*r.best].frame_image;
+  panel.difference_gain = 8.0;
+  panel.colour_bar = "compare/colour_bar.png";
+  sweep.panels = {panel};
+  const std::string text =
+      section_of(read_text(write_report(sweep, fresh_output_dir(), no_charts())),
+                 "What the recommendation looks like");
+  const std::size_t left = text.find("<select class=\"left\">");
+  ASSERT_NE(left, std::string::npos) << text;
+  const std::string options = text.substr(left, text.find("</select>", left) - left);
+  for (const ConfigResult& row : sweep.rows) {
+    EXPECT_NE(options.find("value=\"" + row.frame_image + "\""), std::string::npos) << row.id;
+  }
+  EXPECT_NE(options.find("value=\"refs/reference.png\">reference<"), std::string::npos);
+  EXPECT_NE(options.find("value=\"" + panel.chosen_image + "\" selected>recommended: "),
+            std::string::npos)
+      << options;
+  EXPECT_NE(text.find("class=\"diff\" value=\"8\""), std::string::npos) << text;
 }
 
 TEST(HtmlReport, SaysSoWhenNothingFitsTheBudget) {

@@ -81,3 +81,90 @@ TEST(Recommendation, NothingWithinBudgetIsNoRecommendation) {
 
 }  // namespace
 }  // namespace skinsim::reports
+
+namespace skinsim::reports {
+namespace {
+
+// Rows of group "g" at `ms` (range low..high), FLIP `flip`, visibly different from "best" or
+// not.
+ConfigResult ranged(const std::string& id, double ms, double low, double high, double flip,
+                    bool visible_vs_best) {
+  ConfigResult r = row(id, "g", ms, flip, "best", visible_vs_best);
+  r.frame_ms_low = low;
+  r.frame_ms_high = high;
+  return r;
+}
+
+TEST(Recommendation, SaysWhenTheRangeStraddlesTheBudgetAndNamesTheSafeChoice) {
+  SweepTable t;
+  t.budget_ms = 33.3;
+  t.rows = {ranged("best", 40.0, 30.0, 60.0, 0.05, false),
+            ranged("cheap", 23.17, 17.11, 43.06, 0.0501, false),  // straddles
+            ranged("safe", 25.0, 20.0, 31.0, 0.0502, false),      // fits at its slow end
+            ranged("visible", 10.0, 8.0, 12.0, 0.09, true)};
+  std::vector<Recommendation> r = recommend(t, "flip_skin");
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_EQ(r[0].chosen, 1u);
+  EXPECT_TRUE(r[0].straddles_budget);
+  EXPECT_EQ(r[0].safe, 2u);
+  EXPECT_NE(r[0].range_note.find("Its modelled range, 17.11 to 43.06 ms, straddles the 33.3 ms "
+                                 "budget"),
+            std::string::npos)
+      << r[0].range_note;
+  EXPECT_NE(r[0].range_note.find("fits even at its slow end is safe at 25.00 ms"),
+            std::string::npos)
+      << r[0].range_note;
+  // No tie fits at its slow end: said so.
+  t.rows[2].frame_ms_high = 34.0;
+  r = recommend(t, "flip_skin");
+  EXPECT_FALSE(r[0].safe.has_value());
+  EXPECT_NE(r[0].range_note.find("No configuration that looks the same as the best fits"),
+            std::string::npos)
+      << r[0].range_note;
+  // A range inside the budget: said so too.
+  t.budget_ms = 50.0;
+  r = recommend(t, "flip_skin");
+  EXPECT_FALSE(r[0].straddles_budget);
+  EXPECT_NE(r[0].range_note.find("whole modelled range, 17.11 to 43.06 ms, is within the 50.0 "
+                                 "ms budget"),
+            std::string::npos)
+      << r[0].range_note;
+}
+
+TEST(Recommendation, NamesTheRunnerUpAndWhyItLost) {
+  SweepTable t;
+  t.budget_ms = 30.0;
+  t.rows = {ranged("best", 25.0, 20.0, 28.0, 0.05, false),
+            ranged("tie", 20.0, 16.0, 24.0, 0.0501, false),
+            ranged("cheap_visible", 8.08, 6.0, 10.0, 0.09, true)};
+  std::vector<Recommendation> r = recommend(t, "flip_skin");
+  EXPECT_EQ(r[0].chosen, 1u);
+  EXPECT_EQ(r[0].runner_up, 0u);  // the next tie
+  EXPECT_NE(r[0].runner_up_note.find("Runner-up: best at 25.00 ms (20.00 to 28.00); it also "
+                                     "looks the same as the best, but costs 5.00 ms more"),
+            std::string::npos)
+      << r[0].runner_up_note;
+  // With the best out of budget, the only other candidate differs visibly.
+  t.rows[0].frame_ms = 35.0;
+  t.rows[0].frame_ms_high = 40.0;
+  r = recommend(t, "flip_skin");
+  EXPECT_EQ(r[0].runner_up, 2u);
+  EXPECT_NE(r[0].runner_up_note.find("it saves 11.92 ms but differs visibly from the best"),
+            std::string::npos)
+      << r[0].runner_up_note;
+  // Everything within budget visible: the knee wins, the runner-up is the next knee.
+  t.rows[1].vs_best->visible = true;
+  r = recommend(t, "flip_skin");
+  ASSERT_TRUE(r[0].runner_up.has_value());
+  EXPECT_NE(r[0].runner_up_note.find("further from the knee"), std::string::npos)
+      << r[0].runner_up_note;
+  // One row: no runner-up.
+  t.rows.resize(1);
+  t.rows[0].frame_ms = 25.0;
+  r = recommend(t, "flip_skin");
+  EXPECT_FALSE(r[0].runner_up.has_value());
+  EXPECT_TRUE(r[0].runner_up_note.empty());
+}
+
+}  // namespace
+}  // namespace skinsim::reports
