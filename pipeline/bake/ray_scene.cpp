@@ -31,6 +31,17 @@ RTCRay make_ray(const glm::vec3& o, const glm::vec3& d, float t_near, float t_fa
   return r;
 }
 
+// The nearest hit along `ray`: geomID is RTC_INVALID_GEOMETRY_ID when there is none.
+RTCRayHit intersect(RTCScene scene, const RTCRay& ray) {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit hit{};
+  hit.ray = ray;
+  hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(scene, &context, &hit);
+  return hit;
+}
+
 }  // namespace
 
 RayScene::RayScene(const std::vector<RayMesh>& meshes) : impl_(std::make_unique<Impl>()) {
@@ -46,7 +57,8 @@ RayScene::RayScene(const std::vector<RayMesh>& meshes) : impl_(std::make_unique<
   impl_->scene = rtcNewScene(impl_->device);
   rtcSetSceneBuildQuality(impl_->scene, RTC_BUILD_QUALITY_HIGH);
   rtcSetSceneFlags(impl_->scene, RTC_SCENE_FLAG_ROBUST);
-  for (const RayMesh& m : meshes) {
+  for (std::size_t mesh = 0; mesh < meshes.size(); ++mesh) {
+    const RayMesh& m = meshes[mesh];
     const std::size_t triangles = m.indices->size() / 3;
     if (triangles == 0 || m.positions->empty()) continue;
     RTCGeometry g = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
@@ -57,7 +69,7 @@ RayScene::RayScene(const std::vector<RayMesh>& meshes) : impl_(std::make_unique<
         g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, sizeof(std::uint32_t) * 3, triangles));
     std::memcpy(idx, m.indices->data(), triangles * 3 * sizeof(std::uint32_t));
     rtcCommitGeometry(g);
-    rtcAttachGeometry(impl_->scene, g);
+    rtcAttachGeometryByID(impl_->scene, g, static_cast<unsigned>(mesh));  // hits name the mesh
     rtcReleaseGeometry(g);
   }
   rtcCommitScene(impl_->scene);
@@ -70,14 +82,19 @@ RayScene::~RayScene() {
 
 float RayScene::closest_hit(const glm::vec3& origin, const glm::vec3& direction, float t_near,
                             float t_far) const {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  RTCRayHit hit{};
-  hit.ray = make_ray(origin, direction, t_near, t_far);
-  hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(impl_->scene, &context, &hit);
+  const RTCRayHit hit = intersect(impl_->scene, make_ray(origin, direction, t_near, t_far));
   return hit.hit.geomID == RTC_INVALID_GEOMETRY_ID ? std::numeric_limits<float>::infinity()
                                                    : hit.ray.tfar;
+}
+
+std::optional<TriangleHit> RayScene::nearest_triangle(const glm::vec3& origin,
+                                                      const glm::vec3& direction, float t_near,
+                                                      float t_far) const {
+  const RTCRayHit hit = intersect(impl_->scene, make_ray(origin, direction, t_near, t_far));
+  if (hit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+  // Embree's u and v weigh the triangle's second and third vertices.
+  return TriangleHit{hit.hit.geomID, hit.hit.primID,
+                     glm::vec3(1.0f - hit.hit.u - hit.hit.v, hit.hit.u, hit.hit.v)};
 }
 
 bool RayScene::occluded(const glm::vec3& origin, const glm::vec3& direction, float t_near,

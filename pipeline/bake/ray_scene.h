@@ -2,9 +2,11 @@
 // reference renderer's shadow rays and the thickness bake.
 #pragma once
 
+#include <cstdint>
 #include <glm/glm.hpp>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -14,6 +16,13 @@ namespace skinsim::bake {
 struct RayMesh {
   const std::vector<glm::vec3>* positions = nullptr;
   const std::vector<std::uint32_t>* indices = nullptr;
+};
+
+// Where a ray first meets a triangle: which one, and its vertices' barycentric weights there.
+struct TriangleHit {
+  std::uint32_t mesh = 0;      // index into the meshes the scene was made of
+  std::uint32_t triangle = 0;  // index of the triangle in that mesh (its indices at 3 * triangle)
+  glm::vec3 barycentric{1.0f, 0.0f, 0.0f};
 };
 
 class RayScene {
@@ -27,6 +36,10 @@ class RayScene {
   // +infinity when there is none. Thread-safe.
   float closest_hit(const glm::vec3& origin, const glm::vec3& direction, float t_near,
                     float t_far = std::numeric_limits<float>::infinity()) const;
+  // The nearest triangle along `direction` (unit) in (t_near, t_far), if any. Thread-safe.
+  std::optional<TriangleHit> nearest_triangle(
+      const glm::vec3& origin, const glm::vec3& direction, float t_near,
+      float t_far = std::numeric_limits<float>::infinity()) const;
   // Whether any triangle lies along the ray within (t_near, t_far). Thread-safe.
   bool occluded(const glm::vec3& origin, const glm::vec3& direction, float t_near,
                 float t_far = std::numeric_limits<float>::infinity()) const;

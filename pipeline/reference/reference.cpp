@@ -20,6 +20,7 @@
 #include "pipeline/reference/dipole_diffusion.h"
 #include "pipeline/reference/gaussian_diffusion.h"
 #include "pipeline/reference/gbuffer_shaders.h"
+#include "pipeline/reference/shadow_origin.h"
 #include "pipeline/shaders/background.h"
 #include "pipeline/shaders/eye.h"
 #include "sim/gpu.h"
@@ -267,12 +268,13 @@ ReferenceFrame render_reference(const GpuScene& gs, const PipelineConfig& config
       // always crosses thin parts (the shadows and transmission knobs switch the
       // pipelines' approximations of these, measured against this).
       glm::vec3 e = lighting.ambient;
+      const glm::vec3 origin =
+          reference::shadow_ray_origin(gs, view.eye, p, ray_offset) + vertex_n * ray_offset;
       for (std::size_t i = 0; i < lights.size(); ++i) {
         const scene::DirectionalLight& light = lights[i];
         const float n_dot_l = glm::dot(n, light.direction);
         if (n_dot_l <= 0.0f) continue;
-        const float v = visibility(gs.rays(), p + vertex_n * ray_offset, light.direction, x, y,
-                                   ray_offset, reach[i]);
+        const float v = visibility(gs.rays(), origin, light.direction, x, y, ray_offset, reach[i]);
         visible[(static_cast<size_t>(y) * w + x) * lights.size() + i] = v;
         e += light.radiance * n_dot_l * v;
       }
