@@ -34,9 +34,11 @@ struct Totals {
   double miss_rate() const {
     return cache_line_accesses > 0.0 ? cache_misses / cache_line_accesses : 0.0;
   }
-  void write(MetricValues& out, const std::string& scope, double ms, double dram_bytes) const {
+  void write(MetricValues& out, const std::string& scope, double ms, double dram_bytes,
+             double energy_mj) const {
     out[scope + ".ms"] = ms;
     out[scope + ".dram_bytes"] = dram_bytes;
+    out[scope + ".energy_mj"] = energy_mj;
     out[scope + ".fragments_shaded"] = fragments_shaded;
     out[scope + ".texture_miss_rate"] = miss_rate();
     out[scope + ".alu_ops"] = alu_ops;
@@ -50,8 +52,9 @@ struct Totals {
 
 const std::vector<std::string>& counter_metric_kinds() {
   static const std::vector<std::string> kinds = {
-      "ms",      "dram_bytes",      "fragments_shaded",       "texture_miss_rate",
-      "alu_ops", "texture_samples", "fragments_depth_tested", "triangles_in"};
+      "ms",       "dram_bytes",      "fragments_shaded",       "texture_miss_rate",
+      "alu_ops",  "texture_samples", "fragments_depth_tested", "triangles_in",
+      "energy_mj"};
   return kinds;
 }
 
@@ -100,7 +103,7 @@ Measurement measure_frame(const driver::FrameResult& frame) {
     Totals pass;
     pass.add(counters);
     frame_totals.add(counters);
-    pass.write(m.metrics, counters.name, ms, t.dram.total());
+    pass.write(m.metrics, counters.name, ms, t.dram.total(), timing.energy.passes.at(i).mj.total());
     m.passes.push_back(counters.name);
     PassFacts facts;
     facts.bottleneck = gpu_model::unit_name(t.bottleneck);
@@ -108,7 +111,8 @@ Measurement measure_frame(const driver::FrameResult& frame) {
     facts.share_of_frame = timing.frame_ms > 0.0 ? ms / timing.frame_ms : 0.0;
     m.pass_facts[counters.name] = facts;
   }
-  frame_totals.write(m.metrics, "frame", timing.frame_ms, timing.dram_bytes);
+  frame_totals.write(m.metrics, "frame", timing.frame_ms, timing.dram_bytes,
+                     timing.energy.mj.total());
   return m;
 }
 

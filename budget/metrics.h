@@ -2,7 +2,7 @@
 // facts (bottleneck, busy units) the failure messages explain them with.
 //
 //   frame.<kind>    kind: ms, dram_bytes, fragments_shaded, texture_miss_rate, alu_ops,
-//                   texture_samples, fragments_depth_tested, triangles_in
+//                   texture_samples, fragments_depth_tested, triangles_in, energy_mj
 //   <pass>.<kind>   the same kinds for one render pass of the frame (irradiance, blur_h, ...)
 //   quality.<name>  psnr_skin, ssim_skin, flip_skin, psnr_frame, ssim_frame, flip_frame
 #pragma once

@@ -16,6 +16,7 @@ std::string format_magnitude(const std::string& metric, double v, bool sign) {
   if (std::isinf(v)) return v > 0 ? s + "inf" : "-inf";
   if (kind == "ms") return fmt::format(fmt::runtime("{:" + s + ".3f} ms"), v);
   if (kind == "dram_bytes") return fmt::format(fmt::runtime("{:" + s + ".3f} MB"), v / 1e6);
+  if (kind == "energy_mj") return fmt::format(fmt::runtime("{:" + s + ".3f} mJ"), v);
   if (kind == "texture_miss_rate") return fmt::format(fmt::runtime("{:" + s + ".4f}"), v);
   if (kind.starts_with("psnr")) return fmt::format(fmt::runtime("{:" + s + ".2f} dB"), v);
   if (kind.starts_with("ssim") || kind.starts_with("flip")) {

@@ -128,9 +128,13 @@ json frame_result_json(const FrameResult& r, const std::string& scene_label) {
                               {"high", r.range.high},
                               {"uncertain_figures", r.range.figures},
                               {"figures_needing_rerender_left_out", r.range.left_out}};
-  return {{"tool", "skinsim"},    {"scene", scene_label},
-          {"config", config},     {"technique", r.output.decisions},
-          {"counters", counters}, {"timing", timing}};
+  return {{"tool", "skinsim"},
+          {"scene", scene_label},
+          {"config", config},
+          {"technique", r.output.decisions},
+          {"counters", counters},
+          {"timing", timing},
+          {"energy", gpu_model::energy_to_json(r.timing)}};
 }
 
 }  // namespace skinsim::driver

@@ -16,6 +16,18 @@ const char* confidence_name(Confidence c) {
   return "low";
 }
 
+const char* gpu_class_name(GpuClass c) {
+  switch (c) {
+    case GpuClass::kTbdr:
+      return "tbdr";
+    case GpuClass::kTilerEarlyZ:
+      return "tiler-early-z";
+    case GpuClass::kBinning:
+      return "binning";
+  }
+  return "tbdr";
+}
+
 const std::vector<FigureSpec>& figure_specs() {
   using P = DeviceProfile;
   // Integer figures the emulator takes as int stay far below 2^31.
@@ -40,7 +52,9 @@ const std::vector<FigureSpec>& figure_specs() {
       {"gpu.clock_mhz", &P::clock_mhz, real(1.0, 1e4), "MHz", false},
       // sim::Gpu runs 1..64 cores.
       {"gpu.cores", &P::cores, integer(1, 64), "cores", true},
-      {"gpu.pipes_per_core", &P::pipes_per_core, integer(1, 256), "pipes", false},
+      // Up to 1024 vec4 pipes: a binning GPU is modelled as one core holding all its lanes
+      // (Adreno 740: 1536 lanes = 384 pipes).
+      {"gpu.pipes_per_core", &P::pipes_per_core, integer(1, 1024), "pipes", false},
       {"alu.vector_op_cycles", &P::vector_op_cycles, op_cycles, "cycles", false},
       {"alu.scalar_op_cycles", &P::scalar_op_cycles, op_cycles, "cycles", false},
       {"alu.transcendental_op_cycles", &P::transcendental_op_cycles, op_cycles, "cycles", false},
@@ -74,10 +88,16 @@ const std::vector<FigureSpec>& figure_specs() {
       // Up to RGBA32F (16 B) per pixel.
       {"tile.depth_stencil_bytes_per_pixel", &P::tile_depth_stencil_bytes_per_pixel, integer(1, 16),
        "B", false},
+      // From a 4x4 tile of 1 B pixels up to 64 MiB (binning GPUs' GMEM is a few MiB).
+      {"tile.memory_bytes", &P::tile_memory_bytes, integer(16, 1 << 26), "B", false, false},
       // 10 MB/s .. 10 TB/s.
       {"memory.peak_gb_per_s", &P::dram_peak_gb_per_s, real(0.01, 1e4), "GB/s", false},
       // A share of the peak; below 1 % the bus would be idle, not busy.
       {"memory.achievable_fraction", &P::dram_achievable_fraction, real(0.01, 1.0), "", false},
+      // Compressed / uncompressed render-target bytes: lossless schemes fall back to raw
+      // blocks plus a header, so from a solid-colour 1/64 up to slightly above 1.
+      {"memory.framebuffer_compression", &P::framebuffer_compression, real(1.0 / 64, 1.25), "x",
+       false},
       {"tiler.triangles_per_clock_per_core", &P::tiler_triangles_per_clock_per_core, per_clock,
        "tri/clk", false},
       {"tiler.tile_refs_per_clock_per_core", &P::tiler_tile_refs_per_clock_per_core, per_clock,
@@ -97,6 +117,13 @@ const std::vector<FigureSpec>& figure_specs() {
       {"isp.hsr_flush_cycles", &P::isp_hsr_flush_cycles, stall_cycles, "cycles", false},
       {"overhead.render_cycles", &P::render_overhead_cycles, stall_cycles, "cycles", false},
       {"overhead.tile_cycles", &P::tile_overhead_cycles, stall_cycles, "cycles", false},
+      {"hsr.overdraw_removed", &P::hsr_overdraw_removed, real(0.0, 1.0), "", false},
+      // Energies: from 0.01 pJ (below any switched gate) to 10 nJ per event.
+      {"energy.dram_pj_per_byte", &P::dram_pj_per_byte, real(0.01, 1e4), "pJ/B", false, false},
+      {"energy.fp32_lane_op_pj", &P::fp32_lane_op_pj, real(0.01, 1e4), "pJ", false, false},
+      {"energy.fp16_lane_op_pj", &P::fp16_lane_op_pj, real(0.01, 1e4), "pJ", false, false},
+      {"energy.texture_sample_pj", &P::texture_sample_pj, real(0.01, 1e4), "pJ", false, false},
+      {"energy.depth_test_pj", &P::depth_test_pj, real(0.01, 1e4), "pJ", false, false},
   };
   return specs;
 }

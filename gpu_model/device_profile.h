@@ -12,6 +12,15 @@ enum class Confidence { kLow, kMedium, kHigh, kCertain };
 
 const char* confidence_name(Confidence c);
 
+// How a GPU class removes hidden surfaces and what its tile memory holds (docs/hardware.md).
+enum class GpuClass {
+  kTbdr,         // PowerVR, Apple: deferred HSR, overdraw removed whatever the draw order
+  kTilerEarlyZ,  // Arm Mali: early ZS in submission order, Forward Pixel Kill removes part
+  kBinning,      // Qualcomm Adreno: GMEM bins, low-resolution Z from the binning pass
+};
+
+const char* gpu_class_name(GpuClass c);
+
 struct Figure {
   double value = 0.0;
   // Plausible range; min == max == value when the profile gives none.
@@ -28,6 +37,7 @@ struct DeviceProfile {
   std::string device;       // e.g. "iPad (4th generation)"
   std::string soc;          // e.g. "Apple A6X"
   std::string gpu;          // e.g. "PowerVR SGX554MP4"
+  GpuClass gpu_class = GpuClass::kTbdr;
 
   // [display]
   Figure display_width;  // pixels
@@ -62,10 +72,20 @@ struct DeviceProfile {
   Figure tile_width;
   Figure tile_height;
   Figure tile_depth_stencil_bytes_per_pixel;
+  // On-chip bytes a tile's colour (and, on binning GPUs, depth) may occupy; larger pixels
+  // shrink the tile (fitted_tile, tile_memory.h).
+  Figure tile_memory_bytes;
+
+  // [hsr]: share of the order-dependent overdraw (fragments that pass an early depth test in
+  // submission order but end up hidden) that the GPU does not shade. 1 on a TBDR.
+  Figure hsr_overdraw_removed;
 
   // [memory]
   Figure dram_peak_gb_per_s;  // 1 GB = 1e9 bytes
   Figure dram_achievable_fraction;
+  // Render-target DRAM bytes after framebuffer compression (AFBC, UBWC, Apple lossless) as a
+  // share of the uncompressed bytes; 1 without compression.
+  Figure framebuffer_compression;
 
   // [tiler]
   Figure tiler_triangles_per_clock_per_core;  // setup + cull
@@ -85,6 +105,13 @@ struct DeviceProfile {
   // [overhead]
   Figure render_overhead_cycles;
   Figure tile_overhead_cycles;
+
+  // [energy]: dynamic energy per counted event (gpu_model/energy.h).
+  Figure dram_pj_per_byte;
+  Figure fp32_lane_op_pj;  // one FP32 lane operation, operand delivery included
+  Figure fp16_lane_op_pj;
+  Figure texture_sample_pj;  // one bilinear texture operation
+  Figure depth_test_pj;      // one fragment's depth/stencil test in tile memory
 };
 
 // What values a figure accepts: what the emulator (sim::GpuConfig, sim::TextureCache) and the
@@ -104,6 +131,9 @@ struct FigureSpec {
   const char* unit;
   // True when the emulator's counters depend on the figure, so varying it needs a re-run.
   bool affects_counters;
+  // False for figures the frame time does not use (energy, tile memory): the time's
+  // sensitivity and range leave them out.
+  bool timed = true;
 };
 
 // Every figure of a profile, in file order.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "gpu_model/energy.h"
 #include "gpu_model/finite_timing.h"
 #include "gpu_model/model_terms.h"
 #include "gpu_model/pass_cost.h"
@@ -48,6 +49,7 @@ FrameTiming estimate_frame(const std::vector<sim::PassCounters>& passes,
   f.frame_ms = std::max(f.pipeline_ms, f.bandwidth_ms);
   f.dram_wait_ms = f.frame_ms - f.pipeline_ms;
   f.fps = f.frame_ms > 0.0 ? 1000.0 / f.frame_ms : 0.0;
+  f.energy = estimate_energy(passes, f.passes, profile);
   check_finite(f);
   double passes_ms = f.dram_wait_ms;
   for (const PassSlot& s : f.schedule) passes_ms += s.exposed_ms;

@@ -2,12 +2,24 @@
 #pragma once
 
 #include "gpu_model/device_profile.h"
+#include "sim/counters.h"
 #include "sim/op_profile.h"
 
 namespace skinsim::gpu_model {
 
 // Issue cycles of one shader invocation on one USSE pipe.
 double shader_cycles(const sim::OpProfile& ops, const DeviceProfile& profile);
+
+// Fragments a GPU of the profile's class shades for one draw in one tile: the visible ones
+// (deferred HSR) plus the order-dependent overdraw it does not remove (hsr.overdraw_removed).
+double fragments_shaded_on(const sim::DrawFragments& fragments, const DeviceProfile& profile);
+
+// Bilinear TMU operations of the samples counted: trilinear and wide-format samples cost
+// more than one.
+double texture_ops(const sim::TextureCounters& texture, const DeviceProfile& profile);
+
+// Render-target DRAM bytes after the profile's framebuffer compression.
+double compressed_target_bytes(std::uint64_t bytes, const DeviceProfile& profile);
 
 // Core clock cycles per millisecond.
 double cycles_per_ms(const DeviceProfile& profile);

@@ -126,6 +126,15 @@ Confidence parse_confidence(const Reporter& r, const toml::table& fig, const std
          fmt::format("must be one of low, medium, high, certain; got '{}'", c));
 }
 
+GpuClass parse_gpu_class(const Reporter& r, const toml::table& device) {
+  const std::string c = require_string(r, device, "class", "device.class");
+  for (GpuClass k : {GpuClass::kTbdr, GpuClass::kTilerEarlyZ, GpuClass::kBinning}) {
+    if (c == gpu_class_name(k)) return k;
+  }
+  r.fail("device.class", device.get("class"),
+         fmt::format("must be one of tbdr, tiler-early-z, binning; got '{}'", c));
+}
+
 Figure parse_figure(const Reporter& r, const toml::table& fig, const FigureSpec& spec) {
   const std::string base = spec.path;
   check_unknown_keys(r, fig, {"value", "range", "confidence", "source"}, base);
@@ -256,10 +265,11 @@ DeviceProfile parse_root(const Reporter& r, const toml::table& root) {
   check_unknown_keys(r, root, sections, "");
 
   const toml::table& device = require_table(r, root, "device", "device");
-  check_unknown_keys(r, device, {"name", "soc", "gpu"}, "device");
+  check_unknown_keys(r, device, {"name", "soc", "gpu", "class"}, "device");
   p.device = require_string(r, device, "name", "device.name");
   p.soc = require_string(r, device, "soc", "device.soc");
   p.gpu = require_string(r, device, "gpu", "device.gpu");
+  p.gpu_class = parse_gpu_class(r, device);
 
   for (const std::string& section : sections) {
     if (section == "device") continue;
@@ -289,6 +299,13 @@ DeviceProfile parse_root(const Reporter& r, const toml::table& root) {
 
   check_square_tiles(r, root, p);
   check_texture_cache(r, root, p);
+  // Deferred HSR shades only what is visible, whatever the draw order (PowerVR Architecture
+  // Guide); anything else describes another class.
+  if (p.gpu_class == GpuClass::kTbdr &&
+      (p.hsr_overdraw_removed.value != 1.0 || p.hsr_overdraw_removed.has_range)) {
+    r.fail("hsr.overdraw_removed", root.at_path("hsr.overdraw_removed").node(),
+           "must be 1 without a range on a tbdr device (deferred HSR removes all overdraw)");
+  }
   return p;
 }
 

@@ -28,7 +28,7 @@ std::vector<SensitivityRow> sensitivity(const std::vector<sim::PassCounters>& pa
   std::vector<SensitivityRow> rows;
   for (const FigureSpec& spec : figure_specs()) {
     const Figure& f = profile.*spec.member;
-    if (!f.has_range) continue;
+    if (!f.has_range || !spec.timed) continue;
     SensitivityRow row;
     row.figure = spec.path;
     row.unit = spec.unit;
@@ -53,7 +53,7 @@ FrameMsRange frame_ms_range(const std::vector<sim::PassCounters>& passes,
   DeviceProfile slowest = profile;
   for (const FigureSpec& spec : figure_specs()) {
     const Figure& f = profile.*spec.member;
-    if (!f.has_range) continue;
+    if (!f.has_range || !spec.timed) continue;
     if (spec.affects_counters) {
       ++range.left_out;
       continue;

@@ -14,23 +14,10 @@ bool has_work(const sim::TileCounters& t) {
 }
 
 double texture_cycles(const sim::TextureCounters& tex, const DeviceProfile& p) {
-  const auto nearest = static_cast<double>(tex.samples_by_filter[0]);
-  const auto bilinear = static_cast<double>(tex.samples_by_filter[1]);
-  const auto trilinear = static_cast<double>(tex.samples_by_filter[2]);
-  const auto samples = static_cast<double>(tex.samples());
-  // A TMU delivers one bilinear quad per clock; nearest takes the same slot, trilinear two
-  // (two mip levels).
-  double ops = nearest + bilinear + trilinear * p.trilinear_bilinear_ops.value;
-  // Wide formats run at a fraction of the rate. The counters do not split wide samples by
-  // filter, so wide samples are assumed to have the tile's average filter mix.
-  if (samples > 0.0) {
-    ops += static_cast<double>(tex.samples_wide_format) * (p.wide_format_bilinear_ops.value - 1.0) *
-           (ops / samples);
-  }
   const double tmus = p.tmus_per_core.value;
   // Dependent reads cannot be prefetched before the program runs (Imagination forum): each
   // adds exposed stall cycles, spread over the core's TMUs.
-  return ops / (tmus * p.bilinear_per_tmu_clock.value) +
+  return texture_ops(tex, p) / (tmus * p.bilinear_per_tmu_clock.value) +
          static_cast<double>(tex.samples_dependent) * p.dependent_read_stall_cycles.value / tmus;
 }
 
@@ -67,13 +54,20 @@ TileWork estimate_tile(const sim::TileCounters& tile, const sim::PassCounters& p
 
   // USSE: visible fragments x their program's issue cycles, plus blending, which SGX runs as
   // appended USSE code; spread over the core's pipes.
+  // Without deferred HSR the overdraw an early depth test lets through is shaded too.
   double pipe_cycles = static_cast<double>(tile.fragments_blended) * p.blend_cycles.value;
+  double visible = 0.0, shaded = 0.0;
   for (const sim::DrawFragments& df : tile.shaded_by_draw) {
-    pipe_cycles += static_cast<double>(df.fragments_shaded) * fragment_cycles[df.draw];
+    const double fragments = fragments_shaded_on(df, p);
+    pipe_cycles += fragments * fragment_cycles[df.draw];
+    visible += static_cast<double>(df.fragments_shaded);
+    shaded += fragments;
   }
   w.alu_cycles = pipe_cycles / p.pipes_per_core.value;
 
-  w.texture_cycles = texture_cycles(tile.texture, p);
+  // The extra fragments sample like the visible ones (the counters measured those only);
+  // their texels are the tile's own, so they add TMU time but no DRAM bytes.
+  w.texture_cycles = texture_cycles(tile.texture, p) * (visible > 0.0 ? shaded / visible : 1.0);
   w.overhead_cycles = p.tile_overhead_cycles.value;
 
   // The 3D reads the tile's control stream and the primitive data it references back from
@@ -84,10 +78,10 @@ TileWork estimate_tile(const sim::TileCounters& tile, const sim::PassCounters& p
                           (p.pb_bytes_per_tile_ref.value + p.pb_bytes_per_triangle.value +
                            p.pb_vertices_read_per_tile_ref.value * vertex_bytes);
   w.dram.texture = static_cast<double>(tile.texture.dram_bytes);
-  w.dram.color_load = static_cast<double>(tile.color_load_bytes);
-  w.dram.color_store = static_cast<double>(tile.color_store_bytes);
-  w.dram.depth_load = static_cast<double>(tile.depth_load_bytes);
-  w.dram.depth_store = static_cast<double>(tile.depth_store_bytes);
+  w.dram.color_load = compressed_target_bytes(tile.color_load_bytes, p);
+  w.dram.color_store = compressed_target_bytes(tile.color_store_bytes, p);
+  w.dram.depth_load = compressed_target_bytes(tile.depth_load_bytes, p);
+  w.dram.depth_store = compressed_target_bytes(tile.depth_store_bytes, p);
   return w;
 }
 

@@ -88,6 +88,31 @@ struct PassSlot {
 // The name under which outputs list FrameTiming::dram_wait_ms beside the passes.
 inline constexpr const char* kDramWaitRow = "dram_wait";
 
+// Dynamic energy (energy.h), millijoules by cause.
+struct EnergyParts {
+  double dram = 0.0;
+  double alu = 0.0;
+  double texture = 0.0;
+  double depth = 0.0;
+
+  double total() const { return dram + alu + texture + depth; }
+  void add(const EnergyParts& o);
+};
+
+struct PassEnergy {
+  std::string name;
+  EnergyParts mj;       // at the figures' values
+  double low_mj = 0.0;  // at every energy figure's range minimum
+  double high_mj = 0.0;
+};
+
+struct FrameEnergy {
+  std::vector<PassEnergy> passes;
+  EnergyParts mj;  // sum over passes
+  double low_mj = 0.0;
+  double high_mj = 0.0;
+};
+
 struct FrameTiming {
   std::string device;
   std::vector<PassTiming> passes;
@@ -101,6 +126,7 @@ struct FrameTiming {
   double fps = 0.0;
   DramBytes dram;
   double dram_bytes = 0.0;
+  FrameEnergy energy;
 };
 
 }  // namespace skinsim::gpu_model

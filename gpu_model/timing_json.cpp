@@ -1,5 +1,7 @@
 #include "gpu_model/timing_json.h"
 
+#include "gpu_model/energy.h"
+#include "gpu_model/tile_memory.h"
 #include "gpu_model/timing_table.h"
 
 namespace skinsim::gpu_model {
@@ -62,6 +64,30 @@ nlohmann::json to_json(const FrameTiming& frame) {
           {"passes", passes}};
 }
 
+nlohmann::json to_json(const EnergyParts& e) {
+  return {{"dram", e.dram},
+          {"alu", e.alu},
+          {"texture", e.texture},
+          {"depth", e.depth},
+          {"total", e.total()}};
+}
+
+nlohmann::json energy_to_json(const FrameTiming& frame, double budget_ms) {
+  const FrameEnergy& e = frame.energy;
+  nlohmann::json passes = nlohmann::json::array();
+  for (const PassEnergy& p : e.passes) {
+    passes.push_back(
+        {{"name", p.name}, {"mj", to_json(p.mj)}, {"low_mj", p.low_mj}, {"high_mj", p.high_mj}});
+  }
+  return {{"frame_mj", e.mj.total()},
+          {"low_mj", e.low_mj},
+          {"high_mj", e.high_mj},
+          {"mj", to_json(e.mj)},
+          {"budget_ms", budget_ms},
+          {"average_power_mw", average_power_mw(e.mj.total(), frame.frame_ms, budget_ms)},
+          {"passes", passes}};
+}
+
 nlohmann::json tiles_to_json(const PassTiming& pass) {
   nlohmann::json tiles = nlohmann::json::array();
   for (const TileTiming& t : pass.tiles) {
@@ -105,7 +131,13 @@ nlohmann::json device_json(const DeviceProfile& p) {
           {"dram_peak_gb_per_s", k.dram_peak_gb_per_s},
           {"dram_achievable_gb_per_s", k.dram_achievable_gb_per_s},
           {"tile", {k.tile_width, k.tile_height}},
-          {"texture_cache_kib_per_core", k.texture_cache_kib}};
+          {"texture_cache_kib_per_core", k.texture_cache_kib},
+          {"class", gpu_class_name(p.gpu_class)},
+          {"tile_memory_bytes", p.tile_memory_bytes.value},
+          {"tile_at_32_bytes_per_pixel", {k.tile_at_32_bpp.width, k.tile_at_32_bpp.height}},
+          {"fp16_rate", k.fp16_rate},
+          {"framebuffer_compression", p.framebuffer_compression.value},
+          {"hsr_overdraw_removed", p.hsr_overdraw_removed.value}};
 }
 
 }  // namespace skinsim::gpu_model

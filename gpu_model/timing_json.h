@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "gpu_model/energy.h"
 #include "gpu_model/sensitivity.h"
 #include "gpu_model/timing.h"
 
@@ -15,6 +16,10 @@ nlohmann::json to_json(const DramBytes& bytes);  // by cause, plus "total"
 // cause, schedule. Per frame: device, frame_ms, fps, pipeline_ms, bandwidth_ms, dram_wait_ms
 // (the passes' ms plus dram_wait_ms add up to frame_ms), dram_bytes.
 nlohmann::json to_json(const FrameTiming& frame);
+nlohmann::json to_json(const EnergyParts& energy);  // mJ by cause, plus "total"
+// The frame's energy (FrameTiming::energy): frame_mj with low_mj/high_mj, mj by cause,
+// average_power_mw over max(frame_ms, budget_ms), and per pass mj by cause with its range.
+nlohmann::json energy_to_json(const FrameTiming& frame, double budget_ms = kPowerBudgetMs);
 // Per tile: x, y, core, start_ms, ms, bottleneck (for heat maps).
 nlohmann::json tiles_to_json(const PassTiming& pass);
 nlohmann::json to_json(const std::vector<SensitivityRow>& rows);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "gpu_model/energy.h"
 #include "gpu_model/profile_loader.h"
 
 namespace skinsim::gpu_model {
@@ -23,25 +24,34 @@ std::string ms_or_dash(const std::optional<double>& ms) {
 
 std::string format_frame_table(const FrameTiming& frame) {
   std::string out = fmt::format(
-      "{:<24} {:>8} {:>10} {:>8} {:>8} {:>8} {:>5} {:>5} {:>5} {:>5} {:>5} {:>9}\n", "pass", "ms",
-      "bottleneck", "TA ms", "3D ms", "alone ms", "ALU%", "TEX%", "ISP%", "BW%", "bal%", "DRAM MB");
+      "{:<24} {:>8} {:>10} {:>8} {:>8} {:>8} {:>5} {:>5} {:>5} {:>5} {:>5} {:>9} {:>8}\n", "pass",
+      "ms", "bottleneck", "TA ms", "3D ms", "alone ms", "ALU%", "TEX%", "ISP%", "BW%", "bal%",
+      "DRAM MB", "mJ");
   for (std::size_t i = 0; i < frame.passes.size(); ++i) {
     const PassTiming& p = frame.passes[i];
     out += fmt::format(
         "{:<24} {:>8.3f} {:>10} {:>8.3f} {:>8.3f} {:>8.3f} {:>5.0f} {:>5.0f} {:>5.0f} {:>5.0f} "
-        "{:>5.0f} {:>9.2f}\n",
+        "{:>5.0f} {:>9.2f} {:>8.3f}\n",
         p.name, frame.schedule[i].exposed_ms, unit_name(p.bottleneck), p.ta_ms, p.render_ms,
         p.standalone_ms, util(p, Unit::kAlu), util(p, Unit::kTexture), util(p, Unit::kIsp),
-        util(p, Unit::kBandwidth), 100.0 * p.balance, p.dram.total() / kMegabyte);
+        util(p, Unit::kBandwidth), 100.0 * p.balance, p.dram.total() / kMegabyte,
+        frame.energy.passes[i].mj.total());
   }
   if (frame.dram_wait_ms > 0.0) {
     out += fmt::format("{:<24} {:>8.3f} {:>10}\n", kDramWaitRow, frame.dram_wait_ms, "bandwidth");
   }
-  out += fmt::format("{:<24} {:>8.3f} {:>10} {:>66.2f}\n", "frame", frame.frame_ms,
+  const FrameEnergy& e = frame.energy;
+  out += fmt::format("{:<24} {:>8.3f} {:>10} {:>66.2f} {:>8.3f}\n", "frame", frame.frame_ms,
                      frame.dram_wait_ms > 0.0 ? "bandwidth" : "pipeline",
-                     frame.dram_bytes / kMegabyte);
+                     frame.dram_bytes / kMegabyte, e.mj.total());
   out += fmt::format("{} at {:.1f} fps on {}\n", fmt::format("{:.3f} ms", frame.frame_ms),
                      frame.fps, frame.device);
+  out += fmt::format(
+      "{:.3f} mJ per frame (range {:.3f}-{:.3f}; DRAM {:.3f}, ALU {:.3f}, texture {:.3f}, "
+      "depth {:.3f}), {:.0f} mW at one frame per {:.1f} ms\n",
+      e.mj.total(), e.low_mj, e.high_mj, e.mj.dram, e.mj.alu, e.mj.texture, e.mj.depth,
+      average_power_mw(e.mj.total(), frame.frame_ms, kPowerBudgetMs),
+      std::max(frame.frame_ms, kPowerBudgetMs));
   return out;
 }
 
@@ -52,7 +62,7 @@ std::string frame_table_legend() {
              "  TA ms, 3D ms = tiler and renderer stage times; alone ms = the pass with nothing "
              "overlapping it\n"
              "  ALU% TEX% ISP% BW% = unit busy time / alone ms; bottleneck = the busiest unit; "
-             "bal% = mean / busiest 3D core\n  ") +
+             "bal% = mean / busiest 3D core; mJ = dynamic energy (docs/cost-model.md)\n  ") +
          kDramWaitRow +
          " (when > 0) = the frame's DRAM traffic outlasting the pipeline; docs/cost-model.md\n";
 }
@@ -95,21 +105,30 @@ DeviceKeyFigures key_figures(const DeviceProfile& p) {
   k.tile_width = p.tile_width.value;
   k.tile_height = p.tile_height.value;
   k.texture_cache_kib = p.texture_cache_bytes.value / 1024.0;
+  k.fp16_rate = 1.0 / p.mediump_op_cost.value;
+  k.tile_at_32_bpp = fitted_tile(p, 32.0);
   return k;
 }
 
 std::string format_device_table(const std::vector<DeviceProfile>& profiles) {
   std::string out = fmt::format(
-      "{:<9} {:<22} {:<18} {:>10} {:>7} {:>6} {:>7} {:>4} {:>12} {:>6} {:>9}\n", "name", "device",
-      "GPU", "display", "cores", "MHz", "GFLOPS", "TMUs", "DRAM GB/s", "tile", "tex$ KiB");
+      "{:<10} {:<22} {:<20} {:<13} {:>10} {:>7} {:>6} {:>7} {:>5} {:>4} {:>12} {:>7} {:>9} "
+      "{:>9} {:>4} {:>4}\n",
+      "name", "device", "GPU", "class", "display", "cores", "MHz", "GFLOPS", "FP16x", "TMUs",
+      "DRAM GB/s", "tile", "tile@32B", "tex$ KiB", "FBC", "HSR");
   for (const DeviceProfile& p : profiles) {
     const DeviceKeyFigures k = key_figures(p);
     out += fmt::format(
-        "{:<9} {:<22} {:<18} {:>10} {:>7} {:>6g} {:>7.1f} {:>4g} {:>12} {:>6} {:>9g}\n", p.name,
-        p.device, p.gpu, fmt::format("{:g}x{:g}", k.display_width, k.display_height),
-        fmt::format("{:g}x{:g}", k.cores, k.pipes_per_core), k.clock_mhz, k.peak_gflops, k.tmus,
+        "{:<10} {:<22} {:<20} {:<13} {:>10} {:>7} {:>6g} {:>7.1f} {:>5g} {:>4g} {:>12} {:>7} "
+        "{:>9} {:>9g} {:>4g} {:>4g}\n",
+        p.name, p.device, p.gpu, gpu_class_name(p.gpu_class),
+        fmt::format("{:g}x{:g}", k.display_width, k.display_height),
+        fmt::format("{:g}x{:g}", k.cores, k.pipes_per_core), k.clock_mhz, k.peak_gflops,
+        k.fp16_rate, k.tmus,
         fmt::format("{:.1f} ({:.1f})", k.dram_peak_gb_per_s, k.dram_achievable_gb_per_s),
-        fmt::format("{:g}x{:g}", k.tile_width, k.tile_height), k.texture_cache_kib);
+        fmt::format("{:g}x{:g}", k.tile_width, k.tile_height),
+        fmt::format("{}x{}", k.tile_at_32_bpp.width, k.tile_at_32_bpp.height), k.texture_cache_kib,
+        p.framebuffer_compression.value, p.hsr_overdraw_removed.value);
   }
   return out;
 }
@@ -119,7 +138,11 @@ std::string device_table_legend() {
          "cores = GPU cores x shader pipes per core; MHz = GPU clock; GFLOPS = peak FP32,\n"
          "cores x pipes x 8 FLOP (vec4 multiply-add) x clock; TMUs = texture units, all cores;\n"
          "DRAM GB/s = peak (achievable: peak x the profile's achievable fraction); tile = tile\n"
-         "size in pixels; tex$ KiB = texture cache per core. Sources and ranges: the .toml files\n";
+         "size in pixels; tile@32B = the tile when a pixel needs 32 B of colour (tile memory);\n"
+         "tex$ KiB = texture cache per core; "
+         "class = tbdr | tiler-early-z | binning;\nFP16x = mediump ops per highp op time;\n"
+         "FBC = render-target DRAM bytes kept by framebuffer compression; HSR = share of\n"
+         "order-dependent overdraw not shaded. Sources and ranges: the .toml files\n";
 }
 
 }  // namespace skinsim::gpu_model

@@ -6,6 +6,7 @@
 
 #include "gpu_model/device_profile.h"
 #include "gpu_model/sensitivity.h"
+#include "gpu_model/tile_memory.h"
 #include "gpu_model/timing.h"
 
 namespace skinsim::gpu_model {
@@ -28,6 +29,8 @@ struct DeviceKeyFigures {
   double dram_peak_gb_per_s = 0.0, dram_achievable_gb_per_s = 0.0;
   double tile_width = 0.0, tile_height = 0.0;
   double texture_cache_kib = 0.0;  // per core
+  double fp16_rate = 0.0;          // mediump ops per highp op issued: 1 / alu.mediump_op_cost
+  TileShape tile_at_32_bpp;        // fitted_tile at 32 bytes of colour per pixel
 };
 DeviceKeyFigures key_figures(const DeviceProfile& p);
 

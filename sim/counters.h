@@ -45,6 +45,9 @@ struct TextureCounters {
 struct DrawFragments {
   std::uint32_t draw = 0;  // index into PassCounters::draws
   std::uint64_t fragments_shaded = 0;
+  // Fragments that passed the depth test when met in submission order: what a GPU shading
+  // after an early depth test, without deferred HSR, would shade (>= fragments_shaded).
+  std::uint64_t fragments_early_z = 0;
   bool operator==(const DrawFragments&) const = default;
 };
 

@@ -144,6 +144,7 @@ void TileRenderer::render(int tx, int ty, const std::vector<std::uint32_t>& tria
   }
 
   std::vector<std::uint64_t> shaded(pass_.draws.size(), 0);
+  std::vector<std::uint64_t> early_z(pass_.draws.size(), 0);
   for (const std::uint32_t tri : triangles) {
     const TriangleSetup& t = setup_.triangles[tri];
     const DrawCall& draw = pass_.draws[t.draw];
@@ -159,6 +160,7 @@ void TileRenderer::render(int tx, int ty, const std::vector<std::uint32_t>& tria
       if (draw.depth_test && !(z < depth_[i])) return;
       if (draw.depth_write) depth_[i] = z;
       if (depth_only) return;
+      ++early_z[t.draw];
       if (deferred) {
         tag_[i] = tri + 1;
         return;
@@ -177,7 +179,7 @@ void TileRenderer::render(int tx, int ty, const std::vector<std::uint32_t>& tria
   flush_tags(counters, shaded);
 
   for (std::uint32_t d = 0; d < shaded.size(); ++d) {
-    if (shaded[d]) counters.shaded_by_draw.push_back({d, shaded[d]});
+    if (early_z[d]) counters.shaded_by_draw.push_back({d, shaded[d], early_z[d]});
   }
   // Tile end: resolve colour to the target; depth/stencil are discarded unless stored.
   if (pass_.color && pass_.store_color) {

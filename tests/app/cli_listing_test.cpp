@@ -120,12 +120,19 @@ TEST(CliListing, DevicesExplainTheirColumnsAndPrintJson) {
   const Result json = run("devices --json");
   ASSERT_EQ(json.exit_code, 0) << json.output;
   const nlohmann::json devices = nlohmann::json::parse(json.output);
-  ASSERT_EQ(devices.size(), 3u);
+  ASSERT_EQ(devices.size(), 6u);
+  EXPECT_NE(table.output.find("class = tbdr | tiler-early-z | binning"), std::string::npos);
   for (const auto& d : devices) {
     EXPECT_NE(table.output.find("\n" + d["name"].get<std::string>() + " "), std::string::npos);
     if (d["name"] == "ipad4") {  // 4 cores x 8 pipes x 8 FLOP x 300 MHz
       EXPECT_DOUBLE_EQ(d["peak_gflops"].get<double>(), 76.8);
       EXPECT_EQ(d["display"], nlohmann::json::array({2048, 1536}));
+      EXPECT_EQ(d["class"], "tbdr");
+    }
+    if (d["name"] == "mali-g715") {  // 256 bits per pixel at 16x16: 32 B fits, FP16 at 2x
+      EXPECT_EQ(d["class"], "tiler-early-z");
+      EXPECT_EQ(d["tile_at_32_bytes_per_pixel"], nlohmann::json::array({16, 16}));
+      EXPECT_DOUBLE_EQ(d["fp16_rate"].get<double>(), 2.0);
     }
   }
 }

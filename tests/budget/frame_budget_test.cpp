@@ -122,6 +122,41 @@ TEST_F(FrameBudget, HeavierSkinShaderFailsTheBudget) {
       << frame.message;
 }
 
+// An energy limit: the heavier shader does more ALU lane ops, so the skin pass's energy
+// rises past "<= baseline * 1.05"; the frame's energy is the sum of its passes'.
+TEST_F(FrameBudget, HeavierSkinShaderFailsAnEnergyLimit) {
+  const Measurement before = measure_frame(*frame_);
+  double passes_mj = 0.0;
+  for (const std::string& pass : before.passes) passes_mj += before.metrics.at(pass + ".energy_mj");
+  EXPECT_NEAR(passes_mj, before.metrics.at("frame.energy_mj"), 1e-9 * passes_mj);
+  const BudgetFile energy = parse_budget_file(R"(
+[[budget]]
+name = "energy"
+device = "ipad4"
+[budget.limits]
+"skin.energy_mj" = "<= baseline * 1.05"
+)",
+                                              "energy.toml");
+  const BaselineEntry base{"ipad4", "h", "", before.metrics};
+  driver::FrameResult heavier = *frame_;
+  for (sim::PassCounters& pass : heavier.output.passes) {
+    for (sim::DrawCounters& draw : pass.draws) {
+      if (draw.fragment_program == "skin_fs") draw.fragment_profile.vector_ops *= 2;
+    }
+  }
+  heavier.timing = gpu_model::estimate_frame(heavier.output.passes, *device_);
+  const auto same = evaluate_budget("energy.toml", energy.budgets.at(0), before, &base);
+  const auto grown =
+      evaluate_budget("energy.toml", energy.budgets.at(0), measure_frame(heavier), &base);
+  ASSERT_EQ(same.size(), 1u);
+  ASSERT_EQ(grown.size(), 1u);
+  EXPECT_TRUE(same[0].passed) << same[0].message;
+  EXPECT_FALSE(grown[0].passed);
+  EXPECT_NE(grown[0].message.find("skin.energy_mj rose from"), std::string::npos)
+      << grown[0].message;
+  EXPECT_NE(grown[0].message.find(" mJ"), std::string::npos) << grown[0].message;
+}
+
 TEST_F(FrameBudget, UnknownPassInARealFrameIsBadInput) {
   const BudgetFile f = parse_budget_file(R"(
 [[budget]]

@@ -2,7 +2,6 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include "gpu_model/device_profile.h"
@@ -15,13 +14,8 @@ namespace skinsim::gpu_model {
 namespace {
 
 using testing::kDataDir;
-
-std::string shipped_text(const std::string& name) {
-  std::ifstream in(kDataDir + "/devices/" + name + ".toml");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using testing::parse_error;
+using testing::shipped_text;
 
 std::string replace_once(std::string text, const std::string& from, const std::string& to) {
   const auto pos = text.find(from);
@@ -30,19 +24,10 @@ std::string replace_once(std::string text, const std::string& from, const std::s
   return text;
 }
 
-// Parses `text` and returns the error message (empty when it parsed).
-std::string parse_error(const std::string& text) {
-  try {
-    parse_device_profile(text, "edited.toml");
-  } catch (const ProfileError& e) {
-    return e.what();
-  }
-  return "";
-}
-
 TEST(Profile, ShippedProfilesLoadAndAreListed) {
   const auto names = list_devices(kDataDir);
-  ASSERT_EQ(names, (std::vector<std::string>{"ipad3", "ipad4", "iphone5"}));
+  ASSERT_EQ(names, (std::vector<std::string>{"a15", "adreno740", "ipad3", "ipad4", "iphone5",
+                                             "mali-g715"}));
   for (const std::string& name : names) {
     const DeviceProfile p = load_device_profile(name, kDataDir);
     EXPECT_EQ(p.name, name);

@@ -49,8 +49,13 @@ TEST(Sensitivity, OneRowPerRangedFigureWithFrameTimesAtTheEnds) {
   const std::vector<sim::PassCounters> passes = {pass_for_cache(8192)};
   const auto rows = sensitivity(passes, p);
   std::size_t ranged = 0;
-  for (const FigureSpec& spec : figure_specs()) ranged += (p.*spec.member).has_range ? 1 : 0;
+  // Energy and tile-memory figures have ranges but no effect on time: no rows.
+  for (const FigureSpec& spec : figure_specs()) {
+    ranged += (p.*spec.member).has_range && spec.timed ? 1 : 0;
+  }
   EXPECT_EQ(rows.size(), ranged);
+  ASSERT_TRUE(p.dram_pj_per_byte.has_range);
+  for (const SensitivityRow& r : rows) EXPECT_NE(r.figure.rfind("energy.", 0), 0u) << r.figure;
 
   const double base = estimate_frame(passes, p).frame_ms;
   const SensitivityRow& clock = row(rows, "gpu.clock_mhz");
@@ -112,7 +117,7 @@ TEST(Sensitivity, EachRowMovesOnlyItsFigure) {
   std::size_t i = 0;
   for (const FigureSpec& spec : figure_specs()) {
     const Figure& f = p.*spec.member;
-    if (!f.has_range) continue;
+    if (!f.has_range || !spec.timed) continue;
     ASSERT_LT(i, rows.size());
     const SensitivityRow& r = rows[i++];
     EXPECT_EQ(r.figure, spec.path);

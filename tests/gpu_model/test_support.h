@@ -2,9 +2,12 @@
 // synthetic pass counters.
 #pragma once
 
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "gpu_model/device_profile.h"
+#include "gpu_model/error.h"
 #include "gpu_model/profile_loader.h"
 #include "sim/counters.h"
 #include "tests/test_paths.h"
@@ -12,6 +15,24 @@
 namespace skinsim::gpu_model::testing {
 
 inline const std::string kDataDir = test_paths::kDataDir;
+
+// The text of a shipped profile, data/devices/<name>.toml.
+inline std::string shipped_text(const std::string& name) {
+  std::ifstream in(kDataDir + "/devices/" + name + ".toml");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Parses `text` and returns the error message (empty when it parsed).
+inline std::string parse_error(const std::string& text) {
+  try {
+    parse_device_profile(text, "edited.toml");
+  } catch (const ProfileError& e) {
+    return e.what();
+  }
+  return "";
+}
 
 // iPad 4 profile with a 100 MHz clock so expected times are easy to compute by hand.
 inline DeviceProfile round_profile() {

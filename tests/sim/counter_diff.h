@@ -115,6 +115,8 @@ class CounterDiff {
       field(d + "draw", a.shaded_by_draw[i].draw, b.shaded_by_draw[i].draw);
       field(d + "fragments_shaded", a.shaded_by_draw[i].fragments_shaded,
             b.shaded_by_draw[i].fragments_shaded);
+      field(d + "fragments_early_z", a.shaded_by_draw[i].fragments_early_z,
+            b.shaded_by_draw[i].fragments_early_z);
     }
     texture(at + "texture.", a.texture, b.texture);
     bytes(a, b, at);

@@ -90,16 +90,22 @@ TEST(Raster, FullScreenQuadShadesEveryPixelOnce) {
   for (const glm::vec4& p : rt.pixels) ASSERT_EQ(p, glm::vec4(1.0f));
 }
 
+// Two full-target layers, red then `second_color` (blended by `blend`), in that order.
+PassCounters two_layers(RenderTarget& rt, const Mesh& first, const Mesh& second,
+                        glm::vec4 second_color, BlendMode blend = BlendMode::kOpaque) {
+  RenderPassDesc pass;
+  pass.name = "layers";
+  pass.color = &rt;
+  pass.draws.push_back(flat_draw(first, glm::vec4(1, 0, 0, 1)));
+  pass.draws.push_back(flat_draw(second, second_color, blend));
+  return Gpu(config(1)).execute(pass);
+}
+
 TEST(Raster, HiddenSurfaceRemovalShadesOnlyVisibleFragments) {
   RenderTarget rt("rt", 96, 64, TexelFormat::kRGBA8);
   const Mesh back = grid_mesh(1, 0.8f, 0.0f, 1), front = grid_mesh(1, 0.2f, 0.0f, 1);
-  RenderPassDesc pass;
-  pass.name = "overdraw";
-  pass.color = &rt;
   // Back to front: the worst case for an immediate-mode GPU, free for deferred HSR.
-  pass.draws.push_back(flat_draw(back, glm::vec4(1, 0, 0, 1)));
-  pass.draws.push_back(flat_draw(front, glm::vec4(0, 1, 0, 1)));
-  const PassCounters c = Gpu(config(1)).execute(pass);
+  const PassCounters c = two_layers(rt, back, front, glm::vec4(0, 1, 0, 1));
   EXPECT_EQ(c.fragments_depth_tested, 2u * 96u * 64u);
   EXPECT_EQ(c.fragments_shaded, 96u * 64u);
   EXPECT_EQ(c.draws[0].fragments_shaded, 0u);
@@ -108,15 +114,31 @@ TEST(Raster, HiddenSurfaceRemovalShadesOnlyVisibleFragments) {
   EXPECT_EQ(rt.at(50, 30), glm::vec4(0, 1, 0, 1));
 }
 
+// What an early-Z GPU without deferred HSR would shade (DrawFragments::fragments_early_z):
+// back to front both layers pass the depth test as they arrive, front to back only the front.
+TEST(Raster, EarlyZCountFollowsSubmissionOrder) {
+  const Mesh back = grid_mesh(1, 0.8f, 0.0f, 1), front = grid_mesh(1, 0.2f, 0.0f, 1);
+  const auto early_z = [&](const Mesh& first, const Mesh& second) {
+    RenderTarget rt("rt", 96, 64, TexelFormat::kRGBA8);
+    const PassCounters c = two_layers(rt, first, second, glm::vec4(0, 1, 0, 1));
+    std::uint64_t passed = 0, shaded = 0;
+    for (const TileCounters& t : c.tiles) {
+      for (const DrawFragments& df : t.shaded_by_draw) {
+        passed += df.fragments_early_z;
+        shaded += df.fragments_shaded;
+      }
+    }
+    EXPECT_EQ(shaded, 96u * 64u);  // deferred HSR: the front layer either way
+    return passed;
+  };
+  EXPECT_EQ(early_z(back, front), 2u * 96u * 64u);
+  EXPECT_EQ(early_z(front, back), 96u * 64u);
+}
+
 TEST(Raster, BlendingDefeatsHiddenSurfaceRemoval) {
   RenderTarget rt("rt", 64, 64, TexelFormat::kRGBA8);
   const Mesh back = grid_mesh(1, 0.8f, 0.0f, 1), front = grid_mesh(1, 0.2f, 0.0f, 1);
-  RenderPassDesc pass;
-  pass.name = "blend";
-  pass.color = &rt;
-  pass.draws.push_back(flat_draw(back, glm::vec4(1, 0, 0, 1)));
-  pass.draws.push_back(flat_draw(front, glm::vec4(0, 0, 1, 0.5f), BlendMode::kAlpha));
-  const PassCounters c = Gpu(config(1)).execute(pass);
+  const PassCounters c = two_layers(rt, back, front, glm::vec4(0, 0, 1, 0.5f), BlendMode::kAlpha);
   EXPECT_EQ(c.fragments_shaded, 2u * 64u * 64u);
   EXPECT_EQ(c.fragments_blended, 64u * 64u);
   EXPECT_EQ(c.hsr_flushes, 4u);  // one per tile, before its first blended triangle
