@@ -105,6 +105,7 @@ int run(const RunOptions& o) {
   job.previous_run = o.out;  // the run this one replaces: its reference may be this one's
   job.reference_store = driver::ReferenceStore::from_environment();
   // A truth file is read before the frame's work, so a wrong one fails at once.
+  if (!o.truth.empty()) driver::require_truth("--truth", o.truth);
   std::optional<driver::Truth> truth;
   if (!o.truth.empty() && o.truth != driver::kCachedTruth) {
     truth = driver::truth_file("--truth", o.truth, config.width, config.height);

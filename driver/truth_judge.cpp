@@ -73,13 +73,16 @@ nlohmann::json measure(const quality::Image& test, const quality::Image& truth,
 
 }  // namespace
 
-Truth truth_file(const std::string& option, const fs::path& path, int width, int height) {
-  if (!fs::is_regular_file(path)) {
+void require_truth(const std::string& option, const std::string& spec) {
+  if (spec != kCachedTruth && !fs::is_regular_file(spec)) {
     throw UserError(
-        fmt::format("{} {}: no such image file (give `cached` or an EXR/PNG of "
-                    "the frame's view)",
-                    option, path.string()));
+        fmt::format("{} {}: no such image file (give `{}` or an EXR/PNG of the frame's view)",
+                    option, spec, kCachedTruth));
   }
+}
+
+Truth truth_file(const std::string& option, const fs::path& path, int width, int height) {
+  require_truth(option, path.string());
   Truth truth;
   if (is_png(path)) {
     truth.images.image = quality::load_png(path);

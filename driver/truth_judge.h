@@ -35,6 +35,10 @@ struct Truth {
 Truth cached_truth(const pipeline::GpuScene& scene, const pipeline::PipelineConfig& config,
                    int threads, const std::function<void(const std::string&)>& note);
 
+// Throws UserError naming `option` when `spec` is neither "cached" nor an existing file: checked
+// before a command's work, as the file is read only after it.
+void require_truth(const std::string& option, const std::string& spec);
+
 // A truth the user brings (`--truth FILE`): a PNG is taken as seen (sRGB, 8 bits), anything
 // else is read through skinsim-exr as scene-linear (OpenEXR, Radiance HDR, TIFF) and encoded
 // for display. One image has no second seed, so no measured floor. Throws UserError naming

@@ -10,7 +10,12 @@ Usage: truth_judge_test.py CASE SKINSIM SKINSIM_EXR WORKDIR
               own truth is identical and not visible); no measured floor is stated as such; a
               missing file, a file that is no image and one of another size exit 2, named,
               before the frame is rendered.
-  sweep       a truth-judged sweep of two configurations with Blender (exit 77 without it).
+  sweep_file  `sweep --truth FILE` of two configurations, the truth being one of their own
+              frames: per-configuration figures against it in results.json/csv, and the
+              recommendation and that frame's verdict change to it; a missing truth exits 2
+              before the sweep.
+  sweep       a truth-judged sweep of two configurations with Blender Cycles (`--truth
+              cached`, 64x48; exit 77 where Blender is not installed).
 """
 import glob
 import json
@@ -164,10 +169,75 @@ def test_file():
             fail("a refused truth left an output directory")
 
 
+SWEEP = ["sweep", "--resolutions", "64x48", "--scales", "1,0.25", "--luts", "32x128", "--no-charts"]
+
+
+def sweep_truth(out):
+    with open(f"{out}/results.json") as f:
+        results = json.load(f)
+    with open(f"{out}/results.csv") as f:
+        header = f.readline().strip().split(",")
+    # PSNR is left out where it is infinite (a frame identical to the truth).
+    for column in ("truth_ssim_skin", "truth_flip_skin", "truth_visible_skin"):
+        if column not in header or any(column not in r["quality"] for r in results["rows"]):
+            fail(f"{column} is missing from results.csv/json")
+    if "truth_psnr_skin" not in header:
+        fail("truth_psnr_skin is missing from results.csv")
+    return results
+
+
+def test_sweep_file():
+    ENV["SKINSIM_BLENDER"] = f"{WORK}/no-blender"
+    p = run(SKINSIM, *SWEEP, "--truth", f"{WORK}/nowhere.exr", "--out", f"{WORK}/s", expect=2)
+    if "nowhere.exr" not in p.stderr or os.path.exists(f"{WORK}/s"):
+        fail(f"a missing truth is not refused before the sweep: {p.stderr}")
+    run(SKINSIM, *SWEEP, "--out", f"{WORK}/s")
+    (cheap,) = [c for c in json.load(open(f"{WORK}/s/results.json"))["rows"]
+                if c["knobs"]["scale"] == "0.25"]
+    shutil.copy(f"{WORK}/s/{cheap['frame_image']}", f"{WORK}/truth.png")
+    p = run(SKINSIM, *SWEEP, "--truth", f"{WORK}/truth.png", "--out", f"{WORK}/s")
+    print(p.stdout, end="")
+    results = sweep_truth(f"{WORK}/s")
+    (group,) = results["truth"]
+    mine = [c for c in results["rows"] if c["id"] == cheap["id"]][0]
+    if mine["quality"]["truth_flip_skin"] != 0.0 or mine["quality"]["truth_visible_skin"] != 0.0:
+        fail(f"a frame against itself as truth: {mine['quality']}")
+    if group["recommended_by_truth"] != cheap["id"] or group["noise_floor"]["measured"]:
+        fail(f"the truth's own frame is not recommended: {group}")
+    if group["recommendation_same"] != (group["recommended_by_reference"] == cheap["id"]):
+        fail(f"recommendation_same is wrong: {group}")
+    changed = [c["id"] for c in group["visibility_verdicts_changed"]]
+    if (cheap["visible_vs_reference"] != (cheap["id"] in changed)) or "judged by the truth" not in p.stdout:
+        fail(f"the verdicts that changed: {changed}, against the reference {cheap['visible_vs_reference']}")
+
+
+def test_sweep():
+    blender = ENV.get("SKINSIM_BLENDER", "blender")
+    if shutil.which(blender) is None:
+        print(f"SKIP: Blender ({blender}) is not installed; scripts/install-deps.sh installs it")
+        sys.exit(77)
+    p = run(SKINSIM, *SWEEP, "--truth", "cached", "--out", f"{WORK}/s")
+    print(p.stdout, end="")
+    results = sweep_truth(f"{WORK}/s")
+    (group,) = results["truth"]
+    floor = group["noise_floor"]
+    if not floor["measured"] or not 0.0 < floor["skin"]["flip"] < 1.0:
+        fail(f"the truth's noise floor: {floor}")
+    if group["recommended_by_reference"] is None or "recommendation_same" not in group:
+        fail(f"the group's verdicts: {group}")
+    for c in results["rows"]:
+        q = c["quality"]
+        if not (0.0 < q["truth_flip_skin"] < 1.0 and q["truth_flip_skin"] >= 0.0):
+            fail(f"{c['id']}: implausible figures against the truth: {q}")
+    if "judged by the truth" not in p.stdout or "noise floor" not in p.stdout:
+        fail("the sweep does not say what the truth judged")
+
+
 def main():
     shutil.rmtree(WORK, ignore_errors=True)
     os.makedirs(WORK)
-    {"store": test_store, "file": test_file}[CASE]()
+    {"store": test_store, "file": test_file, "sweep_file": test_sweep_file,
+     "sweep": test_sweep}[CASE]()
     print("ok")
 
 
