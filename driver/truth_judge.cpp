@@ -73,6 +73,14 @@ nlohmann::json measure(const quality::Image& test, const quality::Image& truth,
 
 }  // namespace
 
+Truth with_images(Truth truth, TruthImages images) {
+  truth.images = std::move(images);
+  if (truth.images.second) {
+    truth.floor_map = quality::flip(*truth.images.second, truth.images.image).map;
+  }
+  return truth;
+}
+
 void require_truth(const std::string& option, const std::string& spec) {
   if (spec != kCachedTruth && !fs::is_regular_file(spec)) {
     throw UserError(
@@ -124,30 +132,26 @@ Truth cached_truth(const pipeline::GpuScene& scene, const pipeline::PipelineConf
       note(fmt::format("the kept truth {} was discarded, and is rendered again: {}",
                        store->marker(key).string(), kept.discarded));
     }
-    if (kept.images) {
-      truth.images = std::move(*kept.images);
-      truth.floor_map = quality::flip(*truth.images.second, truth.images.image).map;
-      return truth;
-    }
+    if (kept.images) return with_images(std::move(truth), std::move(*kept.images));
   }
   note(fmt::format("rendering the truth with Blender Cycles: {}x{}, {} samples, seeds {} and {}",
                    config.width, config.height, settings.samples, kSeed, kSeed + 1));
   const TruthRender render{blender_program(), truth_script(), threads};
   const fs::path log = scratch.path() / "blender.log";
+  TruthImages rendered;
   for (const int seed : {kSeed, kSeed + 1}) {
     const fs::path exr = scratch.path() / fmt::format("truth_seed{}.exr", seed);
     render_truth(render, dir, seed, exr, log);
     quality::Image image = display_image(read_linear_image(exr, log));
-    (seed == kSeed ? truth.images.image : truth.images.second.emplace()) = std::move(image);
+    (seed == kSeed ? rendered.image : rendered.second.emplace()) = std::move(image);
   }
   truth.about["source"] = "rendered";
   if (store) {
-    const std::string why = store->keep(key, truth.images);
+    const std::string why = store->keep(key, rendered);
     if (!why.empty())
       note(fmt::format("the truth was not kept in {}: {}", store->dir().string(), why));
   }
-  truth.floor_map = quality::flip(*truth.images.second, truth.images.image).map;
-  return truth;
+  return with_images(std::move(truth), std::move(rendered));
 }
 
 nlohmann::json judge_against_truth(const quality::Image& test, const Truth& truth,

@@ -27,6 +27,9 @@ struct Truth {
   quality::ScalarMap floor_map;  // FLIP of the second seed against the truth; empty without one
 };
 
+// `truth` with `images`, and the floor map of their second seed when there is one.
+Truth with_images(Truth truth, TruthImages images);
+
 // The truth store's (truth_store.h) truth of `scene`'s view under `config`: when the store has
 // none (or has it damaged: `note` says so), rendered with Blender Cycles at the default samples
 // with seeds 1 and 2 (the second for the noise floor) and kept; rendered every time when the

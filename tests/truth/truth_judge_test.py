@@ -10,6 +10,9 @@ Usage: truth_judge_test.py CASE SKINSIM SKINSIM_EXR WORKDIR
               own truth is identical and not visible); no measured floor is stated as such; a
               missing file, a file that is no image and one of another size exit 2, named,
               before the frame is rendered.
+  compare     `compare A B --truth cached` judges two runs by the truth both were judged with
+              (stand-in Blender), in the terminal and compare.json; `--truth FILE` too; runs
+              judged by no or by different truths, and a missing file, exit 2, named.
   sweep_file  `sweep --truth FILE` of two configurations, the truth being one of their own
               frames: per-configuration figures against it in results.json/csv, and the
               recommendation and that frame's verdict change to it; a missing truth exits 2
@@ -73,12 +76,16 @@ def run_cached(note=None):
     return p
 
 
-def test_store():
+def use_fake_blender():
     fake = f"{WORK}/fake-blender"
     with open(fake, "w") as f:
         f.write(FAKE_BLENDER)
     os.chmod(fake, 0o755)
     ENV["SKINSIM_BLENDER"] = fake
+
+
+def test_store():
+    use_fake_blender()
 
     p = run_cached()
     if blender_calls() != ["1", "2"]:
@@ -169,6 +176,37 @@ def test_file():
             fail("a refused truth left an output directory")
 
 
+def test_compare():
+    use_fake_blender()
+    a, b, other = f"{WORK}/a", f"{WORK}/b", f"{WORK}/other"
+    run(SKINSIM, "run", *SIZE, "--truth", "cached", "--out", a)
+    run(SKINSIM, "run", *SIZE, "--scale", "0.25", "--truth", "cached", "--out", b)
+    if blender_calls() != ["1", "2"]:
+        fail("two runs of one view did not share one truth")
+    p = run(SKINSIM, "compare", a, b, "--truth", "cached", "--out", f"{WORK}/cmp", expect=1)
+    with open(f"{WORK}/cmp/compare.json") as f:
+        truth = json.load(f)["truth"]
+    closer = "a" if truth["a"]["skin"]["flip"] < truth["b"]["skin"]["flip"] else "b"
+    if truth["closer"] != closer or not truth["noise_floor"]["measured"]:
+        fail(f"compare.json's truth: {truth}")
+    for line in ("A vs truth: skin PSNR", "B vs truth: skin PSNR", "noise floor: skin"):
+        if line not in p.stdout:
+            fail(f"compare does not print '{line}':\n{p.stdout}")
+    p = run(SKINSIM, "compare", a, b, "--truth", f"{a}/reference.png", expect=1)
+    if "noise floor: not measured" not in p.stdout:
+        fail(f"a file's floor is not stated: {p.stdout}")
+    run(SKINSIM, "run", *SIZE, "--out", other)
+    run(SKINSIM, "run", "--resolution", "48x36", "--truth", "cached", "--out", f"{WORK}/small")
+    run(SKINSIM, "run", *SIZE, "--light-azimuth", "30", "--truth", "cached", "--out", f"{WORK}/lit")
+    for args, words in (([a, other, "--truth", "cached"], [other, "not judged by a cached truth"]),
+                        ([a, f"{WORK}/small", "--truth", "cached"], ["32x24", "48x36"]),
+                        ([a, f"{WORK}/lit", "--truth", "cached"], ["different truths"]),
+                        ([a, b, "--truth", f"{WORK}/nowhere.png"], ["nowhere.png", "no such"])):
+        p = run(SKINSIM, "compare", *args, "--out", f"{WORK}/bad", expect=2)
+        if not all(w in p.stderr for w in words) or os.path.exists(f"{WORK}/bad"):
+            fail(f"compare {args}: the error does not say {words}, or --out was written: {p.stderr}")
+
+
 SWEEP = ["sweep", "--resolutions", "64x48", "--scales", "1,0.25", "--luts", "32x128", "--no-charts"]
 
 
@@ -236,7 +274,7 @@ def test_sweep():
 def main():
     shutil.rmtree(WORK, ignore_errors=True)
     os.makedirs(WORK)
-    {"store": test_store, "file": test_file, "sweep_file": test_sweep_file,
+    {"store": test_store, "file": test_file, "compare": test_compare, "sweep_file": test_sweep_file,
      "sweep": test_sweep}[CASE]()
     print("ok")
 
