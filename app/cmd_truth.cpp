@@ -174,7 +174,8 @@ Command add_truth_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--noise-floor", options->noise_floor,
                 "Also render with the next seed and report the two truths' difference (the "
-                "Monte Carlo noise floor every comparison against truth stands on)");
+                "Monte Carlo noise floor every comparison against truth stands on), and keep "
+                "both in the truth store for `--truth cached`");
   cmd->add_option("--compare", options->compare,
                   "A `skinsim run` directory of the same scene and options: its frame's and "
                   "reference's PSNR/SSIM/FLIP against the truth, in truth.json");

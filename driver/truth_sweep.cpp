@@ -38,9 +38,14 @@ void add_figures(reports::ConfigResult& row, const nlohmann::json& judged,
   for (const auto& [region, suffix] : {std::pair{"skin", "_skin"}, std::pair{"all", "_frame"}}) {
     if (!judged.contains(region)) continue;
     const nlohmann::json& m = judged[region];
-    for (const char* name : {"psnr", "ssim", "flip", "visible_pct", "visible_px"}) {
-      const nlohmann::json& v = m[std::string(name) == "psnr" ? "psnr_db" : name];
-      if (v.is_number()) row.quality[fmt::format("truth_{}{}", name, suffix)] = v.get<double>();
+    // Named as the reference's columns are (psnr_skin, visible_skin_pct), "truth_" first.
+    for (const auto& [column, field] :
+         {std::pair{"psnr{}", "psnr_db"}, std::pair{"ssim{}", "ssim"}, std::pair{"flip{}", "flip"},
+          std::pair{"visible{}_pct", "visible_pct"}, std::pair{"visible{}_px", "visible_px"}}) {
+      const nlohmann::json& v = m[field];
+      if (v.is_number()) {
+        row.quality["truth_" + fmt::format(fmt::runtime(column), suffix)] = v.get<double>();
+      }
     }
     row.quality[fmt::format("truth_visible{}", suffix)] = m["visible"].get<bool>() ? 1.0 : 0.0;
     if (floor.value("measured", false) && floor.contains(region)) {

@@ -210,13 +210,18 @@ def test_compare():
 SWEEP = ["sweep", "--resolutions", "64x48", "--scales", "1,0.25", "--luts", "32x128", "--no-charts"]
 
 
-def sweep_truth(out):
+def sweep_truth(out, floor):
+    """results.json, checked for the truth's columns (the floor's only with a measured floor)."""
     with open(f"{out}/results.json") as f:
         results = json.load(f)
     with open(f"{out}/results.csv") as f:
         header = f.readline().strip().split(",")
     # PSNR is left out where it is infinite (a frame identical to the truth).
-    for column in ("truth_ssim_skin", "truth_flip_skin", "truth_visible_skin"):
+    columns = ["truth_ssim_skin", "truth_flip_skin", "truth_visible_skin",
+               "truth_visible_skin_pct", "truth_visible_frame_px"]
+    if ("truth_floor_flip_skin" in header) != floor:
+        fail(f"truth_floor_flip_skin in results.csv: {not floor}, with a measured floor: {floor}")
+    for column in columns + (["truth_floor_flip_skin"] if floor else []):
         if column not in header or any(column not in r["quality"] for r in results["rows"]):
             fail(f"{column} is missing from results.csv/json")
     if "truth_psnr_skin" not in header:
@@ -235,7 +240,7 @@ def test_sweep_file():
     shutil.copy(f"{WORK}/s/{cheap['frame_image']}", f"{WORK}/truth.png")
     p = run(SKINSIM, *SWEEP, "--truth", f"{WORK}/truth.png", "--out", f"{WORK}/s")
     print(p.stdout, end="")
-    results = sweep_truth(f"{WORK}/s")
+    results = sweep_truth(f"{WORK}/s", floor=False)
     (group,) = results["truth"]
     mine = [c for c in results["rows"] if c["id"] == cheap["id"]][0]
     if mine["quality"]["truth_flip_skin"] != 0.0 or mine["quality"]["truth_visible_skin"] != 0.0:
@@ -256,7 +261,7 @@ def test_sweep():
         sys.exit(77)
     p = run(SKINSIM, *SWEEP, "--truth", "cached", "--out", f"{WORK}/s")
     print(p.stdout, end="")
-    results = sweep_truth(f"{WORK}/s")
+    results = sweep_truth(f"{WORK}/s", floor=True)
     (group,) = results["truth"]
     floor = group["noise_floor"]
     if not floor["measured"] or not 0.0 < floor["skin"]["flip"] < 1.0:
