@@ -3,7 +3,8 @@
 // against it, beside the Monte Carlo noise floor the truth carries. A difference below that
 // floor is never called visible: a pixel counts as visibly different from the truth only when
 // its FLIP error is above quality::flip_visibility_threshold() and above the FLIP error between
-// the truth and another seed's rendering at that pixel.
+// the truth and another seed's rendering there (the largest within 2 pixels: one pixel's is
+// one draw of the noise).
 #pragma once
 
 #include <filesystem>
@@ -24,7 +25,7 @@ inline constexpr const char* kCachedTruth = "cached";
 struct Truth {
   TruthImages images;
   nlohmann::json about;          // where it came from: {"source", "file" or "key"/"store"}
-  quality::ScalarMap floor_map;  // FLIP of the second seed against the truth; empty without one
+  quality::ScalarMap floor_map;  // the floor per pixel (above); empty without a second seed
 };
 
 // `truth` with `images`, and the floor map of their second seed when there is one.
