@@ -9,7 +9,11 @@
 #include "app/cli_options.h"
 #include "app/commands.h"
 #include "driver/run_compare.h"
+#include "driver/truth_compare.h"
+#include "driver/truth_judge.h"
 #include "io/atomic_file.h"
+#include "io/json_input.h"
+#include "io/read_file.h"
 #include "io/run_directory.h"
 #include "reports/compare_page.h"
 #include "reports/compare_table.h"
@@ -26,7 +30,21 @@ struct CompareOptions {
   std::string out;  // none: the terminal table only
   double rel_tol = reports::Tolerances{}.modelled;
   double counter_tol = reports::Tolerances{}.counter;
+  std::string truth;  // --truth: "cached", a file, or none
 };
+
+// `--truth`: both frames against the truth, printed after the comparison (and into
+// compare.json with --out). Computed first, so a bad truth fails before anything is written.
+nlohmann::json judge_with_truth(const CompareOptions& o) {
+  if (o.truth.empty()) return nullptr;
+  driver::require_truth("--truth", o.truth);
+  return driver::compare_with_truth(o.a, o.b, o.truth);
+}
+
+void print_truth(const nlohmann::json& truth) {
+  if (truth.is_null()) return;
+  for (const std::string& line : driver::truth_compare_lines(truth)) fmt::print("{}\n", line);
+}
 
 // --out is replaced whole, so it must not hold A or B.
 void check_out_holds_neither(const std::string& out, const std::string& a, const std::string& b) {
@@ -45,17 +63,28 @@ int compare(const CompareOptions& o) {
   reports::Tolerances tolerances;
   tolerances.counter = o.counter_tol;
   tolerances.modelled = tolerances.quality = o.rel_tol;
+  const nlohmann::json truth = judge_with_truth(o);
   if (o.out.empty()) {
     const reports::Comparison c = driver::compare_outputs(o.a, o.b, tolerances, {});
     fmt::print("{}", reports::format_comparison(c));
+    print_truth(truth);
     return c.different() ? 1 : 0;
   }
   check_out_holds_neither(o.out, o.a, o.b);
   io::RunDirectory out(o.out, "compare");
   const reports::Comparison c = driver::compare_outputs(o.a, o.b, tolerances, out.staging());
   reports::write_compare_files(c, out.staging());
+  if (!truth.is_null()) {
+    const std::filesystem::path json = out.staging() / "compare.json";
+    nlohmann::json written =
+        io::parse_json(io::read_regular_file(json, "compare.json"), "compare.json", json);
+    written["truth"] = truth;
+    io::write_file_atomically(json.string(), written.dump(2) + "\n");
+  }
   out.commit();
-  fmt::print("{}wrote {}/compare.html and compare.json\n", reports::format_comparison(c), o.out);
+  fmt::print("{}", reports::format_comparison(c));
+  print_truth(truth);
+  fmt::print("wrote {}/compare.html and compare.json\n", o.out);
   return c.different() ? 1 : 0;
 }
 
@@ -72,6 +101,10 @@ Command add_compare_command(CLI::App& app) {
   cmd->add_option("b", options->b, "The run or sweep directory to compare with A")->required();
   cmd->add_option("--out", options->out,
                   "Also write compare.html, compare.json, crops and difference images here");
+  cmd->add_option("--truth", options->truth,
+                  "Also judge both runs' frames against a path-traced truth: `cached` (the one "
+                  "both were judged with by `run --truth cached`) or a linear EXR or PNG of the "
+                  "view (docs/validation.md); the exit status is unchanged");
   cmd->add_option("--rel-tol", options->rel_tol,
                   "Relative tolerance of modelled times, bytes and quality metrics")
       ->check(non_negative_real(1e6))

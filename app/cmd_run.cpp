@@ -14,6 +14,7 @@
 #include "driver/images.h"
 #include "driver/reference_cache.h"
 #include "driver/result_json.h"
+#include "driver/truth_judge.h"
 #include "gpu_model/sensitivity.h"
 #include "gpu_model/timing_json.h"
 #include "gpu_model/timing_table.h"
@@ -35,7 +36,25 @@ struct RunOptions {
   std::string out = "out";
   bool sensitivity = false;
   bool reference = true;
+  std::string truth;  // --truth: "cached", a file, or none
 };
+
+// `--truth`: the frame and the reference judged by the path-traced truth beside the
+// reference's figures (driver/truth_judge.h), for result.json's "truth".
+nlohmann::json judge_with_truth(const driver::Truth& truth, const driver::FrameJobResult& r) {
+  const quality::Mask* skin = r.reference ? &r.reference->skin : nullptr;
+  nlohmann::json out = truth.about;
+  out["noise_floor"] = driver::truth_noise_floor(truth, skin);
+  out["frame"] = driver::judge_against_truth(driver::to_image(r.frame.output.frame), truth, skin);
+  fmt::print("truth: {}\n", driver::truth_source_text(truth));
+  fmt::print("truth's noise floor: {}\n", driver::truth_figures(out["noise_floor"]));
+  fmt::print("quality vs truth: frame {}\n", driver::truth_figures(out["frame"]));
+  if (r.reference) {
+    out["reference"] = driver::judge_against_truth(r.reference->image, truth, skin);
+    fmt::print("quality vs truth: reference {}\n", driver::truth_figures(out["reference"]));
+  }
+  return out;
+}
 
 // Where the reference came from, when it was not rendered, and why a rendered one could not
 // be kept for later runs.
@@ -85,8 +104,19 @@ int run(const RunOptions& o) {
   job.reference = o.reference;
   job.previous_run = o.out;  // the run this one replaces: its reference may be this one's
   job.reference_store = driver::ReferenceStore::from_environment();
+  // A truth file is read before the frame's work, so a wrong one fails at once.
+  if (!o.truth.empty()) driver::require_truth("--truth", o.truth);
+  std::optional<driver::Truth> truth;
+  if (!o.truth.empty() && o.truth != driver::kCachedTruth) {
+    truth = driver::truth_file("--truth", o.truth, config.width, config.height);
+  }
   const driver::FrameJobResult frame_job = driver::run_frame_job(job);
   const driver::FrameResult& result = frame_job.frame;
+  if (o.truth == driver::kCachedTruth) {
+    truth = driver::cached_truth(
+        *frame_job.gpu_scene, config, o.device.threads,
+        [](const std::string& note) { fmt::print(stderr, "skinsim run: note: {}\n", note); });
+  }
 
   const std::filesystem::path& out = run_directory.staging();
   std::vector<std::string> written = {"frame.png"};
@@ -142,6 +172,7 @@ int run(const RunOptions& o) {
     json["sensitivity"] = gpu_model::to_json(rows);
     fmt::print("\n{}", gpu_model::format_sensitivity_table(rows));
   }
+  if (truth) json["truth"] = judge_with_truth(*truth, frame_job);
   json["warnings"] = warnings;
   // Paths and names come from the user as raw bytes; JSON must be UTF-8, so invalid bytes are
   // written as U+FFFD rather than throwing after the frame has been rendered.
@@ -189,6 +220,10 @@ Command add_run_command(CLI::App& app) {
   cmd->add_option("--out", options->out, "Output directory")->capture_default_str();
   cmd->add_flag("!--no-reference", options->reference,
                 "Skip the reference frame and the quality metrics (faster)");
+  cmd->add_option("--truth", options->truth,
+                  "Also judge the frame and the reference against a path-traced truth: `cached` "
+                  "(the truth store's, rendered with Blender Cycles when missing) or a linear "
+                  "EXR or PNG of the same view (docs/validation.md)");
   cmd->add_flag("--sensitivity", options->sensitivity,
                 "Also report how frame time moves over each uncertain device figure's range");
   return [options] { return run(*options); };

@@ -7,6 +7,7 @@
 #include <malloc.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <csignal>
 #include <cstdint>
@@ -17,11 +18,17 @@
 
 #include "app/cli_options.h"
 #include "app/commands.h"
+#include "driver/frame_job.h"
 #include "driver/sweep_file.h"
 #include "driver/sweep_report.h"
 #include "driver/sweep_results.h"
 #include "driver/sweep_run.h"
 #include "driver/sweep_spec.h"
+#include "driver/truth_sweep.h"
+#include "gpu_model/profile_loader.h"
+#include "io/atomic_file.h"
+#include "io/json_input.h"
+#include "io/read_file.h"
 #include "io/run_directory.h"
 #include "io/temp_files.h"
 #include "reports/knob_verdicts.h"
@@ -71,6 +78,7 @@ struct SweepOptions {
   std::size_t max_configs = driver::kDefaultMaxConfigs;
   std::string shard;  // "K/N", or empty
   bool merge = false;
+  std::string truth;  // --truth: "cached", a file, or none
 };
 
 // `--out ""` would write into the current directory, and a file there cannot hold results.
@@ -177,8 +185,40 @@ int finish_shard(const driver::SweepShard& shard, const driver::SweepRunSummary&
   return summary.failed.empty() ? 0 : 1;
 }
 
+// `--truth`: each configuration judged by its group's truth (driver/truth_sweep.h), into the
+// table's quality columns; returns results.json's "truth".
+nlohmann::json judge_with_truth(const SweepOptions& o, const driver::SweepSpec& spec,
+                                const std::vector<driver::SweepConfig>& configs,
+                                const std::string& data_dir, reports::SweepTable& table) {
+  const auto truth_of = [&](const reports::ConfigResult& row, int width, int height) {
+    if (o.truth != driver::kCachedTruth)
+      return driver::truth_file("--truth", o.truth, width, height);
+    const auto config =
+        std::find_if(configs.begin(), configs.end(),
+                     [&row](const driver::SweepConfig& c) { return c.id == row.id; });
+    const pipeline::PipelineConfig resolved = driver::resolve_config(
+        config->config, gpu_model::load_device_profile(config->device, data_dir));
+    const scene::Scene scene = driver::load_scene(
+        spec.scene, static_cast<float>(resolved.width) / static_cast<float>(resolved.height));
+    return driver::cached_truth(
+        pipeline::GpuScene(scene), resolved, o.threads,
+        [](const std::string& note) { fmt::print(stderr, "skinsim sweep: note: {}\n", note); });
+  };
+  return driver::judge_sweep_with_truth(table, o.out, truth_of);
+}
+
+// Adds the truth's verdicts to results.json, which the report wrote from the table.
+void add_truth_to_results(const std::string& out, const nlohmann::json& truth) {
+  const std::filesystem::path path = std::filesystem::path(out) / "results.json";
+  nlohmann::json results =
+      io::parse_json(io::read_regular_file(path, "results.json"), "results.json", path);
+  results["truth"] = truth;
+  io::write_file_atomically(path.string(), results.dump(2) + "\n");
+}
+
 int run(const SweepOptions& o, const CLI::App& cmd) {
   require_out_dir(o.out);
+  if (!o.truth.empty()) driver::require_truth("--truth", o.truth);  // before hours of sweep
   const driver::SweepSpec spec = build_spec(o, cmd);
   const std::vector<driver::SweepConfig> configs = driver::expand_sweep(spec, o.max_configs);
 
@@ -268,12 +308,20 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
     return interrupted_exit();
   }
 
+  nlohmann::json truth;
+  if (!o.truth.empty()) {
+    truth = judge_with_truth(o, spec, configs, run_options.data_dir, table);
+  }
   const driver::SweepReportOutcome report = driver::write_sweep_report(table, o.out, o.charts);
   if (!report.report_path.empty()) {
     written.push_back(report.charts_drawn ? "report.html + charts" : "report.html (no charts)");
   }
   if (!report.note.empty()) fmt::print(stderr, "skinsim sweep: note: {}\n", report.note);
   print_recommendations(table);
+  if (!truth.is_null()) {
+    add_truth_to_results(o.out, truth);
+    for (const std::string& line : driver::truth_sweep_lines(truth)) fmt::print("{}\n", line);
+  }
   fmt::print("wrote {}/{{{}}}\n", o.out, fmt::join(written, ", "));
   int code = 0;
   if (!summary.failed.empty()) {
@@ -347,6 +395,11 @@ Command add_sweep_command(CLI::App& app) {
                   "Compute only part K of N of the sweep (K/N, K from 0), e.g. one task of a "
                   "Slurm job array (scripts/slurm/sweep.sh): shards balanced by expected cost "
                   "share --out safely; no report (see --merge)");
+  cmd->add_option("--truth", o->truth,
+                  "Also judge every configuration against a path-traced truth (`cached`: the "
+                  "truth store's for each group, rendered with Blender Cycles when missing; or a "
+                  "linear EXR or PNG of the view) and say per group whether the recommendation "
+                  "and the visibility verdicts stay (docs/validation.md)");
   cmd->add_flag("--merge", o->merge,
                 "Compute nothing: write the tables and report from the configurations in --out "
                 "(after the shards), naming those missing and their shard; exit 1 if any is")

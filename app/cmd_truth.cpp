@@ -17,6 +17,7 @@
 #include "driver/truth_image.h"
 #include "driver/truth_render.h"
 #include "driver/truth_scene.h"
+#include "driver/truth_store.h"
 #include "io/atomic_file.h"
 #include "io/run_directory.h"
 #include "util/user_error.h"
@@ -71,6 +72,19 @@ std::string figures(const nlohmann::json& m) {
                      m.contains("skin") ? " (skin)" : "");
 }
 
+// A truth with its noise floor serves `run --truth cached` of the same view (truth_store.h).
+void keep(const nlohmann::json& key, const driver::TruthImages& images) {
+  const std::optional<driver::TruthStore> store = driver::TruthStore::from_environment();
+  if (!store) return;
+  const std::string why = store->keep(key, images);
+  if (why.empty()) {
+    fmt::print("skinsim truth: kept in the truth store as {}\n", store->marker(key).string());
+  } else {
+    fmt::print(stderr, "skinsim truth: note: the truth was not kept in {}: {}\n",
+               store->dir().string(), why);
+  }
+}
+
 int run_truth(const TruthOptions& o) {
   const gpu_model::DeviceProfile device = load_device(o.device);
   const pipeline::PipelineConfig config = driver::resolve_config(o.config, device);
@@ -88,9 +102,10 @@ int run_truth(const TruthOptions& o) {
   const scene::Scene scene = driver::load_scene(
       source, static_cast<float>(config.width) / static_cast<float>(config.height));
   const pipeline::GpuScene gpu_scene(scene);
-  driver::write_truth_scene(gpu_scene, config, o.settings, out / "scene");
+  const nlohmann::json exported =
+      driver::write_truth_scene(gpu_scene, config, o.settings, out / "scene");
 
-  driver::TruthRender render{driver::blender_program(), SKINSIM_TRUTH_SCRIPT, o.device.threads};
+  driver::TruthRender render{driver::blender_program(), driver::truth_script(), o.device.threads};
   const std::filesystem::path log = out / "blender.log";
   nlohmann::json result{
       {"scene", o.scene.label()},
@@ -121,6 +136,7 @@ int run_truth(const TruthOptions& o) {
     }
     fmt::print("skinsim truth: noise floor (seed {} vs {}): {}\n", seed2, o.seed,
                figures(result["noise_floor"]));
+    keep(driver::truth_key(exported, out / "scene", render.script, o.seed), {truth, other});
   }
   if (run) {
     result["compare"] = o.compare;
@@ -158,7 +174,8 @@ Command add_truth_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--noise-floor", options->noise_floor,
                 "Also render with the next seed and report the two truths' difference (the "
-                "Monte Carlo noise floor every comparison against truth stands on)");
+                "Monte Carlo noise floor every comparison against truth stands on), and keep "
+                "both in the truth store for `--truth cached`");
   cmd->add_option("--compare", options->compare,
                   "A `skinsim run` directory of the same scene and options: its frame's and "
                   "reference's PSNR/SSIM/FLIP against the truth, in truth.json");

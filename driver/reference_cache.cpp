@@ -34,17 +34,16 @@ nlohmann::json images_entry(const ReferenceImages& images) {
           {"pixels", pixel_digest(images)}};
 }
 
-// Whether `path` itself (not a symlink's target) is a regular file.
-bool is_plain_file(const fs::path& path) {
-  std::error_code ec;
-  return fs::is_regular_file(fs::symlink_status(path, ec));
-}
-
 KeptReference discarded(std::string why) {
   return {std::nullopt, std::move(why)};
 }
 
 }  // namespace
+
+bool is_plain_file(const fs::path& path) {
+  std::error_code ec;
+  return fs::is_regular_file(fs::symlink_status(path, ec));
+}
 
 nlohmann::json reference_fingerprint(const pipeline::PipelineConfig& resolved,
                                      const nlohmann::json& scene) {

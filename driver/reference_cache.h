@@ -23,6 +23,9 @@ enum class ReferenceSource {
   kRendered,  // rendered, as neither had it
 };
 
+// Whether `path` itself (not a symlink's target) is a regular file: what a cache reads.
+bool is_plain_file(const std::filesystem::path& path);
+
 // What the reference depends on: the knobs marked `reference` in the knob table (the
 // resolution, the BRDF parameters, the light and framing: pipeline/knob.h) and the scene
 // (`scene`: scene_fingerprint, which reads a scan, so callers compute it once).

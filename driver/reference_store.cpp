@@ -27,7 +27,8 @@ std::string environment(const char* name) {
   return value ? value : "";
 }
 
-// The cache directory the environment names, or nullopt for none.
+}  // namespace
+
 std::optional<fs::path> cache_directory() {
   const std::string chosen = environment(kCacheVariable);
   const auto refuse = [&chosen](const std::string& why) {
@@ -55,7 +56,27 @@ std::optional<fs::path> cache_directory() {
   return std::nullopt;
 }
 
-}  // namespace
+void evict_least_recent(const fs::path& dir, const std::string& stem,
+                        const std::vector<std::string>& suffixes, int capacity) {
+  std::vector<std::pair<fs::file_time_type, fs::path>> markers;
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    if (entry.is_regular_file() && name.starts_with(stem) && name.ends_with(kMarkerSuffix)) {
+      markers.emplace_back(entry.last_write_time(), entry.path());
+    }
+  }
+  if (markers.size() <= static_cast<std::size_t>(capacity)) return;
+  std::sort(markers.begin(), markers.end(), [](const auto& a, const auto& b) {
+    return a.first != b.first ? a.first > b.first : a.second < b.second;  // newest first
+  });
+  for (std::size_t i = static_cast<std::size_t>(capacity); i < markers.size(); ++i) {
+    fs::path base = markers[i].second;
+    base.replace_extension();
+    std::error_code ec;
+    fs::remove(markers[i].second, ec);  // the marker first: the images are then no copy
+    for (const std::string& suffix : suffixes) fs::remove(base.string() + suffix, ec);
+  }
+}
 
 ReferenceStore::ReferenceStore(fs::path dir, int capacity)
     : dir_(std::move(dir)), capacity_(std::max(capacity, 1)) {}
@@ -94,28 +115,8 @@ std::string ReferenceStore::keep(const nlohmann::json& marker,
   return "";
 }
 
-// Removes the references whose markers were used least recently, beyond the capacity. Another
-// process may be loading one of them: it then finds it incomplete and renders it.
 void ReferenceStore::evict() const {
-  std::vector<std::pair<fs::file_time_type, fs::path>> markers;
-  for (const fs::directory_entry& entry : fs::directory_iterator(dir_)) {
-    const std::string name = entry.path().filename().string();
-    if (entry.is_regular_file() && name.starts_with(kStem) && name.ends_with(kMarkerSuffix)) {
-      markers.emplace_back(entry.last_write_time(), entry.path());
-    }
-  }
-  if (markers.size() <= static_cast<std::size_t>(capacity_)) return;
-  std::sort(markers.begin(), markers.end(), [](const auto& a, const auto& b) {
-    return a.first != b.first ? a.first > b.first : a.second < b.second;  // newest first
-  });
-  for (std::size_t i = static_cast<std::size_t>(capacity_); i < markers.size(); ++i) {
-    fs::path stem = markers[i].second;
-    stem.replace_extension();
-    std::error_code ec;
-    fs::remove(markers[i].second, ec);  // the marker first: the images are then no copy
-    fs::remove(stem.string() + ".png", ec);
-    fs::remove(stem.string() + "_skin.png", ec);
-  }
+  evict_least_recent(dir_, kStem, {".png", "_skin.png"}, capacity_);
 }
 
 }  // namespace skinsim::driver

@@ -10,11 +10,27 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "driver/frame_quality.h"
 #include "driver/reference_cache.h"
 
 namespace skinsim::driver {
+
+// The cache directory the environment selects: SKINSIM_CACHE_DIR names it, or is "off" in any
+// case ("OFF", "Off") for none; unset or empty, $XDG_CACHE_HOME/skinsim (an absolute
+// XDG_CACHE_HOME), else $HOME/.cache/skinsim; none without a home. Throws UserError naming
+// SKINSIM_CACHE_DIR when it names something that is not a directory (a file, a dangling
+// symlink) or holds a control character. The reference store (below) and the truth store
+// (truth_store.h) keep their entries in folders of it.
+std::optional<std::filesystem::path> cache_directory();
+
+// Removes the entries of a store in `dir` whose markers (<stem>*.json) were used least
+// recently, beyond `capacity`, with their files (the marker's name without ".json", then each
+// of `suffixes`). The marker goes first: its files are then no entry. Another process may be
+// loading one of them: it then finds it incomplete and renders it.
+void evict_least_recent(const std::filesystem::path& dir, const std::string& stem,
+                        const std::vector<std::string>& suffixes, int capacity);
 
 class ReferenceStore {
  public:
@@ -24,11 +40,7 @@ class ReferenceStore {
   // References are kept in `dir` (created when the first is kept).
   explicit ReferenceStore(std::filesystem::path dir, int capacity = kDefaultCapacity);
 
-  // The store the environment selects, in its references/ folder: SKINSIM_CACHE_DIR names the
-  // cache directory, or is "off" in any case ("OFF", "Off") for none; unset or empty,
-  // $XDG_CACHE_HOME/skinsim (an absolute XDG_CACHE_HOME), else $HOME/.cache/skinsim; none
-  // without a home. Throws UserError naming SKINSIM_CACHE_DIR when it names something that is
-  // not a directory (a file, a dangling symlink) or holds a control character.
+  // The store in the references/ folder of the cache directory (cache_directory), if any.
   static std::optional<ReferenceStore> from_environment();
 
   // The width x height reference kept under `marker` (reference_marker), when the store holds

@@ -15,6 +15,10 @@ std::string blender_program() {
   return set && *set ? set : "blender";
 }
 
+std::filesystem::path truth_script() {
+  return SKINSIM_TRUTH_SCRIPT;
+}
+
 double render_truth(const TruthRender& render, const std::filesystem::path& scene_dir, int seed,
                     const std::filesystem::path& exr, const std::filesystem::path& log) {
   if (!program_exists(render.blender)) {

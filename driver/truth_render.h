@@ -14,6 +14,9 @@ namespace skinsim::driver {
 // $SKINSIM_BLENDER, else "blender" from PATH.
 std::string blender_program();
 
+// scripts/truth/cycles_render.py of the source tree skinsim was built from.
+std::filesystem::path truth_script();
+
 struct TruthRender {
   std::string blender;           // the program
   std::filesystem::path script;  // cycles_render.py

@@ -16,23 +16,16 @@ import json
 import os
 import shutil
 import struct
-import subprocess
 import sys
+
+from truth_common import fail, run_with
 
 CASE, SKINSIM, EXR_TOOL, WORK = sys.argv[1:5]
 ENV = dict(os.environ, SKINSIM_CACHE_DIR="off", SKINSIM_EXR_TOOL=EXR_TOOL)
 
 
-def fail(message):
-    print(f"FAIL: {message}")
-    sys.exit(1)
-
-
 def run(*args, expect=0):
-    p = subprocess.run(args, env=ENV, capture_output=True, text=True)
-    if p.returncode != expect:
-        fail(f"{' '.join(args)} exited {p.returncode}, expected {expect}:\n{p.stdout}{p.stderr}")
-    return p
+    return run_with(ENV, *args, expect=expect)
 
 
 def write_raw(path, width, height, values):

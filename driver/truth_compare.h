@@ -1,0 +1,24 @@
+// `compare A B --truth` (docs/validation.md): two runs' frames judged by one truth, beside
+// what `compare` says of them against each other. `cached` takes the truth both runs were
+// judged with (`run --truth cached`: the key in their result.json), from the truth store.
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace skinsim::driver {
+
+// {"truth", "noise_floor", "a", "b", "closer"}: each run's frame against the truth (over the
+// skin of A's reference when it has one), and which is closer by FLIP ("a", "b" or "same").
+// Throws UserError naming the option and run when A or B is not a run directory, their frames
+// differ in size, `cached` finds no key in a run's result.json, the two keys differ, or the
+// store no longer holds that truth intact; and as truth_file for a file.
+nlohmann::json compare_with_truth(const std::filesystem::path& a, const std::filesystem::path& b,
+                                  const std::string& spec);
+
+// The lines `compare` prints of compare_with_truth's result.
+std::vector<std::string> truth_compare_lines(const nlohmann::json& judged);
+
+}  // namespace skinsim::driver

@@ -1,0 +1,234 @@
+#include "driver/truth_judge.h"
+
+#include <fmt/format.h>
+#include <stdlib.h>
+
+#include <algorithm>
+#include <cstring>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+
+#include "driver/truth_image.h"
+#include "driver/truth_render.h"
+#include "driver/truth_scene.h"
+#include "quality/json_value.h"
+#include "quality/metrics.h"
+#include "util/user_error.h"
+
+namespace skinsim::driver {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A scratch directory for the exported scene and Blender's output, removed unless an error is
+// on its way out (which may name Blender's log in it).
+class ScratchDirectory {
+ public:
+  ScratchDirectory() {
+    std::string pattern = (fs::temp_directory_path() / "skinsim-truth-XXXXXX").string();
+    if (!mkdtemp(pattern.data())) {
+      throw UserError(fmt::format("cannot make a scratch directory in {}: {}",
+                                  fs::temp_directory_path().string(), std::strerror(errno)));
+    }
+    path_ = pattern;
+  }
+  ~ScratchDirectory() {
+    std::error_code ec;
+    if (std::uncaught_exceptions() == 0) fs::remove_all(path_, ec);
+  }
+  ScratchDirectory(const ScratchDirectory&) = delete;
+  ScratchDirectory& operator=(const ScratchDirectory&) = delete;
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+bool is_png(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  char magic[8] = {};
+  in.read(magic, sizeof magic);
+  return in && std::memcmp(magic, "\x89PNG\r\n\x1a\n", sizeof magic) == 0;
+}
+
+nlohmann::json measure(const quality::Image& test, const quality::Image& truth,
+                       const quality::ScalarMap& floor_map, const quality::Mask* mask) {
+  const quality::FlipResult flip = quality::flip(test, truth, mask);
+  std::size_t pixels = 0, visible = 0;
+  const double threshold = quality::flip_visibility_threshold();
+  for (std::size_t i = 0; i < flip.map.values.size(); ++i) {
+    if (mask && mask->values[i] == 0) continue;
+    ++pixels;
+    const float error = flip.map.values[i];
+    if (error > threshold && (floor_map.values.empty() || error > floor_map.values[i])) ++visible;
+  }
+  return {{"psnr_db", quality::metric_to_json(quality::psnr(test, truth, mask))},
+          {"ssim", quality::metric_to_json(quality::ssim(test, truth, mask))},
+          {"flip", quality::metric_to_json(flip.mean)},
+          {"visible_px", visible},
+          {"visible_pct", quality::visible_percent(visible, pixels)},
+          {"visible", static_cast<double>(visible) >= quality::flip_visible_area_pixels()}};
+}
+
+// The floor at each pixel: the largest two-seed FLIP error within kFloorRadius of it. One
+// pixel's two-seed error is a single draw of the noise there, often far below what the noise
+// can reach; the largest of the 5x5 neighbours' draws bounds about 24 in 25 of them (the noise
+// varies slowly across the face, far more slowly than from draw to draw).
+constexpr int kFloorRadius = 2;
+
+quality::ScalarMap local_maximum(const quality::ScalarMap& map) {
+  quality::ScalarMap out = map;
+  for (int y = 0; y < map.height; ++y) {
+    for (int x = 0; x < map.width; ++x) {
+      float peak = 0.0f;
+      for (int dy = -kFloorRadius; dy <= kFloorRadius; ++dy) {
+        for (int dx = -kFloorRadius; dx <= kFloorRadius; ++dx) {
+          const int sx = x + dx, sy = y + dy;
+          if (sx < 0 || sy < 0 || sx >= map.width || sy >= map.height) continue;
+          peak = std::max(peak, map.values[static_cast<std::size_t>(sy) * map.width + sx]);
+        }
+      }
+      out.values[static_cast<std::size_t>(y) * map.width + x] = peak;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+Truth with_images(Truth truth, TruthImages images) {
+  truth.images = std::move(images);
+  if (truth.images.second) {
+    truth.floor_map = local_maximum(quality::flip(*truth.images.second, truth.images.image).map);
+  }
+  return truth;
+}
+
+void require_truth(const std::string& option, const std::string& spec) {
+  if (spec != kCachedTruth && !fs::is_regular_file(spec)) {
+    throw UserError(
+        fmt::format("{} {}: no such image file (give `{}` or an EXR/PNG of the frame's view)",
+                    option, spec, kCachedTruth));
+  }
+}
+
+Truth truth_file(const std::string& option, const fs::path& path, int width, int height) {
+  require_truth(option, path.string());
+  Truth truth;
+  if (is_png(path)) {
+    truth.images.image = quality::load_png(path);
+    quality::round_to_saved_png(truth.images.image);  // a 16-bit PNG is seen in 8 bits too
+  } else {
+    const ScratchDirectory scratch;
+    try {
+      truth.images.image = display_image(read_linear_image(path, scratch.path() / "exr.log"));
+    } catch (const UserError& e) {
+      throw UserError(fmt::format("{} {}", option, e.what()));
+    }
+  }
+  const quality::Image& image = truth.images.image;
+  if (image.width != width || image.height != height) {
+    throw UserError(
+        fmt::format("{} {}: the image is {}x{}, the frame {}x{} (render the truth at the run's "
+                    "--resolution, or run at the truth's)",
+                    option, path.string(), image.width, image.height, width, height));
+  }
+  truth.about = {{"source", "file"}, {"file", path.string()}};
+  return truth;
+}
+
+Truth cached_truth(const pipeline::GpuScene& scene, const pipeline::PipelineConfig& config,
+                   int threads, const std::function<void(const std::string&)>& note) {
+  constexpr int kSeed = 1;
+  const TruthSettings settings;
+  const ScratchDirectory scratch;
+  const fs::path dir = scratch.path() / "scene";
+  const nlohmann::json exported = write_truth_scene(scene, config, settings, dir);
+  const nlohmann::json key = truth_key(exported, dir, truth_script(), kSeed);
+  Truth truth;
+  truth.about = {{"source", "store"}, {"key", key}};
+  const std::optional<TruthStore> store = TruthStore::from_environment();
+  if (store) {
+    truth.about["store"] = store->marker(key).string();
+    KeptTruth kept = store->load(key, config.width, config.height);
+    if (!kept.discarded.empty()) {
+      note(fmt::format("the kept truth {} was discarded, and is rendered again: {}",
+                       store->marker(key).string(), kept.discarded));
+    }
+    if (kept.images) return with_images(std::move(truth), std::move(*kept.images));
+  }
+  note(fmt::format("rendering the truth with Blender Cycles: {}x{}, {} samples, seeds {} and {}",
+                   config.width, config.height, settings.samples, kSeed, kSeed + 1));
+  const TruthRender render{blender_program(), truth_script(), threads};
+  const fs::path log = scratch.path() / "blender.log";
+  TruthImages rendered;
+  for (const int seed : {kSeed, kSeed + 1}) {
+    const fs::path exr = scratch.path() / fmt::format("truth_seed{}.exr", seed);
+    render_truth(render, dir, seed, exr, log);
+    quality::Image image = display_image(read_linear_image(exr, log));
+    (seed == kSeed ? rendered.image : rendered.second.emplace()) = std::move(image);
+  }
+  truth.about["source"] = "rendered";
+  if (store) {
+    const std::string why = store->keep(key, rendered);
+    if (!why.empty())
+      note(fmt::format("the truth was not kept in {}: {}", store->dir().string(), why));
+  }
+  return with_images(std::move(truth), std::move(rendered));
+}
+
+nlohmann::json judge_against_truth(const quality::Image& test, const Truth& truth,
+                                   const quality::Mask* skin) {
+  nlohmann::json out{{"all", measure(test, truth.images.image, truth.floor_map, nullptr)}};
+  if (skin && skin->count() > 0)
+    out["skin"] = measure(test, truth.images.image, truth.floor_map, skin);
+  return out;
+}
+
+nlohmann::json truth_noise_floor(const Truth& truth, const quality::Mask* skin) {
+  if (!truth.images.second) {
+    return {{"measured", false},
+            {"why",
+             "a truth file is one image: `--truth cached` renders two seeds and measures "
+             "it"}};
+  }
+  nlohmann::json floor = judge_against_truth(*truth.images.second, truth, skin);
+  floor["measured"] = true;
+  return floor;
+}
+
+std::string truth_source_text(const Truth& truth) {
+  const nlohmann::json& a = truth.about;
+  if (a["source"] == "file")
+    return fmt::format("the file {} (one image)", a["file"].get<std::string>());
+  const nlohmann::json& key = a["key"];
+  const std::string settings = fmt::format("{} samples, seeds {} and {}", key["samples"].get<int>(),
+                                           key["seed"].get<int>(), key["second_seed"].get<int>());
+  const std::string kept =
+      a.contains("store") ? ", kept as " + a["store"].get<std::string>() : " (the store is off)";
+  return a["source"] == "store"
+             ? fmt::format("the truth store's {} ({})", a["store"].get<std::string>(), settings)
+             : fmt::format("rendered with Blender Cycles ({}){}", settings, kept);
+}
+
+std::string truth_figures(const nlohmann::json& judged) {
+  if (judged.contains("measured") && !judged["measured"].get<bool>()) return "not measured";
+  const bool skin = judged.contains("skin");
+  const bool floor = judged.contains("measured");  // the floor is below itself by definition
+  const nlohmann::json& m = skin ? judged["skin"] : judged["all"];
+  const auto value = [](const nlohmann::json& v, const char* format) {
+    return v.is_number() ? fmt::format(fmt::runtime(format), v.get<double>()) : v.dump();
+  };
+  const std::string figures = fmt::format("{}PSNR {} dB, SSIM {}, FLIP {}", skin ? "skin " : "",
+                                          value(m["psnr_db"], "{:.2f}"), value(m["ssim"], "{:.3f}"),
+                                          value(m["flip"], "{:.3f}"));
+  if (floor) return figures;
+  return fmt::format(
+      "{}: {} ({:.1f}%, {} px above both the visibility threshold and the noise floor)", figures,
+      m["visible"].get<bool>() ? "visibly different" : "not visibly different",
+      m["visible_pct"].get<double>(), m["visible_px"].get<std::size_t>());
+}
+
+}  // namespace skinsim::driver

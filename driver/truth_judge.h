@@ -1,0 +1,70 @@
+// Judging with a truth (`run --truth`, docs/validation.md): where the truth comes from (the
+// truth store, Blender Cycles, or a file the user brings) and every quality metric of an image
+// against it, beside the Monte Carlo noise floor the truth carries. A difference below that
+// floor is never called visible: a pixel counts as visibly different from the truth only when
+// its FLIP error is above quality::flip_visibility_threshold() and above the FLIP error between
+// the truth and another seed's rendering there (the largest within 2 pixels: one pixel's is
+// one draw of the noise).
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "driver/truth_store.h"
+#include "pipeline/config.h"
+#include "pipeline/gpu_scene.h"
+#include "quality/image.h"
+
+namespace skinsim::driver {
+
+// What `--truth` takes: "cached", or a file.
+inline constexpr const char* kCachedTruth = "cached";
+
+struct Truth {
+  TruthImages images;
+  nlohmann::json about;          // where it came from: {"source", "file" or "key"/"store"}
+  quality::ScalarMap floor_map;  // the floor per pixel (above); empty without a second seed
+};
+
+// `truth` with `images`, and the floor map of their second seed when there is one.
+Truth with_images(Truth truth, TruthImages images);
+
+// The truth store's (truth_store.h) truth of `scene`'s view under `config`: when the store has
+// none (or has it damaged: `note` says so), rendered with Blender Cycles at the default samples
+// with seeds 1 and 2 (the second for the noise floor) and kept; rendered every time when the
+// store is off. `threads`: Blender's (0: its own choice). Throws UserError when Blender is
+// missing or fails.
+Truth cached_truth(const pipeline::GpuScene& scene, const pipeline::PipelineConfig& config,
+                   int threads, const std::function<void(const std::string&)>& note);
+
+// Throws UserError naming `option` when `spec` is neither "cached" nor an existing file: checked
+// before a command's work, as the file is read only after it.
+void require_truth(const std::string& option, const std::string& spec);
+
+// A truth the user brings (`--truth FILE`): a PNG is taken as seen (sRGB, 8 bits), anything
+// else is read through skinsim-exr as scene-linear (OpenEXR, Radiance HDR, TIFF) and encoded
+// for display. One image has no second seed, so no measured floor. Throws UserError naming
+// `option` and the file when it is missing, unreadable or not width x height.
+Truth truth_file(const std::string& option, const std::filesystem::path& path, int width,
+                 int height);
+
+// PSNR, SSIM, FLIP and the visible pixels (the rule above) of `test` against the truth over
+// every pixel ("all") and, with `skin` showing any, over the skin ("skin").
+nlohmann::json judge_against_truth(const quality::Image& test, const Truth& truth,
+                                   const quality::Mask* skin);
+
+// The truth's noise floor: the second seed judged as above (its visible pixels are 0 by the
+// rule), or {"measured": false, "why": ...} without one.
+nlohmann::json truth_noise_floor(const Truth& truth, const quality::Mask* skin);
+
+// Where the truth came from, for the terminal: "the truth store's .../truth_<key>.json (64
+// samples, seeds 1 and 2)", "rendered with Blender Cycles (...)", "the file F (one image)".
+std::string truth_source_text(const Truth& truth);
+
+// "skin PSNR 30.21 dB, SSIM 0.812, FLIP 0.125, visibly different on 12.3% (810 px)": a
+// judge_against_truth or truth_noise_floor result, the skin's figures when there are any.
+std::string truth_figures(const nlohmann::json& judged);
+
+}  // namespace skinsim::driver

@@ -1,0 +1,287 @@
+"""Judging with a truth (docs/validation.md, "Judging with the truth").
+Usage: truth_judge_test.py CASE SKINSIM SKINSIM_EXR WORKDIR
+
+  store       `run --truth cached` keeps the truth it renders in the truth store and reuses it;
+              a tampered image, a marker that is not JSON or is a symlink, an image replaced by
+              a symlink: each is discarded with a note and rendered again; SKINSIM_CACHE_DIR=off
+              renders every time. Blender is a stand-in script here (SKINSIM_BLENDER) that
+              writes a seed-dependent image and counts its calls: no Blender needed.
+  file        `run --truth FILE`: a PNG and an EXR of the view are judged (the reference as its
+              own truth is identical and not visible); no measured floor is stated as such; a
+              missing file, a file that is no image and one of another size exit 2, named,
+              before the frame is rendered.
+  compare     `compare A B --truth cached` judges two runs by the truth both were judged with
+              (stand-in Blender), in the terminal and compare.json; `--truth FILE` too; runs
+              judged by no or by different truths, and a missing file, exit 2, named.
+  sweep_file  `sweep --truth FILE` of two configurations, the truth being one of their own
+              frames: per-configuration figures against it in results.json/csv, and the
+              recommendation and that frame's verdict change to it; a missing truth exits 2
+              before the sweep.
+  sweep       a truth-judged sweep of two configurations with Blender Cycles (`--truth
+              cached`, 64x48; exit 77 where Blender is not installed).
+"""
+import glob
+import json
+import os
+import shutil
+import struct
+import sys
+
+from truth_common import fail, run_with
+
+CASE, SKINSIM, EXR_TOOL, WORK = sys.argv[1:5]
+ENV = dict(os.environ, SKINSIM_CACHE_DIR=f"{WORK}/cache", SKINSIM_EXR_TOOL=EXR_TOOL)
+SIZE = ["--resolution", "32x24"]
+
+# Stands in for `blender -b ... -P cycles_render.py -- scene.json out.exr seed threads`: a flat
+# grey image a little brighter for each seed, written as OpenEXR by skinsim-exr.
+FAKE_BLENDER = f"""#!/usr/bin/env python3
+import json, struct, subprocess, sys
+args = sys.argv[sys.argv.index("--") + 1:]
+scene, exr, seed = json.load(open(args[0])), args[1], int(args[2])
+w, h = scene["width"], scene["height"]
+with open(exr + ".raw", "wb") as f:
+    f.write(b"SKF32RGB" + struct.pack("<2I", w, h))
+    f.write(struct.pack(f"<{{3 * w * h}}f", *[0.2 + 0.01 * seed + 0.002 * (i % 7) for i in range(3 * w * h)]))
+subprocess.run([{EXR_TOOL!r}, "from-raw", exr + ".raw", exr], check=True)
+with open({WORK!r} + "/blender_calls", "a") as f:
+    f.write(f"{{seed}}\\n")
+"""
+
+
+def run(*args, expect=0):
+    return run_with(ENV, *args, expect=expect)
+
+
+def blender_calls():
+    path = f"{WORK}/blender_calls"
+    calls = open(path).read().split() if os.path.exists(path) else []
+    if os.path.exists(path):
+        os.remove(path)
+    return calls
+
+
+def judged(out):
+    with open(f"{out}/result.json") as f:
+        return json.load(f)["truth"]
+
+
+def run_cached(note=None):
+    """One `run --truth cached`; `note`: a word the discard note must hold, or None for none."""
+    p = run(SKINSIM, "run", *SIZE, "--truth", "cached", "--out", f"{WORK}/run")
+    if note is None and "discarded" in p.stderr:
+        fail(f"an unexpected discard: {p.stderr}")
+    if note is not None and not ("discarded" in p.stderr and note in p.stderr):
+        fail(f"the discard note does not say '{note}': {p.stderr}")
+    return p
+
+
+def use_fake_blender():
+    fake = f"{WORK}/fake-blender"
+    with open(fake, "w") as f:
+        f.write(FAKE_BLENDER)
+    os.chmod(fake, 0o755)
+    ENV["SKINSIM_BLENDER"] = fake
+
+
+def test_store():
+    use_fake_blender()
+
+    p = run_cached()
+    if blender_calls() != ["1", "2"]:
+        fail("a missing truth was not rendered with seeds 1 and 2")
+    truth = judged(f"{WORK}/run")
+    floor = truth["noise_floor"]
+    # The stand-in's seeds differ by 0.01 everywhere: a measurable floor, never visible.
+    if not floor["measured"] or floor["skin"]["visible_px"] != 0 or not floor["skin"]["flip"] > 0:
+        fail(f"the noise floor: {floor}")
+    for image in ("frame", "reference"):
+        if "visible" not in truth[image]["skin"] or image not in p.stdout:
+            fail(f"the {image} is not judged against the truth: {truth}")
+    if truth["source"] != "rendered" or "noise floor" not in p.stdout:
+        fail(f"where the truth came from / its floor is not stated: {truth['source']}\n{p.stdout}")
+    (marker,) = glob.glob(f"{WORK}/cache/truths/truth_*.json")
+    stem = marker[:-len(".json")]
+
+    run_cached()
+    if blender_calls() or judged(f"{WORK}/run")["source"] != "store":
+        fail("a kept truth was rendered again")
+    if judged(f"{WORK}/run")["frame"] != truth["frame"]:
+        fail("the kept truth judges differently from the rendered one")
+
+    # Same size, other pixels: the digest tells.
+    shutil.copy(f"{WORK}/run/frame.png", stem + ".png")
+    run_cached("not the ones its marker describes")
+    if blender_calls() != ["1", "2"]:
+        fail("a tampered truth was used")
+    with open(marker, "w") as f:
+        f.write("{not json")
+    run_cached("truth marker")
+    blender_calls()
+    os.remove(stem + "_second.png")
+    os.symlink(f"{WORK}/run/frame.png", stem + "_second.png")
+    run_cached("not regular files")
+    blender_calls()
+    if os.path.islink(stem + "_second.png"):
+        fail("the planted symlink is still in the store")
+    shutil.move(marker, f"{WORK}/marker.json")
+    os.symlink(f"{WORK}/marker.json", marker)
+    run_cached("truth marker")
+    blender_calls()
+    run_cached()
+    if blender_calls():
+        fail("the truth kept after the discards is not reused")
+
+    ENV["SKINSIM_CACHE_DIR"] = "off"
+    run_cached()
+    run_cached()
+    if blender_calls() != ["1", "2", "1", "2"]:
+        fail("with the store off the truth is not rendered each time")
+
+
+def test_file():
+    ENV["SKINSIM_BLENDER"] = f"{WORK}/no-blender"  # a file truth needs no Blender
+    run(SKINSIM, "run", *SIZE, "--out", f"{WORK}/first")
+    # The reference as the truth: a PNG is taken as seen, so it is its own truth exactly.
+    p = run(SKINSIM, "run", *SIZE, "--truth", f"{WORK}/first/reference.png", "--out", f"{WORK}/png")
+    truth = judged(f"{WORK}/png")
+    if truth["reference"]["skin"]["psnr_db"] != "inf" or truth["reference"]["skin"]["visible"]:
+        fail(f"the reference against itself: {truth['reference']}")
+    if truth["noise_floor"]["measured"] or "not measured" not in p.stdout:
+        fail(f"a single image's floor is not stated as not measured: {truth['noise_floor']}\n{p.stdout}")
+    # A linear EXR of the same view: the reference's pixels decoded from sRGB.
+    run(EXR_TOOL, "to-raw", f"{WORK}/first/reference.png", f"{WORK}/ref.raw")
+    with open(f"{WORK}/ref.raw", "rb") as f:
+        data = f.read()
+    values = struct.unpack(f"<{(len(data) - 16) // 4}f", data[16:])
+    linear = [v / 12.92 if v <= 0.04045 else ((v + 0.055) / 1.055) ** 2.4 for v in values]
+    with open(f"{WORK}/lin.raw", "wb") as f:
+        f.write(data[:16] + struct.pack(f"<{len(linear)}f", *linear))
+    run(EXR_TOOL, "from-raw", f"{WORK}/lin.raw", f"{WORK}/truth.exr")
+    run(SKINSIM, "run", *SIZE, "--truth", f"{WORK}/truth.exr", "--out", f"{WORK}/exr")
+    skin = judged(f"{WORK}/exr")["reference"]["skin"]
+    if not (skin["psnr_db"] == "inf" or skin["psnr_db"] > 50.0) or skin["visible_px"] != 0:
+        fail(f"the reference against its linear EXR (8-bit rounding only): {skin}")
+
+    with open(f"{WORK}/not-an-image.exr", "w") as f:
+        f.write("hello")
+    for truth, words in ((f"{WORK}/nowhere.exr", ["nowhere.exr", "no such"]),
+                         (f"{WORK}/not-an-image.exr", ["--truth", "not-an-image.exr"]),
+                         (f"{WORK}/first/reference.png", ["32x24", "48x36", "--resolution"])):
+        size = ["--resolution", "48x36"] if "reference" in truth else SIZE
+        p = run(SKINSIM, "run", *size, "--truth", truth, "--out", f"{WORK}/bad", expect=2)
+        if not all(w in p.stderr for w in words) or "Traceback" in p.stderr:
+            fail(f"--truth {truth}: the error does not say {words}: {p.stderr}")
+        if os.path.exists(f"{WORK}/bad"):
+            fail("a refused truth left an output directory")
+
+
+def test_compare():
+    use_fake_blender()
+    a, b, other = f"{WORK}/a", f"{WORK}/b", f"{WORK}/other"
+    run(SKINSIM, "run", *SIZE, "--truth", "cached", "--out", a)
+    run(SKINSIM, "run", *SIZE, "--scale", "0.25", "--truth", "cached", "--out", b)
+    if blender_calls() != ["1", "2"]:
+        fail("two runs of one view did not share one truth")
+    p = run(SKINSIM, "compare", a, b, "--truth", "cached", "--out", f"{WORK}/cmp", expect=1)
+    with open(f"{WORK}/cmp/compare.json") as f:
+        truth = json.load(f)["truth"]
+    closer = "a" if truth["a"]["skin"]["flip"] < truth["b"]["skin"]["flip"] else "b"
+    if truth["closer"] != closer or not truth["noise_floor"]["measured"]:
+        fail(f"compare.json's truth: {truth}")
+    for line in ("A vs truth: skin PSNR", "B vs truth: skin PSNR", "noise floor: skin"):
+        if line not in p.stdout:
+            fail(f"compare does not print '{line}':\n{p.stdout}")
+    p = run(SKINSIM, "compare", a, b, "--truth", f"{a}/reference.png", expect=1)
+    if "noise floor: not measured" not in p.stdout:
+        fail(f"a file's floor is not stated: {p.stdout}")
+    run(SKINSIM, "run", *SIZE, "--out", other)
+    run(SKINSIM, "run", "--resolution", "48x36", "--truth", "cached", "--out", f"{WORK}/small")
+    run(SKINSIM, "run", *SIZE, "--light-azimuth", "30", "--truth", "cached", "--out", f"{WORK}/lit")
+    for args, words in (([a, other, "--truth", "cached"], [other, "not judged by a cached truth"]),
+                        ([a, f"{WORK}/small", "--truth", "cached"], ["32x24", "48x36"]),
+                        ([a, f"{WORK}/lit", "--truth", "cached"], ["different truths"]),
+                        ([a, b, "--truth", f"{WORK}/nowhere.png"], ["nowhere.png", "no such"])):
+        p = run(SKINSIM, "compare", *args, "--out", f"{WORK}/bad", expect=2)
+        if not all(w in p.stderr for w in words) or os.path.exists(f"{WORK}/bad"):
+            fail(f"compare {args}: the error does not say {words}, or --out was written: {p.stderr}")
+
+
+SWEEP = ["sweep", "--resolutions", "64x48", "--scales", "1,0.25", "--luts", "32x128", "--no-charts"]
+
+
+def sweep_truth(out, floor):
+    """results.json, checked for the truth's columns (the floor's only with a measured floor)."""
+    with open(f"{out}/results.json") as f:
+        results = json.load(f)
+    with open(f"{out}/results.csv") as f:
+        header = f.readline().strip().split(",")
+    # PSNR is left out where it is infinite (a frame identical to the truth).
+    columns = ["truth_ssim_skin", "truth_flip_skin", "truth_visible_skin",
+               "truth_visible_skin_pct", "truth_visible_frame_px"]
+    if ("truth_floor_flip_skin" in header) != floor:
+        fail(f"truth_floor_flip_skin in results.csv: {not floor}, with a measured floor: {floor}")
+    for column in columns + (["truth_floor_flip_skin"] if floor else []):
+        if column not in header or any(column not in r["quality"] for r in results["rows"]):
+            fail(f"{column} is missing from results.csv/json")
+    if "truth_psnr_skin" not in header:
+        fail("truth_psnr_skin is missing from results.csv")
+    return results
+
+
+def test_sweep_file():
+    ENV["SKINSIM_BLENDER"] = f"{WORK}/no-blender"
+    p = run(SKINSIM, *SWEEP, "--truth", f"{WORK}/nowhere.exr", "--out", f"{WORK}/s", expect=2)
+    if "nowhere.exr" not in p.stderr or os.path.exists(f"{WORK}/s"):
+        fail(f"a missing truth is not refused before the sweep: {p.stderr}")
+    run(SKINSIM, *SWEEP, "--out", f"{WORK}/s")
+    (cheap,) = [c for c in json.load(open(f"{WORK}/s/results.json"))["rows"]
+                if c["knobs"]["scale"] == "0.25"]
+    shutil.copy(f"{WORK}/s/{cheap['frame_image']}", f"{WORK}/truth.png")
+    p = run(SKINSIM, *SWEEP, "--truth", f"{WORK}/truth.png", "--out", f"{WORK}/s")
+    print(p.stdout, end="")
+    results = sweep_truth(f"{WORK}/s", floor=False)
+    (group,) = results["truth"]
+    mine = [c for c in results["rows"] if c["id"] == cheap["id"]][0]
+    if mine["quality"]["truth_flip_skin"] != 0.0 or mine["quality"]["truth_visible_skin"] != 0.0:
+        fail(f"a frame against itself as truth: {mine['quality']}")
+    if group["recommended_by_truth"] != cheap["id"] or group["noise_floor"]["measured"]:
+        fail(f"the truth's own frame is not recommended: {group}")
+    if group["recommendation_same"] != (group["recommended_by_reference"] == cheap["id"]):
+        fail(f"recommendation_same is wrong: {group}")
+    changed = [c["id"] for c in group["visibility_verdicts_changed"]]
+    if (cheap["visible_vs_reference"] != (cheap["id"] in changed)) or "judged by the truth" not in p.stdout:
+        fail(f"the verdicts that changed: {changed}, against the reference {cheap['visible_vs_reference']}")
+
+
+def test_sweep():
+    blender = ENV.get("SKINSIM_BLENDER", "blender")
+    if shutil.which(blender) is None:
+        print(f"SKIP: Blender ({blender}) is not installed; scripts/install-deps.sh installs it")
+        sys.exit(77)
+    p = run(SKINSIM, *SWEEP, "--truth", "cached", "--out", f"{WORK}/s")
+    print(p.stdout, end="")
+    results = sweep_truth(f"{WORK}/s", floor=True)
+    (group,) = results["truth"]
+    floor = group["noise_floor"]
+    if not floor["measured"] or not 0.0 < floor["skin"]["flip"] < 1.0:
+        fail(f"the truth's noise floor: {floor}")
+    if group["recommended_by_reference"] is None or "recommendation_same" not in group:
+        fail(f"the group's verdicts: {group}")
+    for c in results["rows"]:
+        q = c["quality"]
+        if not (0.0 < q["truth_flip_skin"] < 1.0 and q["truth_flip_skin"] >= 0.0):
+            fail(f"{c['id']}: implausible figures against the truth: {q}")
+    if "judged by the truth" not in p.stdout or "noise floor" not in p.stdout:
+        fail("the sweep does not say what the truth judged")
+
+
+def main():
+    shutil.rmtree(WORK, ignore_errors=True)
+    os.makedirs(WORK)
+    {"store": test_store, "file": test_file, "compare": test_compare, "sweep_file": test_sweep_file,
+     "sweep": test_sweep}[CASE]()
+    print("ok")
+
+
+main()
