@@ -144,6 +144,11 @@ const std::vector<KnobSpec>& common_knobs() {
     std::vector<KnobSpec> rows{
         technique_knob(),
         resolution_knob(),
+        integer_knob("msaa", "--msaa",
+                     "MSAA samples per pixel of the framebuffer render (background, eyes, skin), "
+                     "at the standard 2x/4x positions, resolved on chip at the tile store; "
+                     "offscreen passes stay 1x",
+                     &PipelineConfig::msaa, 1, 4, true),
         choice_knob("gamma", "--gamma", "Skin gamma: gamma 2.0 as in GPU Pro 5, or exact sRGB",
                     "square or srgb", &PipelineConfig::gamma, parse_gamma, gamma_name),
         lobe_knob("lobe1", &PipelineConfig::lobe1,
