@@ -36,12 +36,15 @@ Fixture& fixture() {
   return f;
 }
 
-void BM_SkinFrame(benchmark::State& state) {
+// The default frame with `msaa` samples per pixel on the framebuffer render.
+void skin_frame(benchmark::State& state, int msaa) {
   Fixture& f = fixture();
   const int threads = static_cast<int>(state.range(0));
+  pipeline::PipelineConfig config = f.config;
+  config.msaa = msaa;
   std::uint64_t fragments = 0;
   for (auto _ : state) {
-    const driver::FrameResult r = driver::run_frame(f.gpu_scene, f.config, f.device, threads);
+    const driver::FrameResult r = driver::run_frame(f.gpu_scene, config, f.device, threads);
     fragments = 0;
     for (const auto& p : r.output.passes) fragments += p.fragments_shaded;
     benchmark::DoNotOptimize(r.timing.frame_ms);
@@ -50,7 +53,15 @@ void BM_SkinFrame(benchmark::State& state) {
   state.counters["fragments/s"] = benchmark::Counter(
       static_cast<double>(fragments) * state.iterations(), benchmark::Counter::kIsRate);
 }
+void BM_SkinFrame(benchmark::State& state) {
+  skin_frame(state, 1);
+}
 BENCHMARK(BM_SkinFrame)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3.0);
+
+void BM_SkinFrameMsaa4(benchmark::State& state) {
+  skin_frame(state, 4);
+}
+BENCHMARK(BM_SkinFrameMsaa4)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3.0);
 
 // The ground-truth reference a sweep renders once per scene and resolution (ray-cast shadows,
 // diffusion over the skin's 3D positions).

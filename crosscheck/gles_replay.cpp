@@ -425,6 +425,10 @@ class Replay {
   // `compare`, reads the target back and compares it with the emulator's; `ms` gets the wall
   // time of the pass's clear and draws, each end bracketed by glFinish.
   json run(const json& pass, const json* before, bool compare, double& ms) {
+    if (pass.value("samples", 1) > 1) {
+      fail(fmt::format("pass '{}' is multisampled ({} samples); the replay draws 1x only",
+                       pass["name"].get<std::string>(), pass["samples"].get<int>()));
+    }
     const Target t = make_target(files_, pass, before);
     glViewport(0, 0, t.width, t.height);
     if (pass.contains("render_area")) {

@@ -100,6 +100,7 @@ class FrameRecorder {
       const sim::PixelRect& r = *pass.render_area;
       p["render_area"] = {r.x0, r.y0, r.x1, r.y1};
     }
+    if (pass.samples > 1) p["samples"] = pass.samples;  // MSAA, resolved into the target
     nlohmann::json draws = nlohmann::json::array();
     for (const sim::DrawCall& d : pass.draws) draws.push_back(draw(d, size));
     p["draws"] = std::move(draws);

@@ -1,6 +1,7 @@
 #include "gpu_model/tile_cost.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "gpu_model/model_terms.h"
 
@@ -22,6 +23,14 @@ double texture_cycles(const sim::TextureCounters& tex, const DeviceProfile& p) {
 }
 
 }  // namespace
+
+int msaa_tile_passes(const sim::PassCounters& pass, double tile_memory_bytes) {
+  if (pass.samples <= 1) return 1;
+  const double pixels = static_cast<double>(pass.tile_size) * pass.tile_size;
+  const double per_pixel = static_cast<double>(pass.tile_bytes_per_sample);
+  const double memory = tile_memory_bytes > 0.0 ? tile_memory_bytes : pixels * per_pixel;
+  return std::max(1, static_cast<int>(std::ceil(pixels * pass.samples * per_pixel / memory)));
+}
 
 double TileWork::cycles() const {
   return overhead_cycles + std::max({isp_cycles, alu_cycles, texture_cycles});
@@ -68,13 +77,20 @@ TileWork estimate_tile(const sim::TileCounters& tile, const sim::PassCounters& p
   // The extra fragments sample like the visible ones (the counters measured those only);
   // their texels are the tile's own, so they add TMU time but no DRAM bytes.
   w.texture_cycles = texture_cycles(tile.texture, p) * (visible > 0.0 ? shaded / visible : 1.0);
-  w.overhead_cycles = p.tile_overhead_cycles.value;
+  // MSAA: the ISP tests a pixel's samples in one slot (Arm: 4x MSAA at close to full
+  // speed; the rate per sample is unpublished for SGX) and the samples are resolved as the
+  // tile is written back, on chip: neither adds cycles or DRAM bytes here. What grows is the
+  // number of tiles when the samples overflow tile memory: each pass over a part of the tile
+  // pays the per-tile cost and reads the tile's parameter-buffer list again (an upper
+  // bound: a smaller tile's list is shorter).
+  const int passes = msaa_tile_passes(pass, p.tile_memory_bytes.value);
+  w.overhead_cycles = p.tile_overhead_cycles.value * passes;
 
   // The 3D reads the tile's control stream and the primitive data it references back from
   // the parameter buffer (hardware.md).
   const double vertex_bytes =
       pb_vertex_bytes(p, static_cast<double>(pass.varying_floats_per_vertex));
-  w.dram.parameter_read = static_cast<double>(tile.triangle_refs) *
+  w.dram.parameter_read = static_cast<double>(tile.triangle_refs) * passes *
                           (p.pb_bytes_per_tile_ref.value + p.pb_bytes_per_triangle.value +
                            p.pb_vertices_read_per_tile_ref.value * vertex_bytes);
   w.dram.texture = static_cast<double>(tile.texture.dram_bytes);

@@ -77,6 +77,8 @@ struct PipelineConfig {
   float specular_intensity = 0.18f;  // rho_s, d'Eon & Luebke
   int width = 0;                     // render resolution; 0 = the device's display
   int height = 0;
+  // MSAA samples per pixel of the framebuffer render (background, eyes, skin): 1, 2 or 4.
+  int msaa = 1;
   float lod_distance_m = 2.0f;  // beyond this camera distance the single-pass shader runs
 
   // Light and framing (pipeline/lighting.h). Unset: the scene's own.

@@ -161,6 +161,11 @@ const std::vector<KnobSpec>& common_knobs() {
     std::vector<KnobSpec> rows{
         technique_knob(),
         resolution_knob(),
+        integer_knob("msaa", "--msaa",
+                     "MSAA samples per pixel of the framebuffer render (background, eyes, skin), "
+                     "at the standard 2x/4x positions, resolved on chip at the tile store; "
+                     "offscreen passes stay 1x",
+                     &PipelineConfig::msaa, 1, 4, true),
         std::move(gamma),
         lobe_knob("lobe1", &PipelineConfig::lobe1,
                   "First specular lobe (Beckmann m and weight; the weights sum to 1)"),

@@ -16,12 +16,15 @@ bool TileGrid::in_area(int tx, int ty) const {
 
 namespace {
 
-// Smallest and largest value of an edge function over the pixel centres of a rectangle.
-void edge_range(const TriangleSetup& t, int e, const PixelRect& r, std::int64_t& lo,
-                std::int64_t& hi) {
+// Smallest and largest value of an edge function over the samples of a rectangle's pixels
+// (bounded by their centres widened by the sample pattern's reach).
+void edge_range(const TriangleSetup& t, int e, const PixelRect& r, std::int64_t reach,
+                std::int64_t& lo, std::int64_t& hi) {
   const std::int64_t half = kSubpixelOne / 2;
-  const std::int64_t x0 = r.x0 * kSubpixelOne + half, x1 = (r.x1 - 1) * kSubpixelOne + half;
-  const std::int64_t y0 = r.y0 * kSubpixelOne + half, y1 = (r.y1 - 1) * kSubpixelOne + half;
+  const std::int64_t x0 = r.x0 * kSubpixelOne + half - reach;
+  const std::int64_t x1 = (r.x1 - 1) * kSubpixelOne + half + reach;
+  const std::int64_t y0 = r.y0 * kSubpixelOne + half - reach;
+  const std::int64_t y1 = (r.y1 - 1) * kSubpixelOne + half + reach;
   const std::int64_t ax_lo = std::min(t.edge_a[e] * x0, t.edge_a[e] * x1);
   const std::int64_t ax_hi = std::max(t.edge_a[e] * x0, t.edge_a[e] * x1);
   const std::int64_t by_lo = std::min(t.edge_b[e] * y0, t.edge_b[e] * y1);
@@ -47,7 +50,7 @@ TileBins bin_triangles(const SetupTriangles& setup, const TileGrid& grid, PassCo
         bool touches = true, covers = true;
         for (int e = 0; e < 3 && touches; ++e) {
           std::int64_t lo, hi;
-          edge_range(t, e, r, lo, hi);
+          edge_range(t, e, r, grid.sample_reach, lo, hi);
           touches = hi >= 0;
           covers = covers && lo >= 0;
         }

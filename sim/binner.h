@@ -18,6 +18,7 @@ struct TileGrid {
   PixelRect area;  // tile-aligned render area
   int width = 0;   // target size
   int height = 0;
+  std::int64_t sample_reach = 0;  // SamplePattern::reach of the pass
   // Pixel rectangle of tile (tx, ty), clipped to the target.
   PixelRect tile_rect(int tx, int ty) const;
   bool in_area(int tx, int ty) const;

@@ -59,7 +59,10 @@ struct TileCounters {
   std::uint8_t core = 0;  // emulated GPU core the tile was assigned to
   TileCoverage coverage = TileCoverage::kEmpty;
   std::uint32_t triangle_refs = 0;           // triangles in this tile's list
-  std::uint64_t fragments_depth_tested = 0;  // ISP work
+  std::uint64_t fragments_depth_tested = 0;  // ISP work: pixels a triangle covers
+  std::uint64_t samples_covered = 0;         // MSAA samples of those pixels it covers
+  std::uint64_t samples_in_tile = 0;         // pixels x samples held in tile memory
+  std::uint64_t resolves = 0;                // pixels box-averaged from samples at the store
   std::uint64_t fragments_shaded = 0;
   std::uint64_t fragments_blended = 0;        // of shaded: read-modify-write in tile memory
   std::uint32_t hsr_flushes = 0;              // tag-buffer flushes forced by blended draws
@@ -94,6 +97,10 @@ struct PassCounters {
   int tiles_x = 0;
   int tiles_y = 0;
   int cores = 1;
+  int samples = 1;  // MSAA samples per pixel
+  // Tile-memory bytes one sample of one pixel takes: colour (the target's format) plus
+  // depth/stencil; what decides how many samples a device's tile memory holds.
+  int tile_bytes_per_sample = 0;
 
   // Tiler (TA).
   std::uint64_t vertices_shaded = 0;
@@ -112,6 +119,9 @@ struct PassCounters {
   // Per-tile renderer (3D), summed over tiles.
   std::uint64_t tiles_rendered = 0;  // tiles inside the render area
   std::uint64_t fragments_depth_tested = 0;
+  std::uint64_t samples_covered = 0;
+  std::uint64_t samples_in_tile = 0;
+  std::uint64_t resolves = 0;
   std::uint64_t fragments_shaded = 0;
   std::uint64_t fragments_blended = 0;
   std::uint64_t hsr_flushes = 0;

@@ -6,6 +6,8 @@
 #include <array>
 #include <cmath>
 
+#include "sim/sample_pattern.h"
+
 namespace skinsim::sim {
 
 namespace {
@@ -93,6 +95,7 @@ class TriangleBuilder {
       : width_(pass_target(pass).width),
         height_(pass_target(pass).height),
         area_(area),
+        reach_(sample_pattern(pass.samples).reach),
         out_(out.setup),
         counts_(out.counts) {}
 
@@ -132,20 +135,21 @@ class TriangleBuilder {
       min_fy = std::min(min_fy, p.fy);
       max_fy = std::max(max_fy, p.fy);
     }
-    // Pixels whose centre (px * one + one/2) lies inside the bounding box.
+    // Pixels with a sample (centre px * one + one/2, give or take the pattern's reach)
+    // inside the bounding box.
     const std::int64_t half = kSubpixelOne / 2;
     auto first_pixel = [&](std::int64_t lo) {
-      return static_cast<int>((lo - half + kSubpixelOne - 1) >> kSubpixelBits);
+      return static_cast<int>((lo - half - reach_ + kSubpixelOne - 1) >> kSubpixelBits);
     };
     auto last_pixel = [&](std::int64_t hi) {
-      return static_cast<int>((hi - half) >> kSubpixelBits);
+      return static_cast<int>((hi - half + reach_) >> kSubpixelBits);
     };
     t.min_x = std::max(first_pixel(min_fx), area_.x0);
     t.min_y = std::max(first_pixel(min_fy), area_.y0);
     t.max_x = std::min(last_pixel(max_fx), area_.x1 - 1);
     t.max_y = std::min(last_pixel(max_fy), area_.y1 - 1);
     if (t.min_x > t.max_x || t.min_y > t.max_y) {
-      ++counts_.culled_degenerate;  // covers no pixel centre in the render area
+      ++counts_.culled_degenerate;  // covers no sample in the render area
       return;
     }
     const double area_px = static_cast<double>(area2) / (kSubpixelOne * kSubpixelOne);
@@ -184,6 +188,7 @@ class TriangleBuilder {
 
   int width_, height_;
   PixelRect area_;
+  std::int64_t reach_;  // of the pass's sample pattern
   SetupTriangles& out_;
   SetupCounts& counts_;
 };

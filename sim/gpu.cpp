@@ -7,6 +7,7 @@
 #include "sim/binner.h"
 #include "sim/geometry.h"
 #include "sim/pass_memo.h"
+#include "sim/sample_pattern.h"
 #include "sim/tile_stage.h"
 
 namespace skinsim::sim {
@@ -37,6 +38,11 @@ PassCounters Gpu::execute(const RenderPassDesc& pass) {
   const RenderTarget* size_from = pass.color ? pass.color : pass.depth;
   if (!size_from || size_from->width <= 0 || size_from->height <= 0) {
     throw std::invalid_argument("render pass '" + pass.name + "' has no colour or depth target");
+  }
+  try {
+    sample_pattern(pass.samples);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("render pass '" + pass.name + "': " + e.what());
   }
   if (pass.depth_load == LoadOp::kLoad) {
     throw std::invalid_argument("render pass '" + pass.name + "': depth load is not supported");
@@ -99,6 +105,9 @@ PassCounters Gpu::execute_impl(const RenderPassDesc& pass) {
   c.tiles_x = (c.width + c.tile_size - 1) / c.tile_size;
   c.tiles_y = (c.height + c.tile_size - 1) / c.tile_size;
   c.cores = config_.cores;
+  c.samples = pass.samples;
+  c.tile_bytes_per_sample = (pass.color ? bytes_per_texel(pass.color->format) : 0) +
+                            config_.depth_stencil_bytes_per_pixel;
   c.draws.resize(pass.draws.size());
   for (size_t d = 0; d < pass.draws.size(); ++d) {
     const DrawCall& draw = pass.draws[d];
@@ -118,6 +127,7 @@ PassCounters Gpu::execute_impl(const RenderPassDesc& pass) {
   grid.width = c.width;
   grid.height = c.height;
   grid.area = tile_aligned_area(pass, c.tile_size);
+  grid.sample_reach = sample_pattern(pass.samples).reach;
 
   const SetupTriangles setup = run_geometry(pass, grid.area, c);
   const TileBins bins = bin_triangles(setup, grid, c);
@@ -138,6 +148,9 @@ PassCounters Gpu::execute_impl(const RenderPassDesc& pass) {
     if (!grid.in_area(t.tile_x, t.tile_y)) continue;
     ++c.tiles_rendered;
     c.fragments_depth_tested += t.fragments_depth_tested;
+    c.samples_covered += t.samples_covered;
+    c.samples_in_tile += t.samples_in_tile;
+    c.resolves += t.resolves;
     c.fragments_shaded += t.fragments_shaded;
     c.fragments_blended += t.fragments_blended;
     c.hsr_flushes += t.hsr_flushes;

@@ -19,7 +19,7 @@ namespace skinsim::sim {
 namespace {
 
 // Bumped when the key's layout changes, so no two layouts can collide.
-constexpr std::uint32_t kKeyVersion = 1;
+constexpr std::uint32_t kKeyVersion = 2;
 
 struct StateDeleter {
   void operator()(XXH3_state_t* s) const { XXH3_freeState(s); }
@@ -129,6 +129,7 @@ std::optional<PassKey> pass_key(const RenderPassDesc& pass, const GpuConfig& con
   w.value(static_cast<std::uint8_t>(pass.color_load));
   for (int i = 0; i < 4; ++i) w.number(pass.clear_color[i]);
   w.value(pass.store_color);
+  w.value(pass.samples);
   w.value(static_cast<std::uint8_t>(pass.depth_load));
   w.value(pass.store_depth);
   write_target(w, pass.depth, partial);

@@ -57,6 +57,11 @@ struct RenderPassDesc {
   // by a later pass, e.g. a shadow map); without it a store is counted but not kept.
   RenderTarget* depth = nullptr;
   std::optional<PixelRect> render_area;  // default: the whole target
+  // MSAA samples per pixel (1, 2 or 4, sim/sample_pattern.h): coverage and depth are kept
+  // per sample in tile memory, each covered primitive is shaded once per pixel, and the
+  // samples are box-averaged into the target as the tile is stored (on chip: the samples
+  // never reach DRAM). Stored depth takes sample 0 (Vulkan's SAMPLE_ZERO resolve).
+  int samples = 1;
   std::vector<DrawCall> draws;
 };
 

@@ -35,7 +35,7 @@ sim::PassCounters diffused_skin_pass(const GpuScene& scene, const View& view,
     bind_brdf_lut(brdf_lut, d);
   };
   return skin_framebuffer_pass(scene, view, lights, Transmission::kComputedElsewhere, shading,
-                               frame, gpu);
+                               config.msaa, frame, gpu);
 }
 
 }  // namespace skinsim::pipeline

@@ -30,8 +30,8 @@ shaders::TechniqueUniforms technique_uniforms(const View& view, const PipelineCo
 
 sim::PassCounters skin_framebuffer_pass(const GpuScene& gs, const View& view,
                                         const FrameLights& lights, Transmission transmission,
-                                        const SkinShading& shading, sim::RenderTarget& frame,
-                                        sim::Gpu& gpu) {
+                                        const SkinShading& shading, int msaa,
+                                        sim::RenderTarget& frame, sim::Gpu& gpu) {
   // Eyes and background share the skin's vertex program (one program for the render).
   auto vs = sim::make_vertex_program<shaders::SurfaceVS>(
       {view.view_proj, 0.0f, lights.vertex_uniforms(transmission)});
@@ -39,6 +39,7 @@ sim::PassCounters skin_framebuffer_pass(const GpuScene& gs, const View& view,
   pass.name = "skin";
   pass.color = &frame;
   pass.clear_color = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  pass.samples = msaa;
   // Draw order: background, eyes, skin. HSR makes the order irrelevant to shading cost.
   for (const MaterialKind kind : {MaterialKind::kOther, MaterialKind::kEye, MaterialKind::kSkin}) {
     for (const GpuMesh& m : gs.meshes()) {

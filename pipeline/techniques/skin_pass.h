@@ -25,10 +25,11 @@ shaders::TechniqueUniforms technique_uniforms(const View& view, const PipelineCo
 // environment (which the pass binds) for one skin material.
 using SkinShading = std::function<void(const GpuMaterial&, sim::DrawCall&)>;
 
+// `msaa`: samples per pixel (PipelineConfig::msaa), resolved into `frame`.
 sim::PassCounters skin_framebuffer_pass(const GpuScene& scene, const View& view,
                                         const FrameLights& lights, Transmission transmission,
-                                        const SkinShading& shading, sim::RenderTarget& frame,
-                                        sim::Gpu& gpu);
+                                        const SkinShading& shading, int msaa,
+                                        sim::RenderTarget& frame, sim::Gpu& gpu);
 
 // Calls f(std::integral_constant<GammaMode, g>, std::integral_constant<SpecularModel, s>)
 // for the config's gamma and specular model: picks the shader instantiation.

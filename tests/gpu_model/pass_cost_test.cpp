@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "gpu_model/error.h"
+#include "gpu_model/tile_cost.h"
 #include "gpu_model/tile_schedule.h"
 #include "test_support.h"
 
@@ -174,6 +175,40 @@ TEST(PassCost, PerCauseBytesSumToTheTotal) {
   EXPECT_DOUBLE_EQ(d.depth_store, 7.0 * 15);
   EXPECT_GT(d.parameter_write, 0.0);
   EXPECT_GT(d.parameter_read, 0.0);
+}
+
+// MSAA resolved on chip: the samples never reach DRAM, so render-target bytes are those of
+// 1x; with no tile-memory figure the tile holds one sample per pixel of the profile's tile,
+// so 4 samples take 4 passes over the tile (PowerVR: 32x32 -> 16x16), each paying the
+// per-tile cost and reading the tile's parameter-buffer list again.
+TEST(PassCost, MsaaResolvedOnChipAddsTilePassesButNoRenderTargetBytes) {
+  const DeviceProfile p = round_profile();
+  const auto pass_with = [](int samples) {
+    sim::PassCounters pass = make_pass(1, 1, 4);
+    pass.samples = samples;
+    pass.tile_bytes_per_sample = 4 + 5;  // RGBA8 + depth/stencil
+    sim::TileCounters& tile = pass.tiles[0];
+    tile.triangle_refs = 10;
+    tile.color_store_bytes = 32 * 32 * 4;  // the resolved pixels, whatever the samples
+    tile.fragments_depth_tested = 1024;
+    sum_tiles(pass);
+    return pass;
+  };
+  const sim::PassCounters one = pass_with(1), two = pass_with(2), four = pass_with(4);
+  EXPECT_EQ(msaa_tile_passes(one, 0.0), 1);
+  EXPECT_EQ(msaa_tile_passes(two, 0.0), 2);
+  EXPECT_EQ(msaa_tile_passes(four, 0.0), 4);
+  // A tile memory that holds 32x32 pixels x 4 samples x 9 bytes: one pass; a byte less: two.
+  EXPECT_EQ(msaa_tile_passes(four, 32 * 32 * 4 * 9.0), 1);
+  EXPECT_EQ(msaa_tile_passes(four, 32 * 32 * 4 * 9.0 - 1), 2);
+
+  const PassTiming t1 = estimate_pass(one, p), t4 = estimate_pass(four, p);
+  EXPECT_DOUBLE_EQ(t4.dram.color_store, t1.dram.color_store);
+  EXPECT_DOUBLE_EQ(t4.dram.color_load + t4.dram.depth_load + t4.dram.depth_store, 0.0);
+  EXPECT_DOUBLE_EQ(t4.dram.texture, t1.dram.texture);
+  EXPECT_DOUBLE_EQ(t4.dram.parameter_read, 4 * t1.dram.parameter_read);
+  EXPECT_DOUBLE_EQ(t4.tiles[0].isp_cycles, t1.tiles[0].isp_cycles);
+  EXPECT_DOUBLE_EQ(t1.tiles[0].ms - 32 / kCyclesPerMs, t4.tiles[0].ms - 4 * 32 / kCyclesPerMs);
 }
 
 TEST(TileSchedule, GreedyListScheduleWithDeterministicTies) {

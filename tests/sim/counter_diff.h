@@ -22,6 +22,8 @@ class CounterDiff {
     SKINSIM_FIELD(tiles_x);
     SKINSIM_FIELD(tiles_y);
     SKINSIM_FIELD(cores);
+    SKINSIM_FIELD(samples);
+    SKINSIM_FIELD(tile_bytes_per_sample);
     SKINSIM_FIELD(vertices_shaded);
     SKINSIM_FIELD(triangles_in);
     SKINSIM_FIELD(triangles_culled_backface);
@@ -79,6 +81,9 @@ class CounterDiff {
   template <typename C>
   void fragments(const C& a, const C& b, const std::string& at = "") {
     field(at + "fragments_depth_tested", a.fragments_depth_tested, b.fragments_depth_tested);
+    field(at + "samples_covered", a.samples_covered, b.samples_covered);
+    field(at + "samples_in_tile", a.samples_in_tile, b.samples_in_tile);
+    field(at + "resolves", a.resolves, b.resolves);
     field(at + "fragments_shaded", a.fragments_shaded, b.fragments_shaded);
     field(at + "fragments_blended", a.fragments_blended, b.fragments_blended);
   }

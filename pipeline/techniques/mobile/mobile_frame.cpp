@@ -92,7 +92,7 @@ sim::PassCounters framebuffer_pass(const GpuScene& gs, const View& view, const P
   // The LOD shader computes transmission itself; otherwise it is in the buffer.
   return skin_framebuffer_pass(gs, view, lights,
                                lod ? Transmission::kComputedHere : Transmission::kComputedElsewhere,
-                               shading, frame, gpu);
+                               shading, cfg.msaa, frame, gpu);
 }
 
 }  // namespace

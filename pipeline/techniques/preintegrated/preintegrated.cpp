@@ -73,7 +73,7 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLig
     bind_brdf_lut(brdf_lut, d);
   };
   out.passes.push_back(skin_framebuffer_pass(gs, out.view, lights, Transmission::kComputedHere,
-                                             shading, out.frame, gpu));
+                                             shading, cfg.msaa, out.frame, gpu));
   out.intermediates.push_back({"preintegrated_lut", std::move(lut_target), 1.0f});
   return out;
 }

@@ -109,7 +109,7 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLig
     if (ao_texture) d.textures.textures[B::kAo] = &*ao_texture;
   };
   out.passes.push_back(skin_framebuffer_pass(gs, out.view, lights, Transmission::kComputedHere,
-                                             shading, out.frame, gpu));
+                                             shading, cfg.msaa, out.frame, gpu));
   out.intermediates.push_back({"preintegrated_lut", std::move(lut_target), 1.0f});
   if (ao) out.intermediates.push_back({"ssao_blurred", std::move(*ao), 1.0f});
   return out;

@@ -23,7 +23,7 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLig
     bind_brdf_lut(brdf_lut, d);
   };
   out.passes.push_back(skin_framebuffer_pass(gs, out.view, lights, Transmission::kComputedHere,
-                                             shading, out.frame, gpu));
+                                             shading, cfg.msaa, out.frame, gpu));
   return out;
 }
 
