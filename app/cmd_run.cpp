@@ -76,7 +76,8 @@ SequenceRun play_sequence(const RunOptions& o, const driver::SceneSource& scene,
       *r.gpu_scene, r.sequence, config, device, o.device.threads,
       [&out](int index, const driver::FrameResult& frame) {
         driver::write_png(frame.output.frame, out / kFramesDir / fmt::format("{:04d}.png", index));
-      });
+      },
+      o.reference);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (const driver::SequenceResult::Notice& notice : r.result.notices) {
@@ -107,6 +108,22 @@ SequenceRun play_sequence(const RunOptions& o, const driver::SceneSource& scene,
   }
   if (!r.charts.note.empty())
     fmt::print(stderr, "skinsim run: no sequence charts: {}\n", r.charts.note);
+  if (o.reference) {
+    const nlohmann::json summary = driver::sequence_json(r.sequence, r.result);
+    if (summary.contains("worst_quality")) {
+      const nlohmann::json& q = summary["worst_quality"];
+      fmt::print("quality vs each frame's reference: worst {} {:.4f} at frame {}\n",
+                 q["metric"].get<std::string>(), q["value"].get<double>(), q["index"].get<int>());
+    }
+    if (summary.contains("temporal")) {
+      const nlohmann::json& t = summary["temporal"];
+      fmt::print(
+          "temporal stability (FLIP between consecutive frames vs the reference's): mean error "
+          "{:.4f}, worst {:.4f} from frame {}\n",
+          t["mean_error"].get<double>(), t["max_error"].get<double>(),
+          t["worst_step"]["index"].get<int>());
+    }
+  }
   fmt::print("the frame below is the worst one, frame {}\n", s.worst_frame);
   return r;
 }
@@ -166,11 +183,6 @@ int run(const RunOptions& o) {
   if (o.sequence.empty()) {
     frame_job = driver::run_frame_job(job);
   } else {
-    if (o.reference) {
-      fmt::print(stderr,
-                 "skinsim run: note: a sequence is measured without a reference (no per-frame "
-                 "quality yet)\n");
-    }
     sequence = play_sequence(o, job.scene, config, device, out, warnings);
   }
   const driver::FrameResult& result = sequence ? sequence->result.worst : frame_job.frame;
@@ -294,12 +306,12 @@ Command add_run_command(CLI::App& app) {
                       "file (.toml); the frame outputs are its worst frame's");
   cmd->add_option("--frames", options->frames,
                   "Frames of the sequence (default: the sequence's own)")
-      ->check(CLI::Range(1, driver::kMaxSequenceFrames))
+      ->check(integer_in(1, driver::kMaxSequenceFrames))
       ->needs(sequence);
   cmd->add_option("--fps", options->fps,
                   "Frame rate of the sequence; its frame interval is the charts' budget line "
                   "(default: the sequence's own)")
-      ->check(CLI::Range(0.001, 1000.0))
+      ->check(positive_real(1000.0))
       ->needs(sequence);
   cmd->add_flag("!--no-charts", options->charts,
                 "Skip a sequence's VTK charts (no X display needed)");

@@ -191,8 +191,8 @@ class Reader {
       }
       if (is_quality_metric(metric) && budget.sequence) {
         throw BudgetError(at +
-                          ": a sequence is measured without a reference (no per-frame "
-                          "quality yet): limit quality in a budget without `sequence`");
+                          ": a sequence budget renders no reference: limit quality in a "
+                          "budget without `sequence`");
       }
       // One limit, or several on the same metric: "<= baseline * 1.05" or ["...", "..."].
       if (const auto* array = node.as_array()) {

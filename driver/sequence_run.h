@@ -6,9 +6,11 @@
 // (pipeline::BrdfLutTexture::shared).
 #pragma once
 
+#include <cmath>
 #include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +31,15 @@ struct SequenceFrame {
   gpu_model::FrameMsRange range;             // base = the modelled frame ms
   std::vector<SequencePass> passes;
   std::map<std::string, double> decisions;  // the technique's (pipeline::FrameOutput)
+  // With a reference: the frame against its own reference (FrameQuality::metrics), and from
+  // the second frame on its temporal stability (TemporalStep).
+  std::map<std::string, double> quality;
+  struct TemporalStep {
+    double frame_flip = 0.0;      // FLIP mean between this frame and the previous one
+    double reference_flip = 0.0;  // the same between their references
+    double error() const { return std::abs(frame_flip - reference_flip); }
+  };
+  std::optional<TemporalStep> temporal;
 };
 
 // Frame-time distribution over a sequence. Percentiles are nearest-rank (the smallest frame
@@ -59,10 +70,13 @@ struct SequenceResult {
 using SequenceFrameSink = std::function<void(int index, const FrameResult&)>;
 
 // `config` resolved (resolve_config) and checked against the sequence (check_sequence).
+// With `reference`, each frame's reference is rendered too, for its quality and the temporal
+// stability: how much more (or less) the frame changes from the previous one than the
+// reference does, in FLIP (sequence_run.cpp says why).
 SequenceResult run_sequence(const pipeline::GpuScene& scene, const Sequence& sequence,
                             const pipeline::PipelineConfig& config,
                             const gpu_model::DeviceProfile& device, int threads,
-                            const SequenceFrameSink& sink = {});
+                            const SequenceFrameSink& sink = {}, bool reference = false);
 
 // result.json's "sequence" section (docs/outputs.md).
 nlohmann::json sequence_json(const Sequence& sequence, const SequenceResult& result);

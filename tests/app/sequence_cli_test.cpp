@@ -75,6 +75,12 @@ TEST(SequenceCli, PushInWritesFramesAndTheDistribution) {
   // The single-frame outputs are the worst frame's.
   EXPECT_EQ(j.at("timing").at("frame_ms").get<double>(), max);
   EXPECT_EQ(s.at("per_frame").at(3).at("knobs").at("camera_distance_m"), "0.35");
+  // With the reference (the default): each frame's quality, the temporal steps after the first.
+  EXPECT_TRUE(s.at("per_frame").at(0).contains("quality"));
+  EXPECT_FALSE(s.at("per_frame").at(0).contains("temporal"));
+  EXPECT_TRUE(s.at("per_frame").at(1).at("temporal").contains("error"));
+  EXPECT_TRUE(s.at("temporal").contains("mean_error"));
+  EXPECT_TRUE(s.contains("worst_quality"));
 }
 
 }  // namespace

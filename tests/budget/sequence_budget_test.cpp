@@ -75,7 +75,7 @@ TEST(SequenceBudget, FailsOnItsP95FrameTime) {
 
 TEST(SequenceBudget, BadSequenceBudgetsNameTheLine) {
   EXPECT_NE(load_error(push_in_budget("\"quality.ssim_skin\" = \">= 0.9\"\n"))
-                .find("a sequence is measured without a reference"),
+                .find("a sequence budget renders no reference"),
             std::string::npos);
   std::string no_sequence = push_in_budget("\"frame_ms.p95\" = \"<= 10\"\n");
   no_sequence.replace(no_sequence.find("sequence = \"push-in\"\nframes = 8\n"), 32, "");

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 
 #include "driver/sequence_run.h"
 #include "gpu_model/profile_loader.h"
@@ -66,6 +67,18 @@ to = 0.5
       parse_sequence_file("[sequence]\npreset = \"push-in\"\nframes = 7\n", "p.toml");
   EXPECT_EQ(p.frames, 7);
   EXPECT_EQ(p.tracks.size(), 1u);
+}
+
+TEST(Sequence, ShippedSequenceFilesLoad) {
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(
+           std::filesystem::path(test_paths::kDataDir) / "sequences")) {
+    SCOPED_TRACE(entry.path().string());
+    const Sequence s = load_sequence(entry.path().string(), 0, 0.0);
+    EXPECT_NO_THROW(check_sequence(s, pipeline::PipelineConfig{}));
+    ++files;
+  }
+  EXPECT_GT(files, 0);
 }
 
 TEST(Sequence, BadFilesNameFileLineAndField) {
@@ -165,8 +178,51 @@ TEST_F(PlayedSequence, IdenticalFramesGiveIdenticalResults) {
   }
   EXPECT_EQ(r.stats.p50, r.stats.max);
   EXPECT_EQ(r.stats.worst_frame, 0);
+  EXPECT_TRUE(r.frames[0].quality.empty());  // no reference asked for
+  EXPECT_FALSE(r.frames[1].temporal);
   // Frames after the first replay every pass the memo keeps (those a later pass samples).
   EXPECT_GT(r.passes_replayed, 0);
+}
+
+TEST_F(PlayedSequence, IdenticalFramesHaveNoTemporalError) {
+  const Sequence still = parse_sequence_file(
+      "[sequence]\nframes = 3\nfps = 30\n[[sequence.track]]\nknob = \"camera_yaw_deg\"\n"
+      "by = 0\n",
+      "still.toml");
+  const SequenceResult r = run_sequence(*gpu_scene_, still, config(), *device_, 2, {}, true);
+  ASSERT_FALSE(r.frames[0].temporal);  // no previous frame
+  for (std::size_t i = 1; i < r.frames.size(); ++i) {
+    ASSERT_TRUE(r.frames[i].temporal);
+    EXPECT_EQ(r.frames[i].temporal->frame_flip, 0.0);
+    EXPECT_EQ(r.frames[i].temporal->reference_flip, 0.0);
+    EXPECT_EQ(r.frames[i].quality, r.frames[0].quality);
+  }
+  EXPECT_GT(r.frames[0].quality.at("flip_skin"), 0.0);  // measured against a real reference
+  const nlohmann::json j = sequence_json(still, r);
+  EXPECT_EQ(j.at("temporal").at("mean_error"), 0.0);
+  EXPECT_EQ(j.at("worst_quality").at("metric"), "flip_skin");
+}
+
+TEST_F(PlayedSequence, MovingFramesChangeAsTheReferenceDoes) {
+  // A turning head: consecutive frames differ, and so do their references.
+  const Sequence turn = load_sequence("head-turn", 3, 0.0);
+  const SequenceResult r = run_sequence(*gpu_scene_, turn, config(), *device_, 2, {}, true);
+  ASSERT_TRUE(r.frames[1].temporal);
+  EXPECT_GT(r.frames[1].temporal->frame_flip, 0.0);
+  EXPECT_GT(r.frames[1].temporal->reference_flip, 0.0);
+  EXPECT_EQ(r.frames[1].temporal->error(),
+            std::abs(r.frames[1].temporal->frame_flip - r.frames[1].temporal->reference_flip));
+}
+
+TEST_F(PlayedSequence, SameResultsForAnyThreadCount) {
+  const Sequence turn = load_sequence("head-turn", 3, 0.0);
+  const SequenceResult one = run_sequence(*gpu_scene_, turn, config(), *device_, 1);
+  const SequenceResult three = run_sequence(*gpu_scene_, turn, config(), *device_, 3);
+  for (std::size_t i = 0; i < one.frames.size(); ++i) {
+    EXPECT_EQ(one.frames[i].range.base, three.frames[i].range.base) << "frame " << i;
+    EXPECT_EQ(one.frames[i].knobs, three.frames[i].knobs);
+  }
+  EXPECT_EQ(one.frames.back().knobs.at("camera_yaw_deg"), "90");
 }
 
 TEST_F(PlayedSequence, PushInCrossesTheLodDistanceAtThePredictedFrame) {
