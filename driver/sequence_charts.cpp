@@ -47,9 +47,22 @@ SequenceChartsOutcome write_sequence_charts(const Sequence& sequence, const Sequ
       s.pass_ms[static_cast<std::size_t>(k - s.pass_names.begin())][i] = p.ms;
     }
   }
-  for (const auto& [stem, draw] :
-       {std::pair{"sequence_frame_ms", &reports::write_sequence_frame_chart},
-        std::pair{"sequence_passes", &reports::write_sequence_pass_chart}}) {
+  // Quality only when every frame has it (a run with the reference).
+  s.quality_label = "flip_skin";
+  for (const SequenceFrame& f : result.frames) {
+    if (!f.quality.count("flip_skin")) s.quality_label = "flip_frame";
+  }
+  for (const SequenceFrame& f : result.frames) {
+    if (f.quality.count(s.quality_label)) s.quality.push_back(f.quality.at(s.quality_label));
+    if (f.temporal) s.temporal_error.push_back(f.temporal->error());
+  }
+  std::vector<std::pair<const char*, decltype(&reports::write_sequence_frame_chart)>> charts = {
+      {"sequence_frame_ms", &reports::write_sequence_frame_chart},
+      {"sequence_passes", &reports::write_sequence_pass_chart}};
+  if (s.quality.size() == result.frames.size() && result.frames.size() > 1) {
+    charts.emplace_back("sequence_quality", &reports::write_sequence_quality_chart);
+  }
+  for (const auto& [stem, draw] : charts) {
     const reports::ChartFiles files = draw(s, (dir / stem).string(), {});
     for (const std::string& path : {files.png, files.svg}) {
       if (!path.empty()) outcome.written.push_back(std::filesystem::path(path).filename());

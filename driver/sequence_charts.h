@@ -1,5 +1,6 @@
 // The charts of a played sequence in a run's directory (reports/sequence_charts.h):
-// sequence_frame_ms.png and sequence_passes.png, each with an .svg copy.
+// sequence_frame_ms.png, sequence_passes.png and, when every frame was measured against its
+// reference, sequence_quality.png; each with an .svg copy.
 #pragma once
 
 #include <filesystem>

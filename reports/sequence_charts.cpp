@@ -124,4 +124,38 @@ ChartFiles write_sequence_pass_chart(const SequenceSeries& s, const std::string&
   return save_chart(view, path_stem, options);
 }
 
+ChartFiles write_sequence_quality_chart(const SequenceSeries& s, const std::string& path_stem,
+                                        const ChartOptions& options) {
+  require_frames(s, path_stem);
+  if (s.quality.size() != s.time_s.size() || s.temporal_error.size() + 1 != s.time_s.size()) {
+    throw ReportError("sequence chart " + path_stem + ": no per-frame quality");
+  }
+  vtkNew<vtkTable> frames;
+  frames->AddColumn(make_column("t", s.time_s));
+  frames->AddColumn(make_column(s.quality_label + " vs the frame's reference", s.quality));
+  vtkNew<vtkTable> steps;  // a step is drawn at the time of the frame it leads to
+  steps->AddColumn(make_column("t", {s.time_s.begin() + 1, s.time_s.end()}));
+  steps->AddColumn(
+      make_column("temporal error (FLIP change vs the reference's)", s.temporal_error));
+
+  auto view = make_chart_view(options);
+  vtkNew<vtkChartXY> chart;
+  view->GetScene()->AddItem(chart);
+  style_chart(chart, "Quality over the sequence: " + s.title, options);
+  double y_hi = 1e-3;
+  for (const auto& [table, colour] :
+       {std::pair{frames.Get(), palette_colour(0)}, std::pair{steps.Get(), palette_colour(1)}}) {
+    vtkPlot* plot = chart->AddPlot(vtkChart::LINE);
+    plot->SetInputData(table, 0, 1);
+    plot->SetColor(colour[0], colour[1], colour[2], 255);
+    plot->SetWidth(4.0);
+  }
+  for (const std::vector<double>* v : {&s.quality, &s.temporal_error}) {
+    if (!v->empty()) y_hi = std::max(y_hi, *std::max_element(v->begin(), v->end()));
+  }
+  style_axes(chart, s, y_hi, "FLIP (lower is better)", options);
+  place_legend_outside(chart, options);
+  return save_chart(view, path_stem, options);
+}
+
 }  // namespace skinsim::reports

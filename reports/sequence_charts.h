@@ -20,6 +20,11 @@ struct SequenceSeries {
   std::vector<std::string> pass_names;       // in frame order
   std::vector<std::vector<double>> pass_ms;  // [pass][frame], 0 where a frame lacks the pass
   double budget_ms = 33.3;                   // the frame interval
+  // With a reference: each frame's FLIP against it (quality_label names the metric), and the
+  // temporal error of each step into frame 1, 2, ... (one fewer than the frames).
+  std::string quality_label;
+  std::vector<double> quality;
+  std::vector<double> temporal_error;
 };
 
 // Frame ms against time (s), its low and high range as thin lines, the budget as a dashed
@@ -31,5 +36,10 @@ ChartFiles write_sequence_frame_chart(const SequenceSeries& series, const std::s
 // the sweep's charts, with the budget line.
 ChartFiles write_sequence_pass_chart(const SequenceSeries& series, const std::string& path_stem,
                                      const ChartOptions& options = {});
+
+// Each frame's FLIP against its reference and the temporal error of each step, against time.
+// Throws ReportError if the series has no quality.
+ChartFiles write_sequence_quality_chart(const SequenceSeries& series, const std::string& path_stem,
+                                        const ChartOptions& options = {});
 
 }  // namespace skinsim::reports

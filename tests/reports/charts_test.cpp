@@ -185,7 +185,10 @@ SequenceSeries synthetic_sequence() {
     s.frame_ms.push_back(1.0 + skin);
     s.low_ms.push_back(0.8 * (1.0 + skin));
     s.high_ms.push_back(1.5 * (1.0 + skin));
+    s.quality.push_back(0.05 + 0.002 * i);
+    if (i > 0) s.temporal_error.push_back(i == 4 ? 0.02 : 0.001);  // the LOD pop
   }
+  s.quality_label = "flip_skin";
   s.budget_ms = 16.7;
   return s;
 }
@@ -195,6 +198,7 @@ TEST_F(ChartsTest, SequenceFrameTimeAndPassStack) {
   const SequenceSeries s = synthetic_sequence();
   expect_real_chart(write_sequence_frame_chart(s, dir + "/frame_ms", options_), options_);
   expect_real_chart(write_sequence_pass_chart(s, dir + "/passes", options_), options_);
+  expect_real_chart(write_sequence_quality_chart(s, dir + "/quality", options_), options_);
 }
 
 TEST_F(ChartsTest, EmptySequenceIsAReportError) {
@@ -203,6 +207,9 @@ TEST_F(ChartsTest, EmptySequenceIsAReportError) {
   SequenceSeries no_passes = synthetic_sequence();
   no_passes.pass_names.clear();
   EXPECT_THROW(write_sequence_pass_chart(no_passes, dir + "/p", options_), ReportError);
+  SequenceSeries no_quality = synthetic_sequence();
+  no_quality.quality.clear();
+  EXPECT_THROW(write_sequence_quality_chart(no_quality, dir + "/q", options_), ReportError);
 }
 
 TEST(BudgetLabel, NamesMillisecondsAndFps) {
