@@ -82,7 +82,7 @@ SequenceRun play_sequence(const RunOptions& o, const driver::SceneSource& scene,
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (const driver::SequenceResult::Notice& notice : r.result.notices) {
     const std::string message =
-        fmt::format("{} of {} frames, the first frame {}: {}", notice.frames, r.sequence.frames,
+        fmt::format("in {} of {} frames, first at frame {}: {}", notice.frames, r.sequence.frames,
                     notice.first_frame, notice.text);
     fmt::print(stderr, "skinsim run: warning: {}\n", message);
     warnings.push_back(message);
@@ -94,9 +94,10 @@ SequenceRun play_sequence(const RunOptions& o, const driver::SceneSource& scene,
       r.sequence.name, r.sequence.frames, r.sequence.fps, s.p50, s.p95, s.p99, s.max, s.worst_frame,
       r.sequence.time_s(s.worst_frame), 1000.0 / r.sequence.fps);
   fmt::print(
-      "emulated {} frames in {:.1f} s ({:.2f} frames/s on {} host threads); {} of {} passes "
+      "emulated {} frames{} in {:.1f} s ({:.2f} frames/s on {} host threads); {} of {} passes "
       "replayed from earlier frames\n",
-      r.sequence.frames, seconds, r.sequence.frames / seconds,
+      r.sequence.frames, o.reference ? " and their references" : "", seconds,
+      r.sequence.frames / seconds,
       o.device.threads > 0 ? o.device.threads
                            : static_cast<int>(std::thread::hardware_concurrency()),
       r.result.passes_replayed, r.result.passes_replayed + r.result.passes_rendered);
