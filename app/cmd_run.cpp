@@ -3,8 +3,13 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <optional>
+#include <thread>
 
 #include "app/cli_options.h"
 #include "app/commands.h"
@@ -14,6 +19,8 @@
 #include "driver/images.h"
 #include "driver/reference_cache.h"
 #include "driver/result_json.h"
+#include "driver/sequence_charts.h"
+#include "driver/sequence_run.h"
 #include "driver/truth_judge.h"
 #include "gpu_model/sensitivity.h"
 #include "gpu_model/timing_json.h"
@@ -29,6 +36,8 @@ namespace skinsim::app {
 
 namespace {
 
+constexpr const char* kFramesDir = "frames";  // a sequence's frame images, 0000.png on
+
 struct RunOptions {
   DeviceOptions device;
   driver::SceneSource scene;
@@ -36,7 +45,11 @@ struct RunOptions {
   std::string out = "out";
   bool sensitivity = false;
   bool reference = true;
-  std::string truth;  // --truth: "cached", a file, or none
+  std::string truth;     // --truth: "cached", a file, or none
+  std::string sequence;  // --sequence: a preset or a sequence file; empty: one frame
+  int frames = 0;        // --frames, --fps: 0 = the sequence's own
+  double fps = 0.0;
+  bool charts = true;  // a sequence's charts (--no-charts)
 };
 
 // `--truth`: the frame and the reference judged by the path-traced truth beside the
@@ -54,6 +67,85 @@ nlohmann::json judge_with_truth(const driver::Truth& truth, const driver::FrameJ
     fmt::print("quality vs truth: reference {}\n", driver::truth_figures(out["reference"]));
   }
   return out;
+}
+
+// A sequence's frames: each frame's image under frames/, the per-frame results and their
+// distribution for result.json's "sequence", and the emulation rate on stdout.
+struct SequenceRun {
+  std::unique_ptr<scene::Scene> scene;
+  std::unique_ptr<pipeline::GpuScene> gpu_scene;  // refers to *scene
+  driver::Sequence sequence;
+  driver::SequenceResult result;
+  driver::SequenceChartsOutcome charts;
+};
+
+SequenceRun play_sequence(const RunOptions& o, const driver::SceneSource& scene,
+                          const pipeline::PipelineConfig& config,
+                          const gpu_model::DeviceProfile& device, const std::filesystem::path& out,
+                          std::vector<std::string>& warnings) {
+  SequenceRun r;
+  r.sequence = driver::load_sequence(o.sequence, o.frames, o.fps);
+  driver::check_sequence(r.sequence, config);
+  const float aspect = static_cast<float>(config.width) / static_cast<float>(config.height);
+  r.scene = std::make_unique<scene::Scene>(driver::load_scene(scene, aspect));
+  r.gpu_scene = std::make_unique<pipeline::GpuScene>(*r.scene);
+  std::filesystem::create_directories(out / kFramesDir);
+  const auto start = std::chrono::steady_clock::now();
+  r.result = driver::run_sequence(
+      *r.gpu_scene, r.sequence, config, device, o.device.threads,
+      [&out](int index, const driver::FrameResult& frame) {
+        driver::write_png(frame.output.frame, out / kFramesDir / fmt::format("{:04d}.png", index));
+      },
+      o.reference);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  for (const driver::SequenceResult::Notice& notice : r.result.notices) {
+    const std::string message =
+        fmt::format("in {} of {} frames, first at frame {}: {}", notice.frames, r.sequence.frames,
+                    notice.first_frame, notice.text);
+    fmt::print(stderr, "skinsim run: warning: {}\n", message);
+    warnings.push_back(message);
+  }
+  const driver::FrameMsStats& s = r.result.stats;
+  fmt::print(
+      "sequence {}: {} frames at {:g} fps; frame ms p50 {:.3f}, p95 {:.3f}, p99 {:.3f}, max "
+      "{:.3f} at frame {} ({:.3f} s); budget {:.1f} ms\n",
+      r.sequence.name, r.sequence.frames, r.sequence.fps, s.p50, s.p95, s.p99, s.max, s.worst_frame,
+      r.sequence.time_s(s.worst_frame), 1000.0 / r.sequence.fps);
+  fmt::print(
+      "emulated {} frames{} in {:.1f} s ({:.2f} frames/s on {} host threads); {} of {} passes "
+      "replayed from earlier frames\n",
+      r.sequence.frames, o.reference ? " and their references" : "", seconds,
+      r.sequence.frames / seconds,
+      o.device.threads > 0 ? o.device.threads
+                           : static_cast<int>(std::thread::hardware_concurrency()),
+      r.result.passes_replayed, r.result.passes_replayed + r.result.passes_rendered);
+  if (o.charts) {
+    r.charts = driver::write_sequence_charts(
+        r.sequence, r.result,
+        fmt::format("{} on {}, {}x{}", scene.label(), device.name, config.width, config.height),
+        out);
+  }
+  if (!r.charts.note.empty())
+    fmt::print(stderr, "skinsim run: no sequence charts: {}\n", r.charts.note);
+  if (o.reference) {
+    const nlohmann::json summary = driver::sequence_json(r.sequence, r.result);
+    if (summary.contains("worst_quality")) {
+      const nlohmann::json& q = summary["worst_quality"];
+      fmt::print("quality vs each frame's reference: worst {} {:.4f} at frame {}\n",
+                 q["metric"].get<std::string>(), q["value"].get<double>(), q["index"].get<int>());
+    }
+    if (summary.contains("temporal")) {
+      const nlohmann::json& t = summary["temporal"];
+      fmt::print(
+          "temporal stability (FLIP between consecutive frames vs the reference's): mean error "
+          "{:.4f}, worst {:.4f} from frame {}\n",
+          t["mean_error"].get<double>(), t["max_error"].get<double>(),
+          t["worst_step"]["index"].get<int>());
+    }
+  }
+  fmt::print("the frame below is the worst one, frame {}\n", s.worst_frame);
+  return r;
 }
 
 // Where the reference came from, when it was not rendered, and why a rendered one could not
@@ -110,23 +202,35 @@ int run(const RunOptions& o) {
   if (!o.truth.empty() && o.truth != driver::kCachedTruth) {
     truth = driver::truth_file("--truth", o.truth, config.width, config.height);
   }
-  const driver::FrameJobResult frame_job = driver::run_frame_job(job);
-  const driver::FrameResult& result = frame_job.frame;
+  const std::filesystem::path& out = run_directory.staging();
+  // One frame, or a sequence whose worst frame stands for it in the single-frame outputs.
+  driver::FrameJobResult frame_job;
+  std::optional<SequenceRun> sequence;
+  if (o.sequence.empty()) {
+    frame_job = driver::run_frame_job(job);
+  } else {
+    sequence = play_sequence(o, job.scene, config, device, out, warnings);
+  }
+  const driver::FrameResult& result = sequence ? sequence->result.worst : frame_job.frame;
+  const pipeline::GpuScene& gpu_scene = sequence ? *sequence->gpu_scene : *frame_job.gpu_scene;
   if (o.truth == driver::kCachedTruth) {
-    truth = driver::cached_truth(
-        *frame_job.gpu_scene, config, o.device.threads,
-        [](const std::string& note) { fmt::print(stderr, "skinsim run: note: {}\n", note); });
+    truth = driver::cached_truth(gpu_scene, config, o.device.threads, [](const std::string& note) {
+      fmt::print(stderr, "skinsim run: note: {}\n", note);
+    });
   }
 
-  const std::filesystem::path& out = run_directory.staging();
   std::vector<std::string> written = {"frame.png"};
+  if (sequence) {
+    written.push_back(std::string(kFramesDir) + "/*.png");
+    written.insert(written.end(), sequence->charts.written.begin(), sequence->charts.written.end());
+  }
   driver::write_png(result.output.frame, out / "frame.png");
   for (const pipeline::NamedTarget& t : result.output.intermediates) {
     driver::write_png(t.target, out / (t.name + ".png"), t.display_scale);
     written.push_back(t.name + ".png");
   }
-  if (pipeline::reads_brdf_lut(config)) {
-    pipeline::BrdfLutTexture::shared(config)->write_png((out / "brdf_lut.png").string());
+  if (pipeline::reads_brdf_lut(result.config)) {
+    pipeline::BrdfLutTexture::shared(result.config)->write_png((out / "brdf_lut.png").string());
     written.push_back("brdf_lut.png");
   }
 
@@ -139,7 +243,8 @@ int run(const RunOptions& o) {
 
   nlohmann::json json = driver::frame_result_json(result, o.scene.label());
   json["device"] = device.name;
-  json["scene_scale"] = driver::scene_scale_json(frame_job.gpu_scene->scene());
+  json["scene_scale"] = driver::scene_scale_json(gpu_scene.scene());
+  if (sequence) json["sequence"] = driver::sequence_json(sequence->sequence, sequence->result);
   if (frame_job.quality) {
     quality::save_png(frame_job.reference->image, out / driver::kRunReferenceImage);
     const std::string mask = driver::reference_mask_path(driver::kRunReferenceImage);
@@ -165,8 +270,7 @@ int run(const RunOptions& o) {
   }
   if (o.sensitivity) {
     const auto recount = [&](const gpu_model::DeviceProfile& varied) {
-      return driver::run_frame(*frame_job.gpu_scene, config, varied, o.device.threads)
-          .output.passes;
+      return driver::run_frame(gpu_scene, result.config, varied, o.device.threads).output.passes;
     };
     const auto rows = gpu_model::sensitivity(result.output.passes, device, recount);
     json["sensitivity"] = gpu_model::to_json(rows);
@@ -181,9 +285,9 @@ int run(const RunOptions& o) {
       json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
 
   std::vector<std::string> knobs;
-  for (const std::string& knob : pipeline::summary_knobs(config)) {
-    if (!pipeline::knob_applies(config, knob)) continue;
-    knobs.push_back(knob + " " + pipeline::get_config_field(config, knob));
+  for (const std::string& knob : pipeline::summary_knobs(result.config)) {
+    if (!pipeline::knob_applies(result.config, knob)) continue;
+    knobs.push_back(knob + " " + pipeline::get_config_field(result.config, knob));
   }
   fmt::print("skinsim run: {} with {} on {} ({}), {}x{}{}{}\n", o.scene.label(), config.technique,
              device.name, device.gpu, config.width, config.height, knobs.empty() ? "" : ", ",
@@ -205,6 +309,12 @@ int run(const RunOptions& o) {
   written.push_back("result.json");
   run_directory.commit();
   fmt::print("wrote {}/{{{}}}\n", o.out, fmt::join(written, ", "));
+  if (sequence && sequence->charts.display_attempt_pending) {
+    // Every file is written and closed; only the exit handlers are skipped, which would tear
+    // down libX11 under the attempt still waiting for the display (display_check.h).
+    std::fflush(nullptr);
+    std::_Exit(0);
+  }
   return 0;
 }
 
@@ -220,12 +330,29 @@ Command add_run_command(CLI::App& app) {
   cmd->add_option("--out", options->out, "Output directory")->capture_default_str();
   cmd->add_flag("!--no-reference", options->reference,
                 "Skip the reference frame and the quality metrics (faster)");
-  cmd->add_option("--truth", options->truth,
-                  "Also judge the frame and the reference against a path-traced truth: `cached` "
-                  "(the truth store's, rendered with Blender Cycles when missing) or a linear "
-                  "EXR or PNG of the same view (docs/validation.md)");
+  CLI::Option* truth = cmd->add_option(
+      "--truth", options->truth,
+      "Also judge the frame and the reference against a path-traced truth: `cached` "
+      "(the truth store's, rendered with Blender Cycles when missing) or a linear "
+      "EXR or PNG of the same view (docs/validation.md)");
   cmd->add_flag("--sensitivity", options->sensitivity,
                 "Also report how frame time moves over each uncertain device figure's range");
+  CLI::Option* sequence =
+      cmd->add_option("--sequence", options->sequence,
+                      "Render a sequence of frames: push-in, head-turn, light-orbit or a sequence "
+                      "file (.toml); the frame outputs are its worst frame's")
+          ->excludes(truth);
+  cmd->add_option("--frames", options->frames,
+                  "Frames of the sequence (default: the sequence's own)")
+      ->check(integer_in(1, driver::kMaxSequenceFrames))
+      ->needs(sequence);
+  cmd->add_option("--fps", options->fps,
+                  "Frame rate of the sequence; its frame interval is the charts' budget line "
+                  "(default: the sequence's own)")
+      ->check(positive_real(1000.0))
+      ->needs(sequence);
+  cmd->add_flag("!--no-charts", options->charts,
+                "Skip a sequence's VTK charts (no X display needed)");
   return [options] { return run(*options); };
 }
 

@@ -122,6 +122,41 @@ class Reader {
     }
   }
 
+  // `sequence`, `frames`, `fps`: checked here against the budget's knobs, so a bad sequence
+  // fails when the file is read, naming its line.
+  void read_sequence(const toml::table& t, const std::string& named, Budget& b) const {
+    const toml::node* n = t.get("sequence");
+    if (!n) {
+      for (const char* key : {"frames", "fps"}) {
+        if (const toml::node* k = t.get(key)) {
+          throw error(*k, fmt::format("{}.{} needs {}.sequence", named, key, named));
+        }
+      }
+      return;
+    }
+    std::string name = string_at(*n, named + ".sequence");
+    if (name.ends_with(".toml")) name = resolve(name);
+    int frames = 0;
+    double fps = 0.0;
+    if (const toml::node* k = t.get("frames")) {
+      frames = integer_at(*k, named + ".frames");
+      if (frames < 1 || frames > driver::kMaxSequenceFrames) {
+        throw error(*k,
+                    fmt::format("{}.frames must be in [1, {}]", named, driver::kMaxSequenceFrames));
+      }
+    }
+    if (const toml::node* k = t.get("fps")) {
+      fps = number_at(*k, named + ".fps");
+      if (!(fps > 0.0 && fps <= 1000.0)) throw error(*k, named + ".fps must be in (0, 1000]");
+    }
+    try {
+      b.sequence = driver::load_sequence(name, frames, fps);
+      driver::check_sequence(*b.sequence, b.config);
+    } catch (const UserError& e) {
+      throw error(*n, fmt::format("{}.sequence: {}", named, e.what()));
+    }
+  }
+
   void read_pipeline(const toml::table& t, const std::string& where, Budget& budget) const {
     for (const auto& [key, node] : t) {
       const std::string field = fmt::format("{}.{}", where, key.str());
@@ -146,9 +181,18 @@ class Reader {
           fmt::format("{}:{}: budget '{}', limit '{}'", path_.string(), line, budget.name, metric);
       if (!is_known_metric_form(metric)) {
         throw BudgetError(fmt::format(
-            "{}: no such metric (use frame.<kind>, <pass>.<kind> with kind one of {}, or "
-            "quality.<name> with name one of {})",
-            at, fmt::join(counter_metric_kinds(), ", "), fmt::join(quality_metric_names(), ", ")));
+            "{}: no such metric (use frame.<kind>, <pass>.<kind> with kind one of {}, "
+            "quality.<name> with name one of {}, or frame_ms.<stat> with stat one of {})",
+            at, fmt::join(counter_metric_kinds(), ", "), fmt::join(quality_metric_names(), ", "),
+            fmt::join(sequence_metric_stats(), ", ")));
+      }
+      if (is_sequence_metric(metric) && !budget.sequence) {
+        throw BudgetError(at + ": a frame-time distribution needs the budget's `sequence`");
+      }
+      if (is_quality_metric(metric) && budget.sequence) {
+        throw BudgetError(at +
+                          ": a sequence budget renders no reference: limit quality in a "
+                          "budget without `sequence`");
       }
       // One limit, or several on the same metric: "<= baseline * 1.05" or ["...", "..."].
       if (const auto* array = node.as_array()) {
@@ -172,7 +216,9 @@ class Reader {
     Budget b;
     b.line = line_of(t);
     const std::string where = fmt::format("budget[{}]", index);
-    check_keys(t, {"name", "device", "resolution", "target_fps", "scene", "pipeline", "limits"},
+    check_keys(t,
+               {"name", "device", "resolution", "target_fps", "scene", "pipeline", "sequence",
+                "frames", "fps", "limits"},
                where);
     const toml::node* name = t.get("name");
     if (!name) throw error(b.line, where + " has no name");
@@ -230,6 +276,7 @@ class Reader {
       throw error(knobs ? line_of(*knobs) : b.line,
                   fmt::format("{}, pipeline: {}", named, e.what()));
     }
+    read_sequence(t, named, b);
     const toml::node* limits = t.get("limits");
     if (!limits || !limits->as_table())
       throw error(b.line, named + " needs a [budget.limits] table");

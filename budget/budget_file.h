@@ -3,11 +3,13 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "budget/limit.h"
 #include "driver/scene_source.h"
+#include "driver/sequence.h"
 #include "pipeline/config.h"
 
 namespace skinsim::budget {
@@ -19,7 +21,11 @@ struct Budget {
   driver::SceneSource scene;
   pipeline::PipelineConfig config;  // knobs set through pipeline::set_config_field
   double target_fps = 60.0;         // the frame rate the failure messages measure against
-  std::vector<Limit> limits;        // in file order
+  // `sequence` (a preset or a sequence file, relative to the budget file) with `frames` and
+  // `fps`: the budget measures every frame, its frame_ms.<stat> limits the distribution and
+  // the other limits the worst frame (driver/sequence.h).
+  std::optional<driver::Sequence> sequence;
+  std::vector<Limit> limits;  // in file order
 
   bool needs_quality() const;
   bool needs_baseline() const;

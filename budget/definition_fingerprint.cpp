@@ -32,6 +32,13 @@ std::string definition_fingerprint(const Budget& budget, const std::filesystem::
   for (const std::string& knob : knobs) {
     text += fmt::format("{}={}\n", knob, pipeline::get_config_field(budget.config, knob));
   }
+  if (const std::optional<driver::Sequence>& s = budget.sequence) {  // absent: as before
+    text += fmt::format("sequence={}\nframes={}\nfps={}\nloops={}\n", s->name, s->frames, s->fps,
+                        s->loops);
+    for (const driver::SequenceTrack& t : s->tracks) {
+      text += fmt::format("track={},{},{},{},{}\n", t.knob, t.relative, t.from, t.to, t.by);
+    }
+  }
   return fingerprint(text);
 }
 

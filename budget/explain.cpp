@@ -160,6 +160,9 @@ std::string explain_failure(const Budget& budget, const LimitResult& r, const Me
            "; the frame differs more from the reference than the budget allows, so "
            "the technique's approximation error is now visible at this floor";
   }
+  if (scope == "frame_ms") {
+    return text + "; " + now.sequence_summary;
+  }
   if (scope == "frame") {
     double delta = NAN;
     const std::string pass = culprit_pass(kind, now, baseline, &delta);

@@ -64,6 +64,11 @@ const std::vector<std::string>& quality_metric_names() {
   return names;
 }
 
+const std::vector<std::string>& sequence_metric_stats() {
+  static const std::vector<std::string> stats = {"p50", "p95", "p99", "max", "mean"};
+  return stats;
+}
+
 std::string metric_scope(const std::string& metric) {
   const std::size_t dot = metric.rfind('.');
   return dot == std::string::npos ? std::string() : metric.substr(0, dot);
@@ -78,10 +83,18 @@ bool is_quality_metric(const std::string& metric) {
   return metric_scope(metric) == "quality";
 }
 
+bool is_sequence_metric(const std::string& metric) {
+  return metric_scope(metric) == "frame_ms";
+}
+
 bool is_known_metric_form(const std::string& metric) {
   const std::string scope = metric_scope(metric);
   const std::string kind = metric_kind(metric);
   if (scope.empty()) return false;
+  if (scope == "frame_ms") {
+    const auto& s = sequence_metric_stats();
+    return std::find(s.begin(), s.end(), kind) != s.end();
+  }
   if (scope == "quality") {
     const auto& q = quality_metric_names();
     return std::find(q.begin(), q.end(), kind) != q.end();

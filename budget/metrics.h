@@ -5,6 +5,8 @@
 //                   texture_samples, fragments_depth_tested, triangles_in, energy_mj
 //   <pass>.<kind>   the same kinds for one render pass of the frame (irradiance, blur_h, ...)
 //   quality.<name>  psnr_skin, ssim_skin, flip_skin, psnr_frame, ssim_frame, flip_frame
+//   frame_ms.<stat> a sequence's frame-time distribution: p50, p95, p99, max, mean (the
+//                   budget's other metrics are then its worst frame's)
 #pragma once
 
 #include <map>
@@ -28,16 +30,20 @@ struct Measurement {
   MetricValues metrics;
   std::vector<std::string> passes;  // in submission order
   std::map<std::string, PassFacts> pass_facts;
+  // A sequence's distribution in words (which frame is the worst, when), for failure messages.
+  std::string sequence_summary;
 };
 
 // The per-pass and per-frame kinds ("ms", "dram_bytes", ...), and the quality names.
 const std::vector<std::string>& counter_metric_kinds();
 const std::vector<std::string>& quality_metric_names();
+const std::vector<std::string>& sequence_metric_stats();  // p50, p95, p99, max, mean
 
 // Whether a metric name is well formed (a known kind after the last '.', or a known quality
 // metric); pass names can only be checked against a rendered frame.
 bool is_known_metric_form(const std::string& metric);
 bool is_quality_metric(const std::string& metric);
+bool is_sequence_metric(const std::string& metric);  // frame_ms.<stat>
 // "skin.ms" -> "skin"; "frame.ms" -> "frame"; "quality.psnr_skin" -> "quality".
 std::string metric_scope(const std::string& metric);
 // "skin.ms" -> "ms".

@@ -41,6 +41,12 @@ glm::vec3 direction_from_angles(float azimuth_deg, float elevation_deg, const gl
                         std::sin(el) * up);
 }
 
+float key_light_azimuth_deg(const GpuScene& gs) {
+  const CharacterFrame f = character_frame(gs);
+  const glm::vec3 d = glm::normalize(gs.scene().key_light.direction);
+  return glm::degrees(std::atan2(glm::dot(d, f.right), glm::dot(d, f.front)));
+}
+
 FrameLighting frame_lighting(const GpuScene& gs, const PipelineConfig& cfg) {
   const scene::Scene& s = gs.scene();
   FrameLighting l{s.key_light, s.back_light, s.ambient};
@@ -50,9 +56,8 @@ FrameLighting frame_lighting(const GpuScene& gs, const PipelineConfig& cfg) {
     const glm::vec3 d = l.key.direction;
     // The scene's own angles for the one that is not given.
     const float elevation = glm::degrees(std::asin(glm::clamp(glm::dot(d, f.up), -1.0f, 1.0f)));
-    const float azimuth = glm::degrees(std::atan2(glm::dot(d, f.right), glm::dot(d, f.front)));
     l.key.direction =
-        direction_from_angles(cfg.light_azimuth_deg.value_or(azimuth),
+        direction_from_angles(cfg.light_azimuth_deg.value_or(key_light_azimuth_deg(gs)),
                               cfg.light_elevation_deg.value_or(elevation), f.front, f.right, f.up);
   }
   if (cfg.back_light) {

@@ -22,6 +22,9 @@ struct FrameLighting {
 };
 
 FrameLighting frame_lighting(const GpuScene& scene, const PipelineConfig& config);
+// The scene's own key light azimuth in the character's frame (light_azimuth_deg's units).
+float key_light_azimuth_deg(const GpuScene& scene);
+
 scene::Camera frame_camera(const GpuScene& scene, const PipelineConfig& config);
 
 // A direction from azimuth (about `up`, from `front` towards `right`) and elevation, degrees.

@@ -60,6 +60,11 @@ for option, names in NUMERIC_OPTIONS.items():
     # "--opt=" must not take the next argument as its value.
     cases.append((["run", option + "=", "--no-reference", "--out", OUT], names))
     cases.append((["run", option + "=nan", "--no-reference", "--out", OUT], names))
+# The sequence options, given the sequence they need.
+for option in ("--frames", "--fps"):
+    for value in BAD_VALUES + ["0", "-1"]:
+        cases.append((["run", "--sequence", "push-in", option, value, "--no-reference", "--out",
+                       OUT], [option]))
 # ~200 processes, each mostly the dynamic loader binding VTK's libraries: run them on every
 # core (failures are collected in order either way).
 with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 2) as pool:

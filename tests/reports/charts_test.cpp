@@ -11,6 +11,7 @@
 #include "quality/image.h"
 #include "reports/display_check.h"
 #include "reports/error.h"
+#include "reports/sequence_charts.h"
 #include "tests/reports/synthetic_sweep.h"
 #include "tests/reports/test_output_dir.h"
 
@@ -168,6 +169,47 @@ TEST_F(ChartsTest, DramByCauseChart) {
   const std::string dir = fresh_output_dir();
   expect_real_chart(write_dram_by_cause_chart(synthetic_sweep().rows[5], dir + "/dram", options_),
                     options_);
+}
+
+// A push-in like sequence: the LOD shader switching off at frame 4, then closer frames.
+SequenceSeries synthetic_sequence() {
+  SequenceSeries s;
+  s.title = "synthetic";
+  s.pass_names = {"shadow", "skin"};
+  s.pass_ms.assign(2, {});
+  for (int i = 0; i < 10; ++i) {
+    const double skin = i < 4 ? 2.0 : 5.0 + i;
+    s.time_s.push_back(i / 30.0);
+    s.pass_ms[0].push_back(1.0);
+    s.pass_ms[1].push_back(skin);
+    s.frame_ms.push_back(1.0 + skin);
+    s.low_ms.push_back(0.8 * (1.0 + skin));
+    s.high_ms.push_back(1.5 * (1.0 + skin));
+    s.quality.push_back(0.05 + 0.002 * i);
+    if (i > 0) s.temporal_error.push_back(i == 4 ? 0.02 : 0.001);  // the LOD pop
+  }
+  s.quality_label = "flip_skin";
+  s.budget_ms = 16.7;
+  return s;
+}
+
+TEST_F(ChartsTest, SequenceFrameTimeAndPassStack) {
+  const std::string dir = fresh_output_dir();
+  const SequenceSeries s = synthetic_sequence();
+  expect_real_chart(write_sequence_frame_chart(s, dir + "/frame_ms", options_), options_);
+  expect_real_chart(write_sequence_pass_chart(s, dir + "/passes", options_), options_);
+  expect_real_chart(write_sequence_quality_chart(s, dir + "/quality", options_), options_);
+}
+
+TEST_F(ChartsTest, EmptySequenceIsAReportError) {
+  const std::string dir = fresh_output_dir();
+  EXPECT_THROW(write_sequence_frame_chart(SequenceSeries{}, dir + "/f", options_), ReportError);
+  SequenceSeries no_passes = synthetic_sequence();
+  no_passes.pass_names.clear();
+  EXPECT_THROW(write_sequence_pass_chart(no_passes, dir + "/p", options_), ReportError);
+  SequenceSeries no_quality = synthetic_sequence();
+  no_quality.quality.clear();
+  EXPECT_THROW(write_sequence_quality_chart(no_quality, dir + "/q", options_), ReportError);
 }
 
 TEST(BudgetLabel, NamesMillisecondsAndFps) {

@@ -1,0 +1,86 @@
+// `skinsim run --sequence`: bad input names the option; a short push-in writes its frames,
+// the per-frame results and their distribution.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "tests/app/run_skinsim.h"
+
+namespace {
+
+using skinsim::test::Result;
+using skinsim::test::run;
+
+const std::string kSmall = " --resolution 64x48 --head-triangles 2000 --texture-size 64";
+
+std::filesystem::path temp_dir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / ("skinsim_seq_cli_" + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+TEST(SequenceCli, BadSequenceFramesAndFpsExitTwoNamingTheOption) {
+  const Result nope = run("run --sequence nope" + kSmall + " --out /tmp/skinsim_seq_unused");
+  EXPECT_EQ(nope.exit_code, 2) << nope.output;
+  EXPECT_NE(nope.output.find("--sequence: unknown sequence 'nope'"), std::string::npos)
+      << nope.output;
+  const Result zero = run("run --sequence push-in --frames 0" + kSmall);
+  EXPECT_EQ(zero.exit_code, 2) << zero.output;
+  EXPECT_NE(zero.output.find("--frames"), std::string::npos) << zero.output;
+  const Result fps = run("run --sequence push-in --fps -5" + kSmall);
+  EXPECT_EQ(fps.exit_code, 2) << fps.output;
+  EXPECT_NE(fps.output.find("--fps"), std::string::npos) << fps.output;
+  const Result alone = run("run --frames 4" + kSmall);
+  EXPECT_EQ(alone.exit_code, 2) << alone.output;
+  EXPECT_NE(alone.output.find("--frames requires --sequence"), std::string::npos) << alone.output;
+  const Result both = run("run --sequence push-in --camera-distance 1" + kSmall);
+  EXPECT_EQ(both.exit_code, 2) << both.output;
+  EXPECT_NE(both.output.find("camera_distance_m"), std::string::npos) << both.output;
+}
+
+TEST(SequenceCli, PushInWritesFramesAndTheDistribution) {
+  const auto dir = temp_dir("push_in");
+  const Result r =
+      run("run --sequence push-in --frames 4 --fps 24" + kSmall + " --out " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("sequence push-in: 4 frames at 24 fps"), std::string::npos) << r.output;
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_TRUE(std::filesystem::exists(dir / "frames" / ("000" + std::to_string(i) + ".png")));
+  }
+  std::ifstream in(dir / "result.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  const nlohmann::json& s = j.at("sequence");
+  ASSERT_EQ(s.at("per_frame").size(), 4u);
+  double max = 0.0;
+  int worst = -1;
+  for (const nlohmann::json& f : s.at("per_frame")) {
+    const double ms = f.at("frame_ms").get<double>();
+    EXPECT_LE(f.at("frame_ms_range").at("low").get<double>(), ms);
+    EXPECT_GE(f.at("frame_ms_range").at("high").get<double>(), ms);
+    double passes = 0.0;
+    for (const nlohmann::json& p : f.at("passes")) passes += p.at("ms").get<double>();
+    EXPECT_NEAR(passes, ms, 1e-9 * ms);
+    if (ms > max) {
+      max = ms;
+      worst = f.at("index").get<int>();
+    }
+  }
+  EXPECT_EQ(s.at("frame_ms").at("max").get<double>(), max);
+  EXPECT_EQ(s.at("frame_ms").at("worst_frame").at("index").get<int>(), worst);
+  EXPECT_DOUBLE_EQ(s.at("frame_ms").at("worst_frame").at("time_s").get<double>(), worst / 24.0);
+  // The single-frame outputs are the worst frame's.
+  EXPECT_EQ(j.at("timing").at("frame_ms").get<double>(), max);
+  EXPECT_EQ(s.at("per_frame").at(3).at("knobs").at("camera_distance_m"), "0.35");
+  // With the reference (the default): each frame's quality, the temporal steps after the first.
+  EXPECT_TRUE(s.at("per_frame").at(0).contains("quality"));
+  EXPECT_FALSE(s.at("per_frame").at(0).contains("temporal"));
+  EXPECT_TRUE(s.at("per_frame").at(1).at("temporal").contains("error"));
+  EXPECT_TRUE(s.at("temporal").contains("mean_error"));
+  EXPECT_TRUE(s.contains("worst_quality"));
+}
+
+}  // namespace
