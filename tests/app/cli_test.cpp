@@ -517,12 +517,15 @@ TEST(Cli, RunTakesTheReferenceFromTheStoreInAnyDirectory) {
   EXPECT_NE(bad.output.find("SKINSIM_CACHE_DIR"), std::string::npos) << bad.output;
 }
 
+// A card (one material, not named skin and not shaped like a head, so not taken as skin).
 TEST(Cli, RunWithoutSkinWritesFrameMetricsAndSaysWhy) {
-  if (!std::filesystem::exists(skinsim::test_paths::kLeePerrySmith))
-    GTEST_SKIP() << "asset not present";
+  skinsim::scene::testing::GltfFixture f("cli_noskin");
+  f.add_quad_mesh(true, true);
+  f.json()["materials"] = {{{"name", "card"}}};
+  f.json()["meshes"][0]["primitives"][0]["material"] = 0;
   const auto dir = temp_dir("run_noskin");
-  const Result r = run(std::string("run --scene ") + skinsim::test_paths::kLeePerrySmith +
-                       " --units-per-mm 0.04 --resolution 128x96 --out " + dir.string());
+  const Result r =
+      run("run --scene " + f.write_gltf("card") + " --resolution 128x96 --out " + dir.string());
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("no material is skin by its extras.skinsim.kind"), std::string::npos)
       << r.output;

@@ -182,7 +182,8 @@ TEST(PassCost, PerCauseBytesSumToTheTotal) {
 // so 4 samples take 4 passes over the tile (PowerVR: 32x32 -> 16x16), each paying the
 // per-tile cost and reading the tile's parameter-buffer list again.
 TEST(PassCost, MsaaResolvedOnChipAddsTilePassesButNoRenderTargetBytes) {
-  const DeviceProfile p = round_profile();
+  DeviceProfile p = round_profile();
+  p.tile_memory_bytes.value = 32 * 32 * 9;  // the 1x tile exactly: 4x takes 4 passes
   const auto pass_with = [](int samples) {
     sim::PassCounters pass = make_pass(1, 1, 4);
     pass.samples = samples;
