@@ -11,8 +11,5 @@ namespace skinsim::budget {
 
 // `suite_name` labels the whole run (e.g. the budget file's path).
 std::string junit_xml(const CheckReport& report, const std::string& suite_name);
-// Escapes the five XML special characters and replaces control characters XML 1.0 cannot
-// hold (everything below 0x20 except tab, newline and carriage return) with '?'.
-std::string xml_escape(std::string_view text);
 
 }  // namespace skinsim::budget

@@ -20,7 +20,7 @@ tr.moved { background: #fff0f0; }
 )";
 
 std::string esc(const std::string& s) {
-  return html_escape(s);
+  return escape_markup(s);
 }
 
 std::string number(const std::optional<double>& v) {

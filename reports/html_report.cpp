@@ -36,7 +36,7 @@ details summary { cursor: pointer; margin: 0.3em 0; } svg.timeline { max-width: 
 )";
 
 std::string esc(const std::string& s) {
-  return html_escape(s);
+  return escape_markup(s);
 }
 std::string link(const std::string& path) {
   return esc(url_encode_path(path));

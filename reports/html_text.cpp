@@ -16,33 +16,6 @@ th { background: #eee; } th.text, td.text { text-align: left; }
 .wide { overflow-x: auto; max-width: 100%; }
 )";
 
-std::string html_escape(const std::string& text) {
-  std::string out;
-  out.reserve(text.size());
-  for (char ch : text) {
-    switch (ch) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&#39;";
-        break;
-      default:
-        out += ch;
-    }
-  }
-  return out;
-}
-
 std::string url_encode_path(const std::string& path) {
   std::string out;
   for (unsigned char ch : path) {

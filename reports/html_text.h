@@ -1,17 +1,16 @@
-// What every skinsim HTML page shares: escaping of text and attributes (html_escape) and of
-// link targets (url_encode_path), and the base style (fonts, headings, tables).
+// What every skinsim HTML page shares: escaping of text and attributes (escape_markup, util/text.h)
+// and of link targets (url_encode_path), and the base style (fonts, headings, tables).
 #pragma once
 
 #include <string>
+
+#include "util/text.h"  // escape_markup
 
 namespace skinsim::reports {
 
 // CSS for body text, headings and right-aligned number tables (.text: left-aligned text;
 // .wide: a table that scrolls inside the page).
 extern const char* const kPageStyle;
-
-// Escapes &, <, >, " and ' for HTML text and attribute values.
-std::string html_escape(const std::string& text);
 
 // Percent-encodes a relative path for use as a URL (keeps A-Z a-z 0-9 - . _ ~ /).
 std::string url_encode_path(const std::string& path);

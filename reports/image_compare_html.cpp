@@ -18,7 +18,7 @@ table.crops img { width: 128px; image-rendering: pixelated; } img.bar { vertical
 namespace {
 
 std::string esc(const std::string& s) {
-  return html_escape(s);
+  return escape_markup(s);
 }
 std::string link(const std::string& path) {
   return esc(url_encode_path(path));

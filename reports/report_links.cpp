@@ -13,7 +13,7 @@ namespace skinsim::reports {
 
 namespace {
 
-// Inverse of html_escape (only the entities it produces, plus &#NN; decimal references).
+// Inverse of escape_markup (only the entities it produces, plus &#NN; decimal references).
 std::string html_unescape(const std::string& text) {
   static const std::regex entity("&(amp|lt|gt|quot|#[0-9]+);");
   std::string out;

@@ -45,11 +45,11 @@ std::string box(double x0, double x1, double top, const PassCost& p, const Rgb& 
   std::string s = fmt::format(
       "<g><title>{}</title><rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.0f}\" "
       "fill=\"{}\" stroke=\"#ffffff\"/>",
-      html_escape(tooltip), x0, top, w, kLaneHeight, css_colour(colour));
+      escape_markup(tooltip), x0, top, w, kLaneHeight, css_colour(colour));
   if (w > kCharWidth * static_cast<double>(p.name.size()) + 6.0) {
     s += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\" fill=\"{}\">{}</text>",
                      x0 + w / 2.0, top + kLaneHeight / 2.0 + 4.0, text_colour(colour),
-                     html_escape(p.name));
+                     escape_markup(p.name));
   }
   return s + "</g>\n";
 }
@@ -114,7 +114,7 @@ std::string timeline_svg(const std::vector<PassCost>& passes,
         "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"12\" height=\"12\" fill=\"{}\"/>"
         "<text x=\"{:.1f}\" y=\"{:.1f}\">{} {:.2f} ms</text>\n",
         x, y, css_colour(pass_colour(passes[i].name, colour_order)), x + 16.0, y + 10.5,
-        html_escape(passes[i].name), passes[i].ms);
+        escape_markup(passes[i].name), passes[i].ms);
   }
   return s + "</svg>\n";
 }

@@ -43,4 +43,39 @@ inline std::string lowercase(std::string_view text) {
   return out;
 }
 
+// `text` safe inside HTML, SVG and XML, as element content and as a quoted attribute value:
+// & < > " ' as entities, a newline as &#10; (kept through attribute-value normalisation),
+// and the control characters XML 1.0 cannot hold (below 0x20 but tab and carriage return)
+// as '?'. One escaper for the report pages and the JUnit file.
+inline std::string escape_markup(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (const char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
+      case '\n':
+        out += "&#10;";
+        break;
+      default:
+        const auto u = static_cast<unsigned char>(c);
+        out += (u < 0x20 && c != '\t' && c != '\r') ? '?' : c;
+    }
+  }
+  return out;
+}
+
 }  // namespace skinsim

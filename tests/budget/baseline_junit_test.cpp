@@ -9,6 +9,7 @@
 #include "budget/device_fingerprint.h"
 #include "budget/error.h"
 #include "budget/junit.h"
+#include "util/text.h"
 
 namespace skinsim::budget {
 namespace {
@@ -86,7 +87,7 @@ TEST(Fingerprint, IsFnv1a64) {
 }
 
 TEST(Junit, EscapesXml) {
-  EXPECT_EQ(xml_escape("a<b>&\"c'\n\x01"), "a&lt;b&gt;&amp;&quot;c&apos;&#10;?");
+  EXPECT_EQ(escape_markup("a<b>&\"c'\n\x01"), "a&lt;b&gt;&amp;&quot;c&#39;&#10;?");
 }
 
 TEST(Junit, OneTestcasePerLimitAndFailuresCounted) {

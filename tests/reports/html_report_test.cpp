@@ -50,7 +50,7 @@ ReportOptions no_charts() {
 }
 
 TEST(HtmlReport, EscapesEveryString) {
-  EXPECT_EQ(html_escape("<a href=\"x\">&'</a>"),
+  EXPECT_EQ(escape_markup("<a href=\"x\">&'</a>"),
             "&lt;a href=&quot;x&quot;&gt;&amp;&#39;&lt;/a&gt;");
   SweepTable sweep = synthetic_sweep();
   sweep.device = "<script>alert('device')</script>";
@@ -159,7 +159,7 @@ TEST(HtmlReport, StatesTheRecommendationWithItsRangeAndRule) {
   ASSERT_NE(section, std::string::npos);
   const std::size_t next = html.find("<h2>", section + 1);
   const std::string text = html.substr(section, next - section);
-  EXPECT_NE(text.find(html_escape(recommendations[0].verdict)), std::string::npos) << text;
+  EXPECT_NE(text.find(escape_markup(recommendations[0].verdict)), std::string::npos) << text;
   EXPECT_NE(text.find(fmt::format("{:.2f} to {:.2f}", chosen.frame_ms_low, chosen.frame_ms_high)),
             std::string::npos)
       << text;
@@ -182,7 +182,7 @@ TEST(HtmlReport, StatesEachKnobsVerdictBeforeTheRecommendation) {
   const std::vector<KnobVerdict> expected = knob_verdicts(sweep, "flip_skin");
   ASSERT_EQ(expected.size(), 2u);  // lut and scale
   for (const KnobVerdict& v : expected) {
-    EXPECT_NE(verdicts.find(html_escape(v.sentence)), std::string::npos) << v.sentence;
+    EXPECT_NE(verdicts.find(escape_markup(v.sentence)), std::string::npos) << v.sentence;
   }
 }
 
@@ -193,8 +193,8 @@ TEST(HtmlReport, RecommendationNamesItsRangeAgainstTheBudgetAndTheRunnerUp) {
   ASSERT_FALSE(r.runner_up_note.empty());
   const std::string text =
       section_of(read_text(write_report(sweep, fresh_output_dir(), no_charts())), "Recommendation");
-  EXPECT_NE(text.find(html_escape(r.range_note)), std::string::npos) << r.range_note;
-  EXPECT_NE(text.find(html_escape(r.runner_up_note)), std::string::npos) << r.runner_up_note;
+  EXPECT_NE(text.find(escape_markup(r.range_note)), std::string::npos) << r.range_note;
+  EXPECT_NE(text.find(escape_markup(r.runner_up_note)), std::string::npos) << r.runner_up_note;
 }
 
 TEST(HtmlReport, ExplainsTechniqueErrorAgainstKnobErrorBesideTheTable) {
@@ -203,7 +203,7 @@ TEST(HtmlReport, ExplainsTechniqueErrorAgainstKnobErrorBesideTheTable) {
       section_of(read_text(write_report(sweep, fresh_output_dir(), no_charts())), "Configurations");
   EXPECT_NE(text.find("Technique error and knob error"), std::string::npos);
   const TechniqueError e = technique_errors(sweep, "flip_skin").front();
-  EXPECT_NE(text.find(html_escape(e.sentence)), std::string::npos) << e.sentence;
+  EXPECT_NE(text.find(escape_markup(e.sentence)), std::string::npos) << e.sentence;
   // Every row visibly different from the reference: the page says what that column measures.
   SweepTable all_visible = sweep;
   for (ConfigResult& r : all_visible.rows) {
