@@ -1,7 +1,19 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages skinsim needs. Idempotent: apt skips what is present.
+# Usage: scripts/install-deps.sh [run|all]   (default: all)
+#   run: what building skinsim and its default job need (scripts/run-default.sh), so a new
+#        user's first frame does not wait for the test-only packages (Blender, Chromium,
+#        Slurm, Mesa: about a fifth of the download);
+#   all: everything, the tests included (scripts/test.sh).
 set -euo pipefail
+set_name=${1:-all}
+[[ "$set_name" == run || "$set_name" == all ]] || {
+  echo "install-deps: unknown package set '$set_name' (use run or all)" >&2
+  exit 2
+}
 
+# CMake's configure step needs GoogleTest, Google Benchmark, clang-format (the format test) and
+# OpenImageIO (skinsim-exr) even when only skinsim is built, so they are in the run set.
 packages=(
   cmake g++ make pkg-config ccache clang-format
   libglm-dev libtinygltf-dev libstb-dev libtbb-dev
@@ -12,6 +24,9 @@ packages=(
   libdeflate-dev  # deflate for the PNGs skinsim writes (stb_image_write, from libstb-dev, the container)
   libvtk9-dev xvfb xauth
   libglx-dev  # GLX: charts check the X display offers the OpenGL VTK needs (reports/)
+  libopenimageio-dev  # skinsim-exr: reads and writes OpenEXR (truths, --linear-exr)
+)
+test_packages=(
   glslang-tools  # glslangValidator checks the exported GLSL ES in the tests
   # Mesa llvmpipe through EGL/GLES: the speed anchor (bench/, scripts/bench_vs_llvmpipe.py)
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
@@ -20,10 +35,10 @@ packages=(
   chromium  # tests/reports: report.html checked in a real (headless) browser
   openimageio-tools  # oiiotool: tests/reports measures the browser's screenshots with it
   # skinsim truth (docs/validation.md): Blender's Cycles path-traces the ground truth
-  # (3.4; ~80 MB download, ~264 MB installed on top of the rest), and skinsim-exr reads
-  # its OpenEXR with OpenImageIO
-  blender libopenimageio-dev
+  # (3.4; ~80 MB download, ~264 MB installed on top of the rest)
+  blender
 )
+[[ "$set_name" == run ]] || packages+=("${test_packages[@]}")
 
 missing=()
 for p in "${packages[@]}"; do

@@ -5,7 +5,7 @@
 # out/default-sweep. Safe to run again: the sweep resumes and skips finished configurations.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/install-deps.sh
+bash scripts/install-deps.sh run  # the tests' packages (Blender, Chromium, Slurm) come with scripts/test.sh
 # Only the program and what it links (203 of the build's 294 objects): the tests and benchmarks
 # are built by scripts/test.sh, which runs them.
 bash scripts/build.sh build --target skinsim
