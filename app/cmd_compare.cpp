@@ -101,10 +101,11 @@ Command add_compare_command(CLI::App& app) {
   cmd->add_option("b", options->b, "The run or sweep directory to compare with A")->required();
   cmd->add_option("--out", options->out,
                   "Also write compare.html, compare.json, crops and difference images here");
-  cmd->add_option("--truth", options->truth,
-                  "Also judge both runs' frames against a path-traced truth: `cached` (the one "
-                  "both were judged with by `run --truth cached`) or a linear EXR or PNG of the "
-                  "view (docs/validation.md); the exit status is unchanged");
+  cmd->add_option(
+      "--truth", options->truth,
+      "Also judge both runs' frames against a path-traced truth: `cached` (the one "
+      "both were judged with by `run --truth cached`) a linear EXR or PNG of the view, "
+      "or a `skinsim truth` directory of it (docs/validation.md); the exit status is unchanged");
   cmd->add_option("--rel-tol", options->rel_tol,
                   "Relative tolerance of modelled times, bytes and quality metrics")
       ->check(non_negative_real(1e6))

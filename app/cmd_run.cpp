@@ -333,8 +333,9 @@ Command add_run_command(CLI::App& app) {
   CLI::Option* truth = cmd->add_option(
       "--truth", options->truth,
       "Also judge the frame and the reference against a path-traced truth: `cached` "
-      "(the truth store's, rendered with Blender Cycles when missing) or a linear "
-      "EXR or PNG of the same view (docs/validation.md)");
+      "(the truth store's, rendered with Blender Cycles when missing), a linear "
+      "EXR or PNG of the same view, or a `skinsim truth` directory of it (its samples, its "
+      "floor) (docs/validation.md)");
   cmd->add_flag("--sensitivity", options->sensitivity,
                 "Also report how frame time moves over each uncertain device figure's range");
   CLI::Option* sequence =

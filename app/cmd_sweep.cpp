@@ -397,8 +397,9 @@ Command add_sweep_command(CLI::App& app) {
                   "share --out safely; no report (see --merge)");
   cmd->add_option("--truth", o->truth,
                   "Also judge every configuration against a path-traced truth (`cached`: the "
-                  "truth store's for each group, rendered with Blender Cycles when missing; or a "
-                  "linear EXR or PNG of the view) and say per group whether the recommendation "
+                  "truth store's for each group, rendered with Blender Cycles when missing; a "
+                  "linear EXR or PNG of the view, or a `skinsim truth` directory of it) and say "
+                  "per group whether the recommendation "
                   "and the visibility verdicts stay (docs/validation.md)");
   cmd->add_flag("--merge", o->merge,
                 "Compute nothing: write the tables and report from the configurations in --out "

@@ -12,6 +12,7 @@
 #include "driver/truth_image.h"
 #include "driver/truth_render.h"
 #include "driver/truth_scene.h"
+#include "io/json_input.h"
 #include "quality/json_value.h"
 #include "quality/metrics.h"
 #include "util/user_error.h"
@@ -107,15 +108,47 @@ Truth with_images(Truth truth, TruthImages images) {
 }
 
 void require_truth(const std::string& option, const std::string& spec) {
-  if (spec != kCachedTruth && !fs::is_regular_file(spec)) {
+  if (spec != kCachedTruth && !fs::is_regular_file(spec) &&
+      !fs::is_regular_file(fs::path(spec) / "truth.json")) {
     throw UserError(
-        fmt::format("{} {}: no such image file (give `{}` or an EXR/PNG of the frame's view)",
+        fmt::format("{} {}: no such image file or `skinsim truth` directory (give `{}`, an "
+                    "EXR/PNG of the frame's view or a directory `skinsim truth` wrote)",
                     option, spec, kCachedTruth));
   }
 }
 
+namespace {
+
+// A directory `skinsim truth` wrote: truth.exr, and with --noise-floor the next seed's image,
+// which truth.json names; the two make the floor as a cached truth's do.
+Truth truth_directory(const std::string& option, const fs::path& dir, int width, int height) {
+  const nlohmann::json made = io::read_json_file(dir / "truth.json", option);
+  const auto number = [&](const nlohmann::json& object, const char* field) {
+    if (!object.is_object() || !object.contains(field) || !object[field].is_number_integer()) {
+      throw UserError(fmt::format("{} {}: no integer '{}' (not a truth.json `skinsim truth` wrote)",
+                                  option, (dir / "truth.json").string(), field));
+    }
+    return object[field].get<int>();
+  };
+  Truth truth = truth_file(option, dir / "truth.exr", width, height);
+  truth.about = {{"source", "directory"},
+                 {"dir", dir.string()},
+                 {"samples", number(made, "samples")},
+                 {"seed", number(made, "seed")}};
+  if (!made.contains("noise_floor")) return truth;
+  const int second_seed = number(made["noise_floor"], "seed");
+  truth.about["second_seed"] = second_seed;
+  Truth second =
+      truth_file(option, dir / fmt::format("truth_seed{}.exr", second_seed), width, height);
+  TruthImages images{std::move(truth.images.image), std::move(second.images.image)};
+  return with_images(std::move(truth), std::move(images));
+}
+
+}  // namespace
+
 Truth truth_file(const std::string& option, const fs::path& path, int width, int height) {
   require_truth(option, path.string());
+  if (fs::is_directory(path)) return truth_directory(option, path, width, height);
   Truth truth;
   if (is_png(path)) {
     truth.images.image = quality::load_png(path);
@@ -203,6 +236,14 @@ std::string truth_source_text(const Truth& truth) {
   const nlohmann::json& a = truth.about;
   if (a["source"] == "file")
     return fmt::format("the file {} (one image)", a["file"].get<std::string>());
+  if (a["source"] == "directory") {
+    return fmt::format(
+        "the `skinsim truth` directory {} ({} samples, {})", a["dir"].get<std::string>(),
+        a["samples"].get<int>(),
+        a.contains("second_seed")
+            ? fmt::format("seeds {} and {}", a["seed"].get<int>(), a["second_seed"].get<int>())
+            : fmt::format("seed {}, no second seed", a["seed"].get<int>()));
+  }
   const nlohmann::json& key = a["key"];
   const std::string settings = fmt::format("{} samples, seeds {} and {}", key["samples"].get<int>(),
                                            key["seed"].get<int>(), key["second_seed"].get<int>());

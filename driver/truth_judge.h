@@ -39,14 +39,16 @@ Truth with_images(Truth truth, TruthImages images);
 Truth cached_truth(const pipeline::GpuScene& scene, const pipeline::PipelineConfig& config,
                    int threads, const std::function<void(const std::string&)>& note);
 
-// Throws UserError naming `option` when `spec` is neither "cached" nor an existing file: checked
-// before a command's work, as the file is read only after it.
+// Throws UserError naming `option` when `spec` is neither "cached", an existing file nor a
+// `skinsim truth` directory: checked before a command's work, as the file is read only after it.
 void require_truth(const std::string& option, const std::string& spec);
 
 // A truth the user brings (`--truth FILE`): a PNG is taken as seen (sRGB, 8 bits), anything
 // else is read through skinsim-exr as scene-linear (OpenEXR, Radiance HDR, TIFF) and encoded
-// for display. One image has no second seed, so no measured floor. Throws UserError naming
-// `option` and the file when it is missing, unreadable or not width x height.
+// for display. One image has no second seed, so no measured floor. A directory `skinsim truth`
+// wrote (`--truth DIR`, any samples) is its truth.exr, and with --noise-floor its second seed,
+// whose floor is measured. Throws UserError naming `option` and the file when it is missing,
+// unreadable or not width x height.
 Truth truth_file(const std::string& option, const std::filesystem::path& path, int width,
                  int height);
 

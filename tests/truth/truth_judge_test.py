@@ -10,6 +10,9 @@ Usage: truth_judge_test.py CASE SKINSIM SKINSIM_EXR WORKDIR
               own truth is identical and not visible); no measured floor is stated as such; a
               missing file, a file that is no image and one of another size exit 2, named,
               before the frame is rendered.
+  directory   `run --truth DIR` of a directory `skinsim truth` wrote (stand-in Blender): with
+              --noise-floor its two seeds measure the floor, and the frame is judged above it;
+              without, one image, no floor; a truth.json without its seed exits 2, named.
   compare     `compare A B --truth cached` judges two runs by the truth both were judged with
               (stand-in Blender), in the terminal and compare.json; `--truth FILE` too; runs
               judged by no or by different truths, and a missing file, exit 2, named.
@@ -176,6 +179,36 @@ def test_file():
             fail("a refused truth left an output directory")
 
 
+def test_directory():
+    use_fake_blender()
+    truth = f"{WORK}/truth"
+    run(SKINSIM, "truth", *SIZE, "--samples", "8", "--noise-floor", "--out", truth)
+    if blender_calls() != ["1", "2"]:
+        fail("skinsim truth --noise-floor did not render seeds 1 and 2")
+    p = run(SKINSIM, "run", *SIZE, "--truth", truth, "--out", f"{WORK}/dir")
+    judged_by = judged(f"{WORK}/dir")
+    floor = judged_by["noise_floor"]
+    # The stand-in's seeds differ by 0.01 everywhere: a measured floor, never visible.
+    if not floor["measured"] or not floor["skin"]["flip"] > 0 or floor["skin"]["visible_px"] != 0:
+        fail(f"a truth directory's two seeds do not make the floor: {floor}")
+    if (judged_by["source"], judged_by["samples"], judged_by["second_seed"]) != ("directory", 8, 2):
+        fail(f"where the truth came from: {judged_by}")
+    if "8 samples, seeds 1 and 2" not in p.stdout or blender_calls():
+        fail(f"the run does not say which truth judged, or rendered one:\n{p.stdout}")
+
+    run(SKINSIM, "truth", *SIZE, "--samples", "8", "--out", f"{WORK}/one")
+    blender_calls()
+    p = run(SKINSIM, "run", *SIZE, "--truth", f"{WORK}/one", "--out", f"{WORK}/one_run")
+    if judged(f"{WORK}/one_run")["noise_floor"]["measured"] or "no second seed" not in p.stdout:
+        fail(f"a truth directory of one seed is not stated as such:\n{p.stdout}")
+
+    with open(f"{truth}/truth.json", "w") as f:
+        json.dump({"samples": 8}, f)
+    p = run(SKINSIM, "run", *SIZE, "--truth", truth, "--out", f"{WORK}/bad", expect=2)
+    if "truth.json" not in p.stderr or "'seed'" not in p.stderr or os.path.exists(f"{WORK}/bad"):
+        fail(f"a truth.json without its seed: {p.stderr}")
+
+
 def test_compare():
     use_fake_blender()
     a, b, other = f"{WORK}/a", f"{WORK}/b", f"{WORK}/other"
@@ -279,8 +312,8 @@ def test_sweep():
 def main():
     shutil.rmtree(WORK, ignore_errors=True)
     os.makedirs(WORK)
-    {"store": test_store, "file": test_file, "compare": test_compare, "sweep_file": test_sweep_file,
-     "sweep": test_sweep}[CASE]()
+    {"store": test_store, "file": test_file, "directory": test_directory, "compare": test_compare,
+     "sweep_file": test_sweep_file, "sweep": test_sweep}[CASE]()
     print("ok")
 
 
