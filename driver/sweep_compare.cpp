@@ -27,7 +27,10 @@ NamedValues row_values(const ConfigResult& row) {
                    {"timing.frame_ms_range.low", row.frame_ms_low},
                    {"timing.frame_ms_range.high", row.frame_ms_high},
                    {"timing.fps", row.fps},
-                   {"timing.dram_bytes.total", row.dram_bytes}};
+                   {"timing.dram_bytes.total", row.dram_bytes},
+                   {"energy.frame_mj", row.energy_mj},
+                   {"energy.low_mj", row.energy_mj_low},
+                   {"energy.high_mj", row.energy_mj_high}};
   for (const reports::PassCost& p : reports::merged_passes(row)) {
     v["timing.passes." + p.name + ".ms"] = p.ms;
   }

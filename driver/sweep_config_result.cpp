@@ -17,8 +17,8 @@ namespace skinsim::driver {
 namespace {
 
 // 2: frame_ms_low/high, FLIP percentiles and visibility; 3: pass ms = share of the frame, the
-// pass schedule, dram_wait; 4: the images' digests
-constexpr int kFormatVersion = 4;
+// pass schedule, dram_wait; 4: the images' digests; 5: energy per frame and its range
+constexpr int kFormatVersion = 5;
 
 }  // namespace
 
@@ -41,6 +41,9 @@ reports::ConfigResult config_row(const SweepConfig& config, const FrameResult& f
   row.frame_ms_high = frame.range.high;
   row.fps = frame.timing.fps;
   row.dram_bytes = frame.timing.dram_bytes;
+  row.energy_mj = frame.timing.energy.mj.total();
+  row.energy_mj_low = frame.timing.energy.low_mj;
+  row.energy_mj_high = frame.timing.energy.high_mj;
   row.passes = pass_costs(frame.timing);
   for (const sim::PassCounters& pass : frame.output.passes) {
     for (const sim::DrawCounters& d : pass.draws) {

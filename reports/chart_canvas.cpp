@@ -10,6 +10,7 @@
 #include <vtkNew.h>
 #include <vtkPen.h>
 #include <vtkPlot.h>
+#include <vtkPlotPoints.h>
 #include <vtkPointData.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
@@ -19,6 +20,8 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <vector>
@@ -98,6 +101,53 @@ void add_vertical_line(vtkChartXY* chart, double at, double y_lo, double y_hi,
   line->SetColor(colour[0], colour[1], colour[2], 255);
   line->SetWidth(3.0);
   line->GetPen()->SetLineType(vtkPen::DASH_LINE);
+}
+
+vtkPlotPoints* add_series(vtkChartXY* chart, const std::string& name, const std::vector<double>& x,
+                          const std::vector<double>& y, const Rgb& colour, int line_type) {
+  if (x.size() < 2) line_type = vtkPen::NO_PEN;
+  vtkNew<vtkTable> table;
+  table->AddColumn(make_column("x", x));
+  table->AddColumn(make_column(name, y));
+  auto* plot = vtkPlotPoints::SafeDownCast(
+      chart->AddPlot(line_type == vtkPen::NO_PEN ? vtkChart::POINTS : vtkChart::LINE));
+  plot->SetInputData(table, 0, 1);
+  plot->SetColor(colour[0], colour[1], colour[2], 255);
+  plot->SetMarkerStyle(vtkPlotPoints::CIRCLE);
+  plot->SetMarkerSize(10.0);
+  plot->SetWidth(2.5);
+  plot->GetPen()->SetLineType(line_type);
+  return plot;
+}
+
+void add_range_bar(vtkChartXY* chart, const std::string& legend, double x_lo, double x_hi, double y,
+                   bool in_legend) {
+  vtkPlotPoints* bar =
+      add_series(chart, legend, {x_lo, x_hi}, {y, y}, {150, 150, 150}, vtkPen::SOLID_LINE);
+  bar->SetColor(150, 150, 150, 140);  // light: the ranges overlap and must not hide the points
+  bar->SetMarkerStyle(vtkPlotPoints::PLUS);
+  bar->SetMarkerSize(8.0);
+  bar->SetWidth(1.0);
+  bar->SetLegendVisibility(in_legend);
+}
+
+AxisRange cost_axis_range(double lo, double hi, double pad) {
+  if (hi > 10.0 * lo && lo > 0.0) return {lo / 1.15, hi * 1.15, true};
+  AxisRange r{std::max(0.0, lo - 0.06 * (hi - lo) - pad), hi + 0.06 * (hi - lo) + pad, false};
+  if (r.hi <= r.lo) r.hi = r.lo + 1.0;  // all values equal, and no pad: VTK needs a span
+  return r;
+}
+
+AxisRange quality_axis_range(double lo, double hi, bool higher_is_better) {
+  const double min_span = 0.10 * std::max(std::abs(lo), std::abs(hi));
+  const double span = std::max(1.16 * (hi - lo), std::max(min_span, 1e-6));
+  const double mid = (lo + hi) / 2.0;
+  AxisRange r{mid - span / 2.0, mid + span / 2.0, false};
+  if (!higher_is_better && r.lo < 0.0) {  // an error is never negative
+    r.hi -= r.lo;
+    r.lo = 0.0;
+  }
+  return r;
 }
 
 void place_legend_outside(vtkChartXY* chart, const ChartOptions& options) {

@@ -17,6 +17,7 @@ class vtkAxis;
 class vtkChart;
 class vtkChartXY;
 class vtkContextView;
+class vtkPlotPoints;
 
 namespace skinsim::reports {
 
@@ -39,6 +40,34 @@ void set_ticks(vtkAxis* axis, const std::vector<double>& positions,
 // A vertical line x = at spanning [y_lo, y_hi] with the given legend text, added to `chart`.
 void add_vertical_line(vtkChartXY* chart, double at, double y_lo, double y_hi,
                        const std::string& legend, const Rgb& colour);
+
+// A line-with-markers plot of (x, y) named `name` (its legend text), circles of 10 px; a
+// single point is a marker only (VTK refuses to draw a line through fewer than two points).
+// `line_type` is a vtkPen line type (vtkPen::NO_PEN: markers only).
+vtkPlotPoints* add_series(vtkChartXY* chart, const std::string& name, const std::vector<double>& x,
+                          const std::vector<double>& y, const Rgb& colour, int line_type);
+
+// A light grey horizontal bar from x_lo to x_hi at height y (a value's range), with `legend`
+// shown only if `in_legend` (so that many bars take one legend entry).
+void add_range_bar(vtkChartXY* chart, const std::string& legend, double x_lo, double x_hi, double y,
+                   bool in_legend);
+
+struct AxisRange {
+  double lo = 0.0;
+  double hi = 1.0;
+  bool log = false;
+};
+
+// An axis of a cost (ms, mJ) whose values span [lo, hi]: log scale when they span more than
+// 10x, so cheap candidates do not collapse into one blob next to an expensive technique; else
+// linear with a margin of 6% of the span plus `pad` (in the axis's unit), never below 0.
+AxisRange cost_axis_range(double lo, double hi, double pad);
+
+// An axis of a quality metric whose values span [lo, hi]: at least 10% of the largest value,
+// centred on the data, so differences of a fraction of a percent (frames 60 dB apart) stay
+// flat instead of filling the chart (the charts mark which differences are visible); never
+// below 0 for an error (lower is better).
+AxisRange quality_axis_range(double lo, double hi, bool higher_is_better);
 
 // The chart's legend to the right of the plot area, never over the data (VTK reserves a
 // border for a legend that is not inline).

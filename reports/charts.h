@@ -70,6 +70,22 @@ ChartFiles write_tile_bottleneck_map(const TileHeatmap& heatmap, const std::stri
 ChartFiles write_dram_by_cause_chart(const ConfigResult& row, const std::string& path_stem,
                                      const ChartOptions& options = {});
 
+// The quality metric a chart plots on its y axis.
+struct QualityAxis {
+  std::string metric = "flip_skin";  // key of ConfigResult::quality
+  bool higher_is_better = false;
+  std::string label;  // the axis title
+};
+
+// Dynamic energy per frame (x, mJ) vs quality: each group's configurations (a device,
+// resolution, light and framing: ConfigResult::group) in a colour of their own with the
+// group's Pareto front of energy vs quality dotted through them, each energy's range (the
+// profile's energy figures at their minima and maxima) as a grey bar, configurations over the
+// frame budget crossed, and each group's recommended configuration (chosen by frame time and
+// quality, recommendation.h) as a diamond. Throws ReportError if no row has the metric.
+ChartFiles write_energy_chart(const SweepTable& table, const QualityAxis& quality,
+                              const std::string& path_stem, const ChartOptions& options = {});
+
 // The "33.3 ms (30 fps)" text used for the budget line.
 std::string budget_label(double budget_ms);
 

@@ -69,7 +69,8 @@ std::vector<std::string> sweep_csv_columns(const SweepTable& table) {
   const Columns c = collect_columns(table);
   std::vector<std::string> cols = {"id", "label"};
   cols.insert(cols.end(), c.knobs.begin(), c.knobs.end());
-  cols.insert(cols.end(), {"frame_ms", "frame_ms_low", "frame_ms_high", "fps", "dram_bytes"});
+  cols.insert(cols.end(), {"frame_ms", "frame_ms_low", "frame_ms_high", "fps", "dram_bytes",
+                           "energy_mj", "energy_mj_low", "energy_mj_high"});
   for (const std::string& p : c.passes) {
     cols.push_back(p + ".ms");
     cols.push_back(p + ".bottleneck");
@@ -98,7 +99,8 @@ std::string sweep_csv(const SweepTable& table) {
     std::vector<std::string> cells = {r.id, r.label};
     for (const std::string& k : c.knobs) cells.push_back(knob_value(r, k));
     cells.insert(cells.end(), {number(r.frame_ms), number(r.frame_ms_low), number(r.frame_ms_high),
-                               number(r.fps), number(r.dram_bytes)});
+                               number(r.fps), number(r.dram_bytes), number(r.energy_mj),
+                               number(r.energy_mj_low), number(r.energy_mj_high)});
     for (const std::string& name : c.passes) {
       auto it = std::find_if(passes.begin(), passes.end(),
                              [&](const PassCost& p) { return p.name == name; });

@@ -8,8 +8,9 @@
 
 namespace skinsim::reports {
 
-// Column names, in order: id, label, every knob (sorted by name), frame_ms, fps, dram_bytes,
-// then per pass (in first-appearance order over the rows; same-named passes of a row merged as
+// Column names, in order: id, label, every knob (sorted by name), frame_ms (and its _low,
+// _high range), fps, dram_bytes, energy_mj (mJ per frame, and its _low, _high range), then per
+// pass (in first-appearance order over the rows; same-named passes of a row merged as
 // merged_passes does) "<pass>.ms" and "<pass>.bottleneck",
 // then every quality metric (sorted by name). Throws ReportError if two columns collide.
 std::vector<std::string> sweep_csv_columns(const SweepTable& table);

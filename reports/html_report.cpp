@@ -44,6 +44,9 @@ std::string link(const std::string& path) {
 std::string ms(double v) {
   return fmt::format("{:.2f}", v);
 }
+std::string mj(double v) {
+  return fmt::format("{:.3f}", v);
+}
 std::string metric_text(double v) {
   return fmt::format("{:.4g}", v);
 }
@@ -158,7 +161,9 @@ std::string recommendation_section(const SweepTable& t, const ReportOptions& o,
   h += "<p><i>Frame-time ranges</i> (low to high) are the cost model re-evaluated with every "
        "uncertain device figure at the end of its plausible range that makes the frame faster, "
        "or slower, all at once; figures that change what the emulator counts (texture cache, "
-       "tile size) would need a re-render and are not in the range.</p>\n</div>\n";
+       "tile size) would need a re-render and are not in the range. <i>Energy</i> is the "
+       "dynamic energy of the frame (docs/cost-model.md); its range has every energy figure of "
+       "the device profile at its minimum, then at its maximum.</p>\n</div>\n";
   return h;
 }
 
@@ -269,7 +274,8 @@ std::string table_section(const SweepTable& t, const ReportOptions& o,
        "reference, and from the best configuration of its own technique in its group "
        "(<i>finest</i>): the knob's cost in quality, apart from what the technique "
        "approximates.</p>\n<div class=\"wide\"><table>\n<tr><th>configuration</th>";
-  h += "<th>frame ms</th><th>range ms</th><th>" + esc(o.quality_metric) +
+  h += "<th>frame ms</th><th>range ms</th><th>mJ</th><th>range mJ</th><th>" +
+       esc(o.quality_metric) +
        "</th><th>visible vs reference</th><th>FLIP vs finest</th><th>visible vs finest</th>";
   for (const std::string& k : varying) h += "<th>" + esc(k) + "</th>";
   h += "<th>fps</th><th>bottleneck</th><th>DRAM MB</th>";
@@ -284,7 +290,8 @@ std::string table_section(const SweepTable& t, const ReportOptions& o,
     h += std::string("<tr") + cls + "><td class=\"text\">" + esc(name_of(r)) + "</td>";
     const auto quality = r.quality.find(o.quality_metric);
     h += "<td>" + ms(r.frame_ms) + "</td><td>" + ms(r.frame_ms_low) + "&ndash;" +
-         ms(r.frame_ms_high) + "</td><td>" +
+         ms(r.frame_ms_high) + "</td><td>" + mj(r.energy_mj) + "</td><td>" + mj(r.energy_mj_low) +
+         "&ndash;" + mj(r.energy_mj_high) + "</td><td>" +
          (quality == r.quality.end() ? std::string("-") : metric_text(quality->second)) +
          "</td><td class=\"text\">" +
          (r.reference_image.empty() ? "-" : yes_no(r.visible_vs_reference)) + "</td>";

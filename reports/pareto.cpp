@@ -15,11 +15,11 @@ double goodness(const ConfigResult& r, const std::string& metric, bool higher_is
 }
 
 bool dominates(const ConfigResult& a, const ConfigResult& b, const std::string& metric,
-               bool higher_is_better) {
+               bool higher_is_better, double ConfigResult::*cost) {
   const double ga = goodness(a, metric, higher_is_better);
   const double gb = goodness(b, metric, higher_is_better);
-  const bool no_worse = a.frame_ms <= b.frame_ms && ga >= gb;
-  const bool better = a.frame_ms < b.frame_ms || ga > gb;
+  const bool no_worse = a.*cost <= b.*cost && ga >= gb;
+  const bool better = a.*cost < b.*cost || ga > gb;
   return no_worse && better;
 }
 
@@ -31,7 +31,8 @@ double normalise(double v, double lo, double hi) {
 }  // namespace
 
 std::vector<std::size_t> pareto_front(const std::vector<ConfigResult>& rows,
-                                      const std::string& metric, bool higher_is_better) {
+                                      const std::string& metric, bool higher_is_better,
+                                      double ConfigResult::*cost) {
   std::vector<std::size_t> with_metric;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     if (rows[i].quality.count(metric)) with_metric.push_back(i);
@@ -39,13 +40,12 @@ std::vector<std::size_t> pareto_front(const std::vector<ConfigResult>& rows,
   std::vector<std::size_t> front;
   for (std::size_t i : with_metric) {
     const bool dominated = std::any_of(with_metric.begin(), with_metric.end(), [&](std::size_t j) {
-      return dominates(rows[j], rows[i], metric, higher_is_better);
+      return dominates(rows[j], rows[i], metric, higher_is_better, cost);
     });
     if (!dominated) front.push_back(i);
   }
-  std::stable_sort(front.begin(), front.end(), [&](std::size_t a, std::size_t b) {
-    return rows[a].frame_ms < rows[b].frame_ms;
-  });
+  std::stable_sort(front.begin(), front.end(),
+                   [&](std::size_t a, std::size_t b) { return rows[a].*cost < rows[b].*cost; });
   return front;
 }
 

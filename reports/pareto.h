@@ -11,12 +11,13 @@
 
 namespace skinsim::reports {
 
-// Indices into `rows` of the configurations no other row beats on both frame time (lower is
-// better) and quality[metric] (direction given by higher_is_better); a row dominated by
-// another has both no better and one strictly worse. Rows without the metric are left out.
-// Sorted by frame_ms ascending (ties: by index).
+// Indices into `rows` of the configurations no other row beats on both cost (frame time, or
+// another lower-is-better member such as energy_mj) and quality[metric] (direction given by
+// higher_is_better); a row dominated by another has both no better and one strictly worse.
+// Rows without the metric are left out. Sorted by cost ascending (ties: by index).
 std::vector<std::size_t> pareto_front(const std::vector<ConfigResult>& rows,
-                                      const std::string& metric, bool higher_is_better);
+                                      const std::string& metric, bool higher_is_better,
+                                      double ConfigResult::*cost = &ConfigResult::frame_ms);
 
 // The recommended configuration: among Pareto-front rows within budget_ms, the one nearest
 // the utopia point (cheapest frame time AND best quality of those rows) after normalising

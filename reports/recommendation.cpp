@@ -12,8 +12,11 @@ namespace skinsim::reports {
 
 namespace {
 
-std::string ms_range(const ConfigResult& r) {
-  return fmt::format("{:.2f} ms ({:.2f} to {:.2f})", r.frame_ms, r.frame_ms_low, r.frame_ms_high);
+// Time and energy per frame, each with its modelled range.
+std::string cost_range(const ConfigResult& r) {
+  return fmt::format("{:.2f} ms ({:.2f} to {:.2f}) and {:.3f} mJ ({:.3f} to {:.3f}) per frame",
+                     r.frame_ms, r.frame_ms_low, r.frame_ms_high, r.energy_mj, r.energy_mj_low,
+                     r.energy_mj_high);
 }
 
 // A group's rows with the metric, and their indices into the table's rows.
@@ -71,18 +74,18 @@ std::string verdict_for(const std::vector<ConfigResult>& rows, const Recommendat
   const ConfigResult& b = rows[*rec.best];
   if (*rec.chosen == *rec.best) {
     return fmt::format("{} at {}: the best quality of the group, and within the budget", c.id,
-                       ms_range(c));
+                       cost_range(c));
   }
   if (rec.indistinguishable) {
     return fmt::format(
         "{} at {}: not visibly different from the best, {} at {:.2f} ms ({}); it saves "
         "{:.2f} ms",
-        c.id, ms_range(c), b.id, b.frame_ms, against_best(c), b.frame_ms - c.frame_ms);
+        c.id, cost_range(c), b.id, b.frame_ms, against_best(c), b.frame_ms - c.frame_ms);
   }
   return fmt::format(
       "{} at {}: every configuration within the budget differs visibly from the best, {} at "
       "{:.2f} ms ({}); this is the knee of the trade-off among them",
-      c.id, ms_range(c), b.id, b.frame_ms, against_best(c));
+      c.id, cost_range(c), b.id, b.frame_ms, against_best(c));
 }
 
 std::string range_note_for(const std::vector<ConfigResult>& rows, const Recommendation& rec,
@@ -105,7 +108,7 @@ std::string range_note_for(const std::vector<ConfigResult>& rows, const Recommen
   return note + fmt::format(
                     " The cheapest that looks the same as the best and fits even at its slow end "
                     "is {} at {}.",
-                    s.id, ms_range(s));
+                    s.id, cost_range(s));
 }
 
 std::string runner_up_note_for(const std::vector<ConfigResult>& rows, const Recommendation& rec,
@@ -124,7 +127,7 @@ std::string runner_up_note_for(const std::vector<ConfigResult>& rows, const Reco
     why = fmt::format("it {}, and is further from the knee of the trade-off ({})", cost,
                       against_best(u));
   }
-  return fmt::format("Runner-up: {} at {}; {}.", u.id, ms_range(u), why);
+  return fmt::format("Runner-up: {} at {}; {}.", u.id, cost_range(u), why);
 }
 
 }  // namespace

@@ -11,7 +11,9 @@
 // The rule uses the point estimate (frame_ms); the recommendation then says whether the
 // chosen configuration's modelled range (frame_ms_low..high) straddles the budget, names the
 // configuration the same rule picks with the slow end of each range instead, and names the
-// runner-up (the rule's pick once the chosen one is set aside) and why it lost.
+// runner-up (the rule's pick once the chosen one is set aside) and why it lost. Energy does
+// not enter the rule (a frame within the budget is the goal); the sentences state each named
+// configuration's mJ per frame and its range beside its ms.
 #pragma once
 
 #include <nlohmann/json_fwd.hpp>

@@ -61,6 +61,18 @@ std::vector<ReportFigure> draw_report_charts(const SweepTable& table, const std:
     figures.push_back(relative(
         write_tradeoff_chart(table, spec, stem + "tradeoff_by_" + series, options.chart), caption));
   }
+  if (std::any_of(table.rows.begin(), table.rows.end(), [&](const ConfigResult& r) {
+        return r.quality.count(options.quality_metric) > 0;
+      })) {
+    figures.push_back(relative(
+        write_energy_chart(table,
+                           {options.quality_metric, options.higher_is_better, options.metric_label},
+                           stem + "energy_vs_quality", options.chart),
+        "Dynamic energy per frame vs " + options.metric_label +
+            ", one colour per device group; dotted: each group's Pareto front of energy vs "
+            "quality; grey bars: energy range; crosses: over the frame budget; diamond: "
+            "recommended."));
+  }
   figures.push_back(relative(
       write_pass_stack_chart(table, stem + "pass_times", options.chart),
       "Modelled time of each pass per configuration; the unit in parentheses is the bottleneck "

@@ -15,9 +15,10 @@ struct ReportFigure {
 };
 
 // Draws the charts that fit the data (trade-offs for each grouping whose series knob has two or
-// more values, or one value and an order knob with two or more,
-// per-pass bars, tile maps if the sweep has a heat map, DRAM by cause for `dram_row` if it has
-// causes) into `dir`. Throws ReportError if charts cannot be drawn (e.g. no X display).
+// more values, or one value and an order knob with two or more, energy vs quality if a row has
+// the quality metric, per-pass bars, tile maps if the sweep has a heat map, DRAM by cause for
+// `dram_row` if it has causes) into `dir`. Throws ReportError if charts cannot be drawn (e.g. no X
+// display).
 std::vector<ReportFigure> draw_report_charts(const SweepTable& table, const std::string& dir,
                                              const ReportOptions& options,
                                              const ConfigResult* dram_row);

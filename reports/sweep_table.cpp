@@ -158,6 +158,9 @@ ConfigResult parse_config(const json& j, const std::string& where) {
   c.frame_ms_high = req_number(j, where, "frame_ms_high");
   c.fps = req_number(j, where, "fps");
   c.dram_bytes = req_number(j, where, "dram_bytes");
+  c.energy_mj = req_number(j, where, "energy_mj");
+  c.energy_mj_low = req_number(j, where, "energy_mj_low");
+  c.energy_mj_high = req_number(j, where, "energy_mj_high");
   if (j.contains("passes")) {
     const std::string p = field_path(where, "passes");
     const json& passes = array_at(j["passes"], p);
@@ -291,10 +294,27 @@ SweepTable parse_table(const json& j) {
   return t;
 }
 
+// A modelled amount: a time in ms, an energy in mJ.
+void check_amount(double v, const std::string& what, const std::string& where) {
+  if (!std::isfinite(v) || v < 0.0) {
+    throw ReportError(where + ": must be a finite, non-negative " + what + ", got " +
+                      std::to_string(v));
+  }
+}
+
 void check_time(double ms, const std::string& where) {
-  if (!std::isfinite(ms) || ms < 0.0) {
-    throw ReportError(where + ": must be a finite, non-negative time in ms, got " +
-                      std::to_string(ms));
+  check_amount(ms, "time in ms", where);
+}
+
+// A row's estimate `name` and its range `name`_low..`name`_high.
+void check_ranged(double low, double value, double high, const std::string& name,
+                  const std::string& what, const std::string& where) {
+  check_amount(value, what, where + "." + name);
+  check_amount(low, what, where + "." + name + "_low");
+  check_amount(high, what, where + "." + name + "_high");
+  if (!(low <= value && value <= high)) {
+    throw ReportError(where + ": " + name + "_low <= " + name + " <= " + name +
+                      "_high does not hold");
   }
 }
 
@@ -348,6 +368,9 @@ void to_json(json& j, const ConfigResult& v) {
            {"frame_ms_high", v.frame_ms_high},
            {"fps", v.fps},
            {"dram_bytes", v.dram_bytes},
+           {"energy_mj", v.energy_mj},
+           {"energy_mj_low", v.energy_mj_low},
+           {"energy_mj_high", v.energy_mj_high},
            {"passes", v.passes},
            {"programs", v.programs},
            {"quality", v.quality},
@@ -462,12 +485,9 @@ void validate_sweep_table(const SweepTable& t) {
     const std::string where = index_path("rows", i);
     if (r.id.empty()) throw ReportError(where + ".id: must not be empty");
     if (!ids.insert(r.id).second) throw ReportError(where + ".id: duplicate id '" + r.id + "'");
-    check_time(r.frame_ms, where + ".frame_ms");
-    check_time(r.frame_ms_low, where + ".frame_ms_low");
-    check_time(r.frame_ms_high, where + ".frame_ms_high");
-    if (!(r.frame_ms_low <= r.frame_ms && r.frame_ms <= r.frame_ms_high)) {
-      throw ReportError(where + ": frame_ms_low <= frame_ms <= frame_ms_high does not hold");
-    }
+    check_ranged(r.frame_ms_low, r.frame_ms, r.frame_ms_high, "frame_ms", "time in ms", where);
+    check_ranged(r.energy_mj_low, r.energy_mj, r.energy_mj_high, "energy_mj", "energy in mJ",
+                 where);
     check_finite(r.fps, where + ".fps");
     check_finite(r.dram_bytes, where + ".dram_bytes");
     for (const auto& [name, value] : r.quality) check_finite(value, where + ".quality." + name);

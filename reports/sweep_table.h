@@ -63,6 +63,11 @@ struct ConfigResult {
   double frame_ms_high = 0.0;
   double fps = 0.0;
   double dram_bytes = 0.0;  // per frame
+  // Dynamic energy per frame, mJ (gpu_model::FrameEnergy), and with every energy figure of
+  // the device profile at its range minimum / maximum.
+  double energy_mj = 0.0;
+  double energy_mj_low = 0.0;
+  double energy_mj_high = 0.0;
   std::vector<PassCost> passes;
   std::vector<ProgramCost> programs;  // fragment programs with shaded fragments
   // Image quality against the reference: psnr_skin, ssim_skin, flip_skin, psnr_frame, ...

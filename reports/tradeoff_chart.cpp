@@ -6,7 +6,6 @@
 #include <vtkContextView.h>
 #include <vtkNew.h>
 #include <vtkPen.h>
-#include <vtkPlotLine.h>
 #include <vtkPlotPoints.h>
 #include <vtkTable.h>
 
@@ -38,25 +37,6 @@ std::string default_title(const TradeoffSpec& spec) {
   std::string title = "Frame time vs " + spec.metric + ": one line per " + spec.series_knob;
   if (!spec.order_knob.empty()) title += " across " + spec.order_knob;
   return title;
-}
-
-// Adds a line-with-markers plot of (x, y) named `name`; a single point is a marker only
-// (VTK refuses to draw a line through fewer than two points).
-vtkPlotPoints* add_series(vtkChartXY* chart, const std::string& name, const std::vector<double>& x,
-                          const std::vector<double>& y, const Rgb& colour, int line_type) {
-  if (x.size() < 2) line_type = vtkPen::NO_PEN;
-  vtkNew<vtkTable> table;
-  table->AddColumn(make_column("frame_ms", x));
-  table->AddColumn(make_column(name, y));
-  auto* plot = vtkPlotPoints::SafeDownCast(
-      chart->AddPlot(line_type == vtkPen::NO_PEN ? vtkChart::POINTS : vtkChart::LINE));
-  plot->SetInputData(table, 0, 1);
-  plot->SetColor(colour[0], colour[1], colour[2], 255);
-  plot->SetMarkerStyle(vtkPlotPoints::CIRCLE);
-  plot->SetMarkerSize(10.0);
-  plot->SetWidth(2.5);
-  plot->GetPen()->SetLineType(line_type);
-  return plot;
 }
 
 // Rows of the group that do not differ visibly from its best configuration (ConfigResult::
@@ -111,23 +91,12 @@ ChartFiles write_tradeoff_chart(const SweepTable& table, const TradeoffSpec& spe
     x_lo = std::min(x_lo, r.frame_ms_low);
     x_hi = std::max(x_hi, r.frame_ms_high);
   }
-  // Log time axis when the times span more than 10x, so cheap candidates do not collapse
-  // into one blob next to an expensive technique.
-  const bool log_x = x_hi > 10.0 * x_lo && x_lo > 0.0;
-  const double x_min = log_x ? x_lo / 1.15 : std::max(0.0, x_lo - 0.06 * (x_hi - x_lo) - 0.5);
-  const double x_max = log_x ? x_hi * 1.15 : x_hi + 0.06 * (x_hi - x_lo) + 0.5;
-  // The axis spans at least 10% of the largest value, centred on the data: differences of a
-  // fraction of a percent (frames 60 dB apart) stay flat instead of filling the chart, and the
-  // band and crosses below say which differences are visible.
-  const double min_span = 0.10 * std::max(std::abs(y_lo), std::abs(y_hi));
-  const double span = std::max(1.16 * (y_hi - y_lo), std::max(min_span, 1e-6));
-  const double mid = (y_lo + y_hi) / 2.0;
-  y_lo = mid - span / 2.0;
-  y_hi = mid + span / 2.0;
-  if (!spec.higher_is_better && y_lo < 0.0) {  // an error is never negative
-    y_hi -= y_lo;
-    y_lo = 0.0;
-  }
+  const AxisRange x_range = cost_axis_range(x_lo, x_hi, 0.5);
+  const bool log_x = x_range.log;
+  const double x_min = x_range.lo, x_max = x_range.hi;
+  const AxisRange y_range = quality_axis_range(y_lo, y_hi, spec.higher_is_better);
+  y_lo = y_range.lo;
+  y_hi = y_range.hi;
 
   // Behind the lines: per group, the band of configurations that do not differ visibly from
   // the group's best.
@@ -155,14 +124,8 @@ ChartFiles write_tradeoff_chart(const SweepTable& table, const TradeoffSpec& spe
   bool first_range = true;
   for (const ConfigResult& r : rows) {
     const double y = r.quality.at(spec.metric);
-    vtkPlotPoints* bar =
-        add_series(chart, "frame ms range (profile's uncertain figures)",
-                   {r.frame_ms_low, r.frame_ms_high}, {y, y}, {150, 150, 150}, vtkPen::SOLID_LINE);
-    bar->SetColor(150, 150, 150, 140);  // light: the ranges overlap and must not hide the points
-    bar->SetMarkerStyle(vtkPlotPoints::PLUS);
-    bar->SetMarkerSize(8.0);
-    bar->SetWidth(1.0);
-    bar->SetLegendVisibility(first_range);
+    add_range_bar(chart, "frame ms range (profile's uncertain figures)", r.frame_ms_low,
+                  r.frame_ms_high, y, first_range);
     first_range = false;
   }
 

@@ -3,7 +3,7 @@
 # one knob (the BRDF LUT size): exit 1, the knob named, counters moved, compare.html and
 # compare.json written, self-contained. A run against itself: exit 0. A missing directory:
 # exit 2 naming it. Two tiny sweeps, one configuration apart: a per-configuration table and
-# the added and removed ones named.
+# the added and removed ones named; one with 4x MSAA: its frame energy among the moved values.
 #
 #   tests/driver/compare_test.sh SKINSIM_EXE WORKDIR
 set -euo pipefail
@@ -63,6 +63,13 @@ grep -q 'only in B: scale0.125_lut8x32_256x192' <<<"$out" || fail "the added con
 grep -q 'only in A: scale0.25_lut8x32_256x192' <<<"$out" || fail "the removed configuration is not named: $out"
 grep -q '^  scale0.5_lut8x32_256x192 .*identical pixels' <<<"$out" ||
   fail "the configuration in both is not in the table: $out"
+
+# The same configuration with 4x MSAA: its frame energy moves, named as in a run's result.json.
+"$skinsim" sweep "${sweep[@]}" --scales 0.5 --set msaa=4 --out sc >sweep_c.log 2>&1 || fail "sweep c: $(tail -n 3 sweep_c.log)"
+compare sa sc --out scmp4
+((status == 1)) || fail "sweeps differing by msaa: exit $status, expected 1: $out"
+python3 -c 'import json, sys; j = json.load(open(sys.argv[1])); sys.exit("energy.frame_mj" not in [m["name"] for m in j["configs"][0]["moved"]])' \
+  scmp4/compare.json || fail "a sweep's frame energy is not compared: $(head -c 400 scmp4/compare.json)"
 
 compare sa a
 ((status == 2)) || fail "a sweep against a run: exit $status, expected 2: $out"

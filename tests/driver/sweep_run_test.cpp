@@ -68,6 +68,9 @@ TEST(SweepRun, WritesOneRowPerConfigurationWithCostAndQuality) {
     EXPECT_GT(r.frame_ms, 0.0);
     EXPECT_NEAR(r.fps, 1000.0 / r.frame_ms, 1e-6 * r.fps);
     EXPECT_GT(r.dram_bytes, 0.0);
+    EXPECT_GT(r.energy_mj, 0.0);  // the frame's dynamic energy and its range
+    EXPECT_LT(r.energy_mj_low, r.energy_mj);
+    EXPECT_GT(r.energy_mj_high, r.energy_mj);
     EXPECT_EQ(reports::knob_value(r, "technique"), "mobile");
     EXPECT_EQ(reports::knob_value(r, "lut"), "32x128");
     ASSERT_FALSE(r.passes.empty());
@@ -103,8 +106,9 @@ TEST(SweepRun, WritesOneRowPerConfigurationWithCostAndQuality) {
 
   const std::string csv = read_file(dir / "results.csv");
   const std::string header = csv.substr(0, csv.find('\n'));
-  for (const char* column : {"id", "scale", "lut", "device", "frame_ms", "fps", "dram_bytes",
-                             "skin.ms", "skin.bottleneck", "flip_skin", "psnr_skin"}) {
+  for (const char* column :
+       {"id", "scale", "lut", "device", "frame_ms", "fps", "dram_bytes", "energy_mj_low", "skin.ms",
+        "skin.bottleneck", "flip_skin", "psnr_skin"}) {
     EXPECT_NE(header.find(column), std::string::npos) << column << " in " << header;
   }
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3);  // header + 2 rows

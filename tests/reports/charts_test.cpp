@@ -141,6 +141,28 @@ TEST_F(ChartsTest, TradeoffChartWithoutTheMetricThrows) {
                ReportError);
 }
 
+TEST_F(ChartsTest, EnergyChartPerDeviceGroup) {
+  SweepTable sweep = synthetic_sweep();
+  for (std::size_t i = 0; i < sweep.rows.size(); ++i) {
+    sweep.rows[i].group = i % 2 ? "a15, 2048x1536" : "ipad4, 2048x1536";
+  }
+  const std::string dir = fresh_output_dir();
+  expect_real_chart(write_energy_chart(sweep, {"flip_skin", false, "FLIP (lower is better)"},
+                                       dir + "/energy", options_),
+                    options_);
+  // Every configuration at the same energy (a zero-width axis) still draws.
+  for (ConfigResult& r : sweep.rows) r.energy_mj = r.energy_mj_low = r.energy_mj_high = 0.0;
+  options_.write_svg = false;
+  expect_real_chart(
+      write_energy_chart(sweep, {"flip_skin", false, "FLIP"}, dir + "/flat", options_), options_);
+}
+
+TEST_F(ChartsTest, EnergyChartWithoutTheMetricThrows) {
+  EXPECT_THROW(write_energy_chart(synthetic_sweep(), {"no_such_metric", false, "x"},
+                                  fresh_output_dir() + "/x", options_),
+               ReportError);
+}
+
 TEST_F(ChartsTest, PassStackChart) {
   const std::string dir = fresh_output_dir();
   const ChartFiles files = write_pass_stack_chart(synthetic_sweep(), dir + "/passes", options_);

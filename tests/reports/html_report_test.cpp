@@ -163,6 +163,10 @@ TEST(HtmlReport, StatesTheRecommendationWithItsRangeAndRule) {
   EXPECT_NE(text.find(fmt::format("{:.2f} to {:.2f}", chosen.frame_ms_low, chosen.frame_ms_high)),
             std::string::npos)
       << text;
+  EXPECT_NE(text.find(fmt::format("{:.3f} mJ ({:.3f} to {:.3f})", chosen.energy_mj,
+                                  chosen.energy_mj_low, chosen.energy_mj_high)),
+            std::string::npos)
+      << text;
   EXPECT_NE(text.find("How it is chosen"), std::string::npos);
 }
 
@@ -300,8 +304,9 @@ TEST(HtmlReport, WithChartsAllLinksResolve) {
   touch_images(sweep, dir);
   const std::string html = read_text(write_report(sweep, dir));
   EXPECT_TRUE(missing_report_links(dir).empty());
-  for (const char* chart : {"tradeoff_by_lut.png", "tradeoff_by_scale.png", "pass_times.png",
-                            "tile_cost.png", "tile_bottleneck.png", "dram_by_cause.png"}) {
+  for (const char* chart :
+       {"tradeoff_by_lut.png", "tradeoff_by_scale.png", "energy_vs_quality.png", "pass_times.png",
+        "tile_cost.png", "tile_bottleneck.png", "dram_by_cause.png"}) {
     EXPECT_TRUE(fs::exists(fs::path(dir) / chart)) << chart;
     EXPECT_NE(html.find(std::string("src=\"") + chart), std::string::npos) << chart;
   }

@@ -16,6 +16,9 @@ ConfigResult row(const std::string& id, const std::string& group, double ms, dou
   r.frame_ms = ms;
   r.frame_ms_low = ms * 0.9;
   r.frame_ms_high = ms * 1.3;
+  r.energy_mj = ms / 8.0;  // 125 mW over the frame
+  r.energy_mj_low = r.energy_mj * 0.5;
+  r.energy_mj_high = r.energy_mj * 2.0;
   r.quality["flip_skin"] = flip;
   r.vs_best = FrameComparison{best, id == best ? 0.0 : 0.01, 0.05, visible_vs_best ? 500.0 : 3.0,
                               visible_vs_best};
@@ -36,7 +39,9 @@ TEST(Recommendation, AnInvisibleDifferenceIsATieAndTheCheaperWins) {
   EXPECT_NE(r[0].verdict.find("not visibly different from the best, fine"), std::string::npos)
       << r[0].verdict;
   EXPECT_NE(r[0].verdict.find("saves 13.00 ms"), std::string::npos) << r[0].verdict;
-  EXPECT_NE(r[0].verdict.find("12.00 ms (10.80 to 15.60)"), std::string::npos) << r[0].verdict;
+  EXPECT_NE(r[0].verdict.find("12.00 ms (10.80 to 15.60) and 1.500 mJ (0.750 to 3.000) per frame"),
+            std::string::npos)
+      << r[0].verdict;
 }
 
 TEST(Recommendation, DevicesAreNeverComparedAcrossGroups) {
@@ -140,8 +145,9 @@ TEST(Recommendation, NamesTheRunnerUpAndWhyItLost) {
   std::vector<Recommendation> r = recommend(t, "flip_skin");
   EXPECT_EQ(r[0].chosen, 1u);
   EXPECT_EQ(r[0].runner_up, 0u);  // the next tie
-  EXPECT_NE(r[0].runner_up_note.find("Runner-up: best at 25.00 ms (20.00 to 28.00); it also "
-                                     "looks the same as the best, but costs 5.00 ms more"),
+  EXPECT_NE(r[0].runner_up_note.find("Runner-up: best at 25.00 ms (20.00 to 28.00) and 3.125 mJ "
+                                     "(1.562 to 6.250) per frame; it also looks the same as the "
+                                     "best, but costs 5.00 ms more"),
             std::string::npos)
       << r[0].runner_up_note;
   // With the best out of budget, the only other candidate differs visibly.

@@ -41,6 +41,7 @@ TEST(SweepJson, RoundTripIsExact) {
   EXPECT_EQ(back.rows[5].passes[3].dram_bytes_by_cause,
             sweep.rows[5].passes[3].dram_bytes_by_cause);
   EXPECT_DOUBLE_EQ(back.rows[5].frame_ms, sweep.rows[5].frame_ms);
+  EXPECT_DOUBLE_EQ(back.rows[5].energy_mj_high, sweep.rows[5].energy_mj_high);
   EXPECT_DOUBLE_EQ(back.rows[5].passes[3].render_end_ms, sweep.rows[5].passes[3].render_end_ms);
   EXPECT_EQ(back.rows[5].knobs.at("lut"), "32x128");
   ASSERT_EQ(back.rows[2].programs.size(), 1u);
@@ -94,6 +95,16 @@ TEST(SweepJson, ErrorsNameTheField) {
   j = testing::synthetic_sweep();
   j["rows"][4]["error_image"] = "../../etc/passwd";
   EXPECT_NE(error_of(j).find("rows[4].error_image"), std::string::npos) << error_of(j);
+
+  j = testing::synthetic_sweep();
+  j["rows"][3].erase("energy_mj_high");
+  EXPECT_NE(error_of(j).find("rows[3].energy_mj_high: missing"), std::string::npos) << error_of(j);
+
+  j = testing::synthetic_sweep();
+  j["rows"][3]["energy_mj_low"] = 1e9;  // above its estimate
+  EXPECT_NE(error_of(j).find("rows[3]: energy_mj_low <= energy_mj <= energy_mj_high"),
+            std::string::npos)
+      << error_of(j);
 
   j = testing::synthetic_sweep();
   j["rows"][0]["quality"]["flip_skin"] = nullptr;

@@ -51,6 +51,9 @@ inline ConfigResult synthetic_config(double scale, int lut_w, int lut_h) {
   c.fps = 1000.0 / c.frame_ms;
   c.frame_ms_low = 0.9 * c.frame_ms;  // a profile's uncertain figures: -10% / +40%
   c.frame_ms_high = 1.4 * c.frame_ms;
+  c.energy_mj = 0.1e-6 * c.dram_bytes + 0.05 * c.frame_ms;  // 100 pJ/B plus the work
+  c.energy_mj_low = 0.6 * c.energy_mj;
+  c.energy_mj_high = 1.7 * c.energy_mj;
   const double flip = 0.03 + 0.09 * std::pow(1.0 - scale, 1.5) + 0.04 / (1.0 + lut_steps);
   c.quality = {{"flip_skin", flip},
                {"ssim_skin", 1.0 - 1.6 * flip},
