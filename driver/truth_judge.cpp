@@ -235,8 +235,9 @@ std::string truth_source_text(const Truth& truth) {
   if (a["source"] == "file")
     return fmt::format("the file {} (one image)", a["file"].get<std::string>());
   const nlohmann::json& key = a["key"];
-  const std::string settings = fmt::format("{} samples, seeds {} and {}", key["samples"].get<int>(),
-                                           key["seed"].get<int>(), key["second_seed"].get<int>());
+  const std::string settings = fmt::format(
+      "{} samples, seeds {} and {}, {}", key["samples"].get<int>(), key["seed"].get<int>(),
+      key["second_seed"].get<int>(), key["blender"].get<std::string>());
   const std::string kept =
       a.contains("store") ? ", kept as " + a["store"].get<std::string>() : " (the store is off)";
   return a["source"] == "store"

@@ -85,7 +85,8 @@ nlohmann::json judge_against_truth(const quality::Image& test, const Truth& trut
 nlohmann::json truth_noise_floor(const Truth& truth, const quality::Mask* skin);
 
 // Where the truth came from, for the terminal: "the truth store's .../truth_<key>.json (64
-// samples, seeds 1 and 2)", "rendered with Blender Cycles (...)", "the file F (one image)".
+// samples, seeds 1 and 2, Blender 3.4.1)", "rendered with Blender Cycles (...)", "the file F
+// (one image)".
 std::string truth_source_text(const Truth& truth);
 
 // "skin PSNR 30.21 dB, SSIM 0.812, FLIP 0.125, visibly different on 12.3% (810 px)": a

@@ -120,7 +120,7 @@ def test_store():
     for image in ("frame", "reference"):
         if "visible" not in truth[image]["skin"] or image not in p.stdout:
             fail(f"the {image} is not judged against the truth: {truth}")
-    if truth["source"] != "rendered" or "noise floor" not in p.stdout:
+    if truth["source"] != "rendered" or "noise floor" not in p.stdout or "Blender 3.4.1" not in p.stdout:
         fail(f"where the truth came from / its floor is not stated: {truth['source']}\n{p.stdout}")
     (marker,) = glob.glob(f"{WORK}/cache/truths/truth_*.json")
     stem = marker[:-len(".json")]
