@@ -92,6 +92,21 @@ void add_scene_options(CLI::App& cmd, driver::SceneSource& s) {
                  "file's base colour");
 }
 
+void add_truth_choice_options(CLI::App& cmd, driver::TruthChoice& choice) {
+  const auto named = [&choice](const std::string&) { choice.named = true; };
+  // The limits of `skinsim truth --samples` and --seed (app/cmd_truth.cpp).
+  cmd.add_option("--truth-samples", choice.samples,
+                 "With --truth cached: the truth rendered with this many Cycles samples (as "
+                 "`skinsim truth --samples`); only looked up, never rendered")
+      ->check(integer_in(1, 65536))
+      ->each(named);
+  cmd.add_option("--truth-seed", choice.seed,
+                 "With --truth cached: the truth rendered with this seed and the next (as "
+                 "`skinsim truth --seed`); only looked up, never rendered")
+      ->check(integer_in(0, 1 << 30))
+      ->each(named);
+}
+
 KnobAssignment parse_knob_assignment(const std::string& text, const std::string& option) {
   const auto eq = text.find('=');
   if (eq == std::string::npos || eq == 0) {

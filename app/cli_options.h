@@ -5,6 +5,7 @@
 #include <string>
 
 #include "driver/scene_source.h"
+#include "driver/truth_judge.h"
 #include "gpu_model/device_profile.h"
 #include "pipeline/config.h"
 
@@ -22,6 +23,10 @@ void add_scene_options(CLI::App& cmd, driver::SceneSource& source);
 // name; each value goes through the knob's own parser, so the CLI, sweep files and budgets
 // validate identically.
 void add_pipeline_options(CLI::App& cmd, pipeline::PipelineConfig& config);
+
+// --truth-samples and --truth-seed (`skinsim truth`'s --samples and --seed): which cached truth
+// `--truth cached` takes (driver::TruthChoice).
+void add_truth_choice_options(CLI::App& cmd, driver::TruthChoice& choice);
 
 // "knob=value" as --set takes it, split at the first '='; throws UserError naming `option`.
 struct KnobAssignment {

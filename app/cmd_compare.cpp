@@ -30,15 +30,17 @@ struct CompareOptions {
   std::string out;  // none: the terminal table only
   double rel_tol = reports::Tolerances{}.modelled;
   double counter_tol = reports::Tolerances{}.counter;
-  std::string truth;  // --truth: "cached", a file, or none
+  std::string truth;                 // --truth: "cached", a file, or none
+  driver::TruthChoice truth_choice;  // --truth-samples, --truth-seed
 };
 
 // `--truth`: both frames against the truth, printed after the comparison (and into
 // compare.json with --out). Computed first, so a bad truth fails before anything is written.
 nlohmann::json judge_with_truth(const CompareOptions& o) {
+  driver::require_cached_for_choice(o.truth, o.truth_choice);
   if (o.truth.empty()) return nullptr;
   driver::require_truth("--truth", o.truth);
-  return driver::compare_with_truth(o.a, o.b, o.truth);
+  return driver::compare_with_truth(o.a, o.b, o.truth, o.truth_choice);
 }
 
 void print_truth(const nlohmann::json& truth) {
@@ -106,6 +108,7 @@ Command add_compare_command(CLI::App& app) {
       "Also judge both runs' frames against a path-traced truth: `cached` (the one "
       "both were judged with by `run --truth cached`) a linear EXR or PNG of the view, "
       "or a `skinsim truth` directory of it (docs/validation.md); the exit status is unchanged");
+  add_truth_choice_options(*cmd, options->truth_choice);
   cmd->add_option("--rel-tol", options->rel_tol,
                   "Relative tolerance of modelled times, bytes and quality metrics")
       ->check(non_negative_real(1e6))

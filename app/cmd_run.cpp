@@ -45,9 +45,10 @@ struct RunOptions {
   std::string out = "out";
   bool sensitivity = false;
   bool reference = true;
-  std::string truth;     // --truth: "cached", a file, or none
-  std::string sequence;  // --sequence: a preset or a sequence file; empty: one frame
-  int frames = 0;        // --frames, --fps: 0 = the sequence's own
+  std::string truth;                 // --truth: "cached", a file, or none
+  driver::TruthChoice truth_choice;  // --truth-samples, --truth-seed
+  std::string sequence;              // --sequence: a preset or a sequence file; empty: one frame
+  int frames = 0;                    // --frames, --fps: 0 = the sequence's own
   double fps = 0.0;
   bool charts = true;  // a sequence's charts (--no-charts)
 };
@@ -198,6 +199,7 @@ int run(const RunOptions& o) {
   job.reference_store = driver::ReferenceStore::from_environment();
   // A truth file is read before the frame's work, so a wrong one fails at once.
   if (!o.truth.empty()) driver::require_truth("--truth", o.truth);
+  driver::require_cached_for_choice(o.truth, o.truth_choice);
   std::optional<driver::Truth> truth;
   if (!o.truth.empty() && o.truth != driver::kCachedTruth) {
     truth = driver::truth_file("--truth", o.truth, config.width, config.height);
@@ -214,9 +216,9 @@ int run(const RunOptions& o) {
   const driver::FrameResult& result = sequence ? sequence->result.worst : frame_job.frame;
   const pipeline::GpuScene& gpu_scene = sequence ? *sequence->gpu_scene : *frame_job.gpu_scene;
   if (o.truth == driver::kCachedTruth) {
-    truth = driver::cached_truth(gpu_scene, config, o.device.threads, [](const std::string& note) {
-      fmt::print(stderr, "skinsim run: note: {}\n", note);
-    });
+    truth = driver::cached_truth(
+        gpu_scene, config, o.truth_choice, o.device.threads,
+        [](const std::string& note) { fmt::print(stderr, "skinsim run: note: {}\n", note); });
   }
 
   std::vector<std::string> written = {"frame.png"};
@@ -336,6 +338,7 @@ Command add_run_command(CLI::App& app) {
       "(the truth store's, rendered with Blender Cycles when missing), a linear "
       "EXR or PNG of the same view, or a `skinsim truth` directory of it (its samples, its "
       "floor) (docs/validation.md)");
+  add_truth_choice_options(*cmd, options->truth_choice);
   cmd->add_flag("--sensitivity", options->sensitivity,
                 "Also report how frame time moves over each uncertain device figure's range");
   CLI::Option* sequence =

@@ -24,6 +24,7 @@
 #include "driver/sweep_results.h"
 #include "driver/sweep_run.h"
 #include "driver/sweep_spec.h"
+#include "driver/truth_report.h"
 #include "driver/truth_sweep.h"
 #include "gpu_model/profile_loader.h"
 #include "io/atomic_file.h"
@@ -78,7 +79,8 @@ struct SweepOptions {
   std::size_t max_configs = driver::kDefaultMaxConfigs;
   std::string shard;  // "K/N", or empty
   bool merge = false;
-  std::string truth;  // --truth: "cached", a file, or none
+  std::string truth;                 // --truth: "cached", a file, or none
+  driver::TruthChoice truth_choice;  // --truth-samples, --truth-seed
 };
 
 // `--out ""` would write into the current directory, and a file there cannot hold results.
@@ -201,7 +203,7 @@ nlohmann::json judge_with_truth(const SweepOptions& o, const driver::SweepSpec& 
     const scene::Scene scene = driver::load_scene(
         spec.scene, static_cast<float>(resolved.width) / static_cast<float>(resolved.height));
     return driver::cached_truth(
-        pipeline::GpuScene(scene), resolved, o.threads,
+        pipeline::GpuScene(scene), resolved, o.truth_choice, o.threads,
         [](const std::string& note) { fmt::print(stderr, "skinsim sweep: note: {}\n", note); });
   };
   return driver::judge_sweep_with_truth(table, o.out, truth_of);
@@ -219,6 +221,7 @@ void add_truth_to_results(const std::string& out, const nlohmann::json& truth) {
 int run(const SweepOptions& o, const CLI::App& cmd) {
   require_out_dir(o.out);
   if (!o.truth.empty()) driver::require_truth("--truth", o.truth);  // before hours of sweep
+  driver::require_cached_for_choice(o.truth, o.truth_choice);
   const driver::SweepSpec spec = build_spec(o, cmd);
   const std::vector<driver::SweepConfig> configs = driver::expand_sweep(spec, o.max_configs);
 
@@ -312,7 +315,10 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
   if (!o.truth.empty()) {
     truth = judge_with_truth(o, spec, configs, run_options.data_dir, table);
   }
-  const driver::SweepReportOutcome report = driver::write_sweep_report(table, o.out, o.charts);
+  const driver::ReportTruth report_truth{driver::truth_report_section(table, truth),
+                                         driver::truth_report_images(truth)};
+  const driver::SweepReportOutcome report =
+      driver::write_sweep_report(table, o.out, o.charts, report_truth);
   if (!report.report_path.empty()) {
     written.push_back(report.charts_drawn ? "report.html + charts" : "report.html (no charts)");
   }
@@ -401,6 +407,7 @@ Command add_sweep_command(CLI::App& app) {
                   "linear EXR or PNG of the view, or a `skinsim truth` directory of it) and say "
                   "per group whether the recommendation "
                   "and the visibility verdicts stay (docs/validation.md)");
+  add_truth_choice_options(*cmd, o->truth_choice);
   cmd->add_flag("--merge", o->merge,
                 "Compute nothing: write the tables and report from the configurations in --out "
                 "(after the shards), naming those missing and their shard; exit 1 if any is")

@@ -136,7 +136,9 @@ int run_truth(const TruthOptions& o) {
     }
     fmt::print("skinsim truth: noise floor (seed {} vs {}): {}\n", seed2, o.seed,
                figures(result["noise_floor"]));
-    keep(driver::truth_key(exported, out / "scene", render.script, o.seed), {truth, other});
+    keep(driver::truth_key(exported, out / "scene", render.script, o.seed,
+                           driver::blender_version(render.blender)),
+         {truth, other});
   }
   if (run) {
     result["compare"] = o.compare;
@@ -175,7 +177,8 @@ Command add_truth_command(CLI::App& app) {
   cmd->add_flag("--noise-floor", options->noise_floor,
                 "Also render with the next seed and report the two truths' difference (the "
                 "Monte Carlo noise floor every comparison against truth stands on), and keep "
-                "both in the truth store for `--truth cached`");
+                "both in the truth store for `--truth cached` (other --samples or --seed: "
+                "with --truth-samples, --truth-seed)");
   cmd->add_option("--compare", options->compare,
                   "A `skinsim run` directory of the same scene and options: its frame's and "
                   "reference's PSNR/SSIM/FLIP against the truth, in truth.json");

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <optional>
 
 #include "driver/crop_windows.h"
@@ -14,7 +15,8 @@ namespace fs = std::filesystem;
 
 std::vector<reports::ComparisonPanel> write_comparison_panels(
     const reports::SweepTable& table, const std::vector<reports::Recommendation>& recommendations,
-    const fs::path& sweep_dir, bool over_skin) {
+    const fs::path& sweep_dir, bool over_skin,
+    const std::map<std::string, std::string>& truth_images) {
   std::vector<reports::ComparisonPanel> panels;
   const std::string bar_path = "compare/colour_bar.png";
   fs::create_directories(sweep_dir / "compare");
@@ -41,6 +43,10 @@ std::vector<reports::ComparisonPanel> write_comparison_panels(
     panel.best_image = best.frame_image;
     panel.difference_gain = kDifferenceGain;
     panel.colour_bar = bar_path;
+    std::optional<quality::Image> truth;
+    if (const auto t = truth_images.find(rec.group); t != truth_images.end()) {
+      truth = quality::load_png(sweep_dir / t->second);
+    }
 
     std::vector<NamedMap> searches;
     searches.emplace_back("largest error against the reference",
@@ -62,6 +68,18 @@ std::vector<reports::ComparisonPanel> write_comparison_panels(
     if (*rec.chosen == *rec.best) {  // best == recommended
       images.pop_back();
       images.erase(images.begin() + 1);
+    }
+    // The truth beside the reference, and the recommended frame's difference from it beside
+    // the one from the reference.
+    std::optional<quality::Image> from_truth;
+    if (truth) {
+      from_truth = amplified_difference(chosen_frame, *truth);
+      images.insert(images.begin() + 1, {"truth (path-traced)", &*truth});
+      const auto after = std::find_if(images.begin(), images.end(), [](const NamedImage& i) {
+        return i.first.rfind("|recommended - reference|", 0) == 0;
+      });
+      images.insert(after + 1,
+                    {fmt::format("|recommended - truth| x {:g}", kDifferenceGain), &*from_truth});
     }
     // The fixed places first (an eye, the lips, a shadow edge, the silhouette), then where the
     // error is worst.

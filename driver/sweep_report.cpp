@@ -9,7 +9,7 @@
 namespace skinsim::driver {
 
 SweepReportOutcome write_sweep_report(reports::SweepTable& table, const std::string& out_dir,
-                                      bool charts) {
+                                      bool charts, const ReportTruth& truth) {
   SweepReportOutcome outcome;
   if (table.rows.empty()) {
     finish_sweep_data(table, out_dir);
@@ -31,12 +31,14 @@ SweepReportOutcome write_sweep_report(reports::SweepTable& table, const std::str
   options.higher_is_better = false;
   options.draw_charts = charts;
   options.write_data_files = false;  // write_sweep_data writes results.json / results.csv
+  options.after_recommendation = truth.section;
+  options.truth_images = truth.images;
   // VTK draws the charts on this thread, on one core, for a second or two; the comparison
   // panels (two FLIP maps and their crops) and the thumbnails take the other cores meanwhile.
   // The charts read the rows, the panels only add table.panels, which the page shows and
   // results.json keeps: both are written once the panels are in.
   options.alongside_charts = [&] {
-    finish_sweep_data(table, out_dir);
+    finish_sweep_data(table, out_dir, truth.images);
     write_thumbnails(table, out_dir);
   };
   outcome.report_path = reports::write_report(table, out_dir, options);

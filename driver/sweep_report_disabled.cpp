@@ -4,9 +4,9 @@
 
 namespace skinsim::driver {
 
-SweepReportOutcome write_sweep_report(reports::SweepTable& table, const std::string& out_dir,
-                                      bool) {
-  finish_sweep_data(table, out_dir);
+SweepReportOutcome write_sweep_report(reports::SweepTable& table, const std::string& out_dir, bool,
+                                      const ReportTruth& truth) {
+  finish_sweep_data(table, out_dir, truth.images);
   // A report.html from a build with the report library would not show these tables.
   remove_stale_report(out_dir);
   SweepReportOutcome outcome;

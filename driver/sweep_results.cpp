@@ -75,11 +75,12 @@ reports::SweepTable assemble_sweep_table(const SweepSpec& spec,
   return table;
 }
 
-void finish_sweep_data(reports::SweepTable& table, const std::string& out_dir) {
+void finish_sweep_data(reports::SweepTable& table, const std::string& out_dir,
+                       const std::map<std::string, std::string>& truth_images) {
   if (!table.rows.empty()) {
     const std::string metric = reports::recommend_metric(table.rows);
     table.panels = write_comparison_panels(table, reports::recommend(table, metric), out_dir,
-                                           metric == "flip_skin");
+                                           metric == "flip_skin", truth_images);
   }
   write_sweep_data(table, out_dir);
 }

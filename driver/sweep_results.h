@@ -27,8 +27,10 @@ reports::SweepTable assemble_sweep_table(const SweepSpec& spec,
 
 // Adds what each group's recommended configuration looks like beside the reference and the
 // best (sweep_crops.h: the crops and their images in out_dir/compare/, listed in
-// table.panels), then writes the table (write_sweep_data).
-void finish_sweep_data(reports::SweepTable& table, const std::string& out_dir);
+// table.panels; with each group's truth image from `truth_images` when it has one), then
+// writes the table (write_sweep_data).
+void finish_sweep_data(reports::SweepTable& table, const std::string& out_dir,
+                       const std::map<std::string, std::string>& truth_images = {});
 
 // Removes out_dir/report.html (a sweep directory's, so skinsim wrote it): beside tables it
 // does not show (an interrupted sweep's, an empty merge's) it would show another sweep.

@@ -42,8 +42,9 @@ nlohmann::json judged_key(const fs::path& run) {
   return truth["key"];
 }
 
-Truth kept_truth(const fs::path& a, const fs::path& b, int width, int height) {
-  const nlohmann::json key = judged_key(a);
+Truth kept_truth(const fs::path& a, const fs::path& b, int width, int height,
+                 const TruthChoice& choice) {
+  nlohmann::json key = judged_key(a);
   if (judged_key(b) != key) {
     throw UserError(
         fmt::format("{} cached: {} and {} were judged by different truths (other "
@@ -54,7 +55,12 @@ Truth kept_truth(const fs::path& a, const fs::path& b, int width, int height) {
   if (!store) {
     throw UserError(fmt::format("{} cached: the truth store is off (SKINSIM_CACHE_DIR)", kOption));
   }
+  if (choice.named) key = with_samples(key, choice.samples, choice.seed);
   KeptTruth kept = store->load(key, width, height);
+  if (!kept.images && choice.named) {
+    throw missing_named_truth(choice, "the truth store " + store->dir().string(),
+                              fmt::format("--resolution {}x{}", width, height));
+  }
   if (!kept.images) {
     throw UserError(fmt::format(
         "{} cached: the truth store no longer holds {} intact{}: run {} again with --truth cached",
@@ -68,7 +74,8 @@ Truth kept_truth(const fs::path& a, const fs::path& b, int width, int height) {
 
 }  // namespace
 
-nlohmann::json compare_with_truth(const fs::path& a, const fs::path& b, const std::string& spec) {
+nlohmann::json compare_with_truth(const fs::path& a, const fs::path& b, const std::string& spec,
+                                  const TruthChoice& choice) {
   const quality::Image frame_a = run_frame(a), frame_b = run_frame(b);
   if (frame_a.width != frame_b.width || frame_a.height != frame_b.height) {
     throw UserError(fmt::format("{}: {} is {}x{}, {} {}x{}: one truth cannot judge both", kOption,
@@ -76,7 +83,7 @@ nlohmann::json compare_with_truth(const fs::path& a, const fs::path& b, const st
                                 frame_b.width, frame_b.height));
   }
   const Truth truth = spec == kCachedTruth
-                          ? kept_truth(a, b, frame_a.width, frame_a.height)
+                          ? kept_truth(a, b, frame_a.width, frame_a.height, choice)
                           : truth_file("--truth", spec, frame_a.width, frame_a.height);
   std::optional<quality::Mask> skin;
   const fs::path mask = a / reference_mask_path(kRunReferenceImage);

@@ -172,36 +172,67 @@ Truth truth_file(const std::string& option, const fs::path& path, int width, int
   return truth;
 }
 
+std::string TruthChoice::options() const {
+  return fmt::format("--truth-samples {} --truth-seed {}", samples, seed);
+}
+
+void require_cached_for_choice(const std::string& spec, const TruthChoice& choice) {
+  if (choice.named && spec != kCachedTruth) {
+    throw UserError(fmt::format("{}: only with --truth {} (a truth file is the image it is)",
+                                choice.options(), kCachedTruth));
+  }
+}
+
+UserError missing_named_truth(const TruthChoice& choice, const std::string& store,
+                              const std::string& view) {
+  return UserError(fmt::format(
+      "{}: no truth of this view rendered with {} samples and seeds {} and {} is in {}; render "
+      "it with `skinsim truth {} --samples {} --seed {} --noise-floor` and the same scene, "
+      "device and knob options (it is kept there), or drop in one rendered elsewhere "
+      "(docs/validation.md)",
+      choice.options(), choice.samples, choice.seed, choice.seed + 1, store, view, choice.samples,
+      choice.seed));
+}
+
 Truth cached_truth(const pipeline::GpuScene& scene, const pipeline::PipelineConfig& config,
-                   int threads, const std::function<void(const std::string&)>& note) {
-  constexpr int kSeed = 1;
-  const TruthSettings settings;
+                   const TruthChoice& choice, int threads,
+                   const std::function<void(const std::string&)>& note) {
+  TruthSettings settings;
+  settings.samples = choice.samples;
   const ScratchDirectory scratch;
   const fs::path dir = scratch.path() / "scene";
   const nlohmann::json exported = write_truth_scene(scene, config, settings, dir);
-  const nlohmann::json key = truth_key(exported, dir, truth_script(), kSeed);
+  const TruthRender render{blender_program(), truth_script(), threads};
+  const nlohmann::json key =
+      truth_key(exported, dir, render.script, choice.seed, blender_version(render.blender));
   Truth truth;
   truth.about = {{"source", "store"}, {"key", key}};
   const std::optional<TruthStore> store = TruthStore::from_environment();
+  const std::string view = fmt::format("--resolution {}x{}", config.width, config.height);
+  if (!store && choice.named) {
+    throw missing_named_truth(choice, "no store (SKINSIM_CACHE_DIR is off)", view);
+  }
   if (store) {
     truth.about["store"] = store->marker(key).string();
     KeptTruth kept = store->load(key, config.width, config.height);
     if (!kept.discarded.empty()) {
-      note(fmt::format("the kept truth {} was discarded, and is rendered again: {}",
-                       store->marker(key).string(), kept.discarded));
+      note(fmt::format("the kept truth {} was discarded{}: {}", store->marker(key).string(),
+                       choice.named ? "" : ", and is rendered again", kept.discarded));
     }
     if (kept.images) return with_images(std::move(truth), std::move(*kept.images));
+    if (choice.named) {
+      throw missing_named_truth(choice, "the truth store " + store->dir().string(), view);
+    }
   }
   note(fmt::format("rendering the truth with Blender Cycles: {}x{}, {} samples, seeds {} and {}",
-                   config.width, config.height, settings.samples, kSeed, kSeed + 1));
-  const TruthRender render{blender_program(), truth_script(), threads};
+                   config.width, config.height, settings.samples, choice.seed, choice.seed + 1));
   const fs::path log = scratch.path() / "blender.log";
   TruthImages rendered;
-  for (const int seed : {kSeed, kSeed + 1}) {
+  for (const int seed : {choice.seed, choice.seed + 1}) {
     const fs::path exr = scratch.path() / fmt::format("truth_seed{}.exr", seed);
     render_truth(render, dir, seed, exr, log);
     quality::Image image = display_image(read_linear_image(exr, log));
-    (seed == kSeed ? rendered.image : rendered.second.emplace()) = std::move(image);
+    (seed == choice.seed ? rendered.image : rendered.second.emplace()) = std::move(image);
   }
   truth.about["source"] = "rendered";
   if (store) {
@@ -245,8 +276,9 @@ std::string truth_source_text(const Truth& truth) {
             : fmt::format("seed {}, no second seed", a["seed"].get<int>()));
   }
   const nlohmann::json& key = a["key"];
-  const std::string settings = fmt::format("{} samples, seeds {} and {}", key["samples"].get<int>(),
-                                           key["seed"].get<int>(), key["second_seed"].get<int>());
+  const std::string settings = fmt::format(
+      "{} samples, seeds {} and {}, {}", key["samples"].get<int>(), key["seed"].get<int>(),
+      key["second_seed"].get<int>(), key["blender"].get<std::string>());
   const std::string kept =
       a.contains("store") ? ", kept as " + a["store"].get<std::string>() : " (the store is off)";
   return a["source"] == "store"

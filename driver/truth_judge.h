@@ -12,15 +12,38 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "driver/truth_scene.h"
 #include "driver/truth_store.h"
 #include "pipeline/config.h"
 #include "pipeline/gpu_scene.h"
 #include "quality/image.h"
+#include "util/user_error.h"
 
 namespace skinsim::driver {
 
 // What `--truth` takes: "cached", or a file.
 inline constexpr const char* kCachedTruth = "cached";
+
+// Which truth `--truth cached` takes: Cycles' samples and the first seed (the noise floor's
+// is the next), set by --truth-samples and --truth-seed (`skinsim truth`'s --samples and
+// --seed). A truth so named is only looked up, never rendered on the way: one of many
+// samples may take hours, so `skinsim truth` renders it where it should (docs/validation.md).
+struct TruthChoice {
+  int samples = TruthSettings{}.samples;
+  int seed = 1;
+  bool named = false;  // --truth-samples or --truth-seed given
+
+  // "--truth-samples 256 --truth-seed 1", for messages.
+  std::string options() const;
+};
+
+// Throws UserError when `choice` is named but `spec` is not "cached" (a file is one image).
+void require_cached_for_choice(const std::string& spec, const TruthChoice& choice);
+
+// The UserError for a named truth the store lacks: names the options, the store and the
+// `skinsim truth` command that renders it (`view`: e.g. "--resolution 256x192").
+UserError missing_named_truth(const TruthChoice& choice, const std::string& store,
+                              const std::string& view);
 
 struct Truth {
   TruthImages images;
@@ -31,13 +54,15 @@ struct Truth {
 // `truth` with `images`, and the floor map of their second seed when there is one.
 Truth with_images(Truth truth, TruthImages images);
 
-// The truth store's (truth_store.h) truth of `scene`'s view under `config`: when the store has
-// none (or has it damaged: `note` says so), rendered with Blender Cycles at the default samples
-// with seeds 1 and 2 (the second for the noise floor) and kept; rendered every time when the
-// store is off. `threads`: Blender's (0: its own choice). Throws UserError when Blender is
-// missing or fails.
+// The truth store's (truth_store.h) truth of `scene`'s view under `config` with `choice`'s
+// samples and seeds: when the store has none (or has it damaged: `note` says so), rendered
+// with Blender Cycles with seeds `seed` and `seed + 1` (the second for the noise floor) and
+// kept; rendered every time when the store is off. A named choice is never rendered: missing,
+// it throws missing_named_truth. `threads`: Blender's (0: its own choice). Throws UserError
+// when Blender is missing (its version is in the key) or fails.
 Truth cached_truth(const pipeline::GpuScene& scene, const pipeline::PipelineConfig& config,
-                   int threads, const std::function<void(const std::string&)>& note);
+                   const TruthChoice& choice, int threads,
+                   const std::function<void(const std::string&)>& note);
 
 // Throws UserError naming `option` when `spec` is neither "cached", an existing file nor a
 // `skinsim truth` directory: checked before a command's work, as the file is read only after it.
@@ -62,7 +87,8 @@ nlohmann::json judge_against_truth(const quality::Image& test, const Truth& trut
 nlohmann::json truth_noise_floor(const Truth& truth, const quality::Mask* skin);
 
 // Where the truth came from, for the terminal: "the truth store's .../truth_<key>.json (64
-// samples, seeds 1 and 2)", "rendered with Blender Cycles (...)", "the file F (one image)".
+// samples, seeds 1 and 2, Blender 3.4.1)", "rendered with Blender Cycles (...)", "the file F
+// (one image)".
 std::string truth_source_text(const Truth& truth);
 
 // "skin PSNR 30.21 dB, SSIM 0.812, FLIP 0.125, visibly different on 12.3% (810 px)": a

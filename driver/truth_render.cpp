@@ -1,11 +1,21 @@
 #include "driver/truth_render.h"
 
+#include <fmt/format.h>
+#include <stdlib.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <chrono>
 #include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <mutex>
 
 #include "driver/truth_process.h"
 #include "quality/json_value.h"
 #include "quality/metrics.h"
+#include "util/text.h"
 #include "util/user_error.h"
 
 namespace skinsim::driver {
@@ -15,17 +25,50 @@ std::string blender_program() {
   return set && *set ? set : "blender";
 }
 
+void require_blender(const std::string& blender) {
+  if (!program_exists(blender)) {
+    throw UserError("Blender (" + blender +
+                    ") is not installed: scripts/install-deps.sh installs it, or set "
+                    "SKINSIM_BLENDER to its path");
+  }
+}
+
+std::string blender_version(const std::string& blender) {
+  static std::mutex mutex;
+  static std::map<std::string, std::string> known;  // program -> its version
+  const std::lock_guard lock(mutex);
+  if (const auto it = known.find(blender); it != known.end()) return it->second;
+  require_blender(blender);
+  std::string log = (std::filesystem::temp_directory_path() / "skinsim-blender-XXXXXX").string();
+  const int fd = mkstemp(log.data());
+  if (fd < 0) {
+    throw UserError(fmt::format("cannot make a scratch file in {}: {}",
+                                std::filesystem::temp_directory_path().string(),
+                                std::strerror(errno)));
+  }
+  ::close(fd);
+  const int rc = run_program({blender, "--version"}, log);
+  std::string line;
+  std::getline(std::ifstream(log), line);
+  std::filesystem::remove(log);
+  // Only the version goes into the key: never more than a line, and no control characters.
+  line = sanitized(line.substr(0, line.find_last_not_of(" \t\r") + 1), 200);
+  if (rc != 0 || line.empty()) {
+    throw UserError(fmt::format(
+        "Blender ({}) --version {}: the truth store's key names the Blender that renders a "
+        "truth",
+        blender, rc != 0 ? fmt::format("failed (exit {})", rc) : std::string("printed nothing")));
+  }
+  return known[blender] = line;
+}
+
 std::filesystem::path truth_script() {
   return SKINSIM_TRUTH_SCRIPT;
 }
 
 double render_truth(const TruthRender& render, const std::filesystem::path& scene_dir, int seed,
                     const std::filesystem::path& exr, const std::filesystem::path& log) {
-  if (!program_exists(render.blender)) {
-    throw UserError("Blender (" + render.blender +
-                    ") is not installed: scripts/install-deps.sh installs it, or set "
-                    "SKINSIM_BLENDER to its path");
-  }
+  require_blender(render.blender);
   if (!std::filesystem::is_regular_file(render.script)) {
     throw UserError("the Cycles script " + render.script.string() + " is missing");
   }

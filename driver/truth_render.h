@@ -14,6 +14,14 @@ namespace skinsim::driver {
 // $SKINSIM_BLENDER, else "blender" from PATH.
 std::string blender_program();
 
+// Throws UserError when `blender` cannot be run (not installed), saying how to get it.
+void require_blender(const std::string& blender);
+
+// The first line of `blender --version` (e.g. "Blender 3.4.1"): which Blender renders a
+// truth, for its key (truth_store.h). Asked once per process and program. Throws UserError
+// when Blender is missing, fails or prints nothing.
+std::string blender_version(const std::string& blender);
+
 // scripts/truth/cycles_render.py of the source tree skinsim was built from.
 std::filesystem::path truth_script();
 

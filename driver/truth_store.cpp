@@ -24,7 +24,7 @@ namespace {
 
 constexpr const char* kStem = "truth_";
 // What this key's rules are: raised when they change, so older entries are no match.
-constexpr const char* kKeyFormat = "skinsim truth key 1";
+constexpr const char* kKeyFormat = "skinsim truth key 2";
 // A scan's meshes.bin and textures may be large; the key reads each whole.
 constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t{4} << 30;
 
@@ -45,11 +45,13 @@ KeptTruth discarded(std::string why) {
 }  // namespace
 
 nlohmann::json truth_key(const nlohmann::json& exported, const fs::path& scene_dir,
-                         const fs::path& script, int seed) {
+                         const fs::path& script, int seed, const std::string& blender) {
   // The scene's "source" names the input file where this machine has it: the bytes exported
-  // from it are what the truth depends on, wherever they came from.
+  // from it are what the truth depends on, wherever they came from. The samples are the
+  // key's own field.
   nlohmann::json scene = exported;
   scene.erase("source");
+  if (scene.contains("render")) scene["render"].erase("samples");
   const std::string described = scene.dump();
   const std::string meshes = io::read_regular_file(
       scene_dir / exported.value("meshes_file", "meshes.bin"), "truth scene", kMaxSceneFileBytes);
@@ -74,7 +76,15 @@ nlohmann::json truth_key(const nlohmann::json& exported, const fs::path& scene_d
           {"seed", seed},
           {"second_seed", seed + 1},
           {"scene", xxh3_fingerprint({described, meshes, texture_digests})},
-          {"script", xxh3_fingerprint({io::read_regular_file(script, "Cycles script")})}};
+          {"script", xxh3_fingerprint({io::read_regular_file(script, "Cycles script")})},
+          {"blender", blender}};
+}
+
+nlohmann::json with_samples(nlohmann::json key, int samples, int seed) {
+  key["samples"] = samples;
+  key["seed"] = seed;
+  key["second_seed"] = seed + 1;
+  return key;
 }
 
 TruthStore::TruthStore(fs::path dir, int capacity)

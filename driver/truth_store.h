@@ -1,10 +1,12 @@
 // Truths kept like references (reference_store.h): a path-traced truth takes seconds to hours
 // to render, so one rendering serves every later `run --truth cached` of the same view. A truth
 // depends only on what Blender is given, so its key is a digest of that: the exported scene
-// (truth_scene.h: triangles, camera, lights, materials, skin parameters, resolution, samples),
-// the Cycles script and the two seeds. It names no build, host or path, so a truth rendered on
-// another machine (a bigger one, a Slurm job) by the same exporter has the same key and can be
-// dropped into this store (docs/validation.md); a different export is a different key.
+// (truth_scene.h: triangles, camera, lights, materials, skin parameters, resolution), the
+// samples, the Cycles script, the two seeds and the Blender version (the first line of
+// `blender --version`: another release's Cycles is another judge). It names no build, host or
+// path, so a truth rendered on another machine (a bigger one, a Slurm job) by the same
+// exporter and Blender has the same key and can be dropped into this store
+// (docs/validation.md); a different export or Blender is a different key.
 #pragma once
 
 #include <filesystem>
@@ -24,10 +26,15 @@ struct TruthImages {
 };
 
 // The key of the truth of the scene exported to `scene_dir` (write_truth_scene; `exported`:
-// its scene.json as returned) rendered by `script` with `seed` and, for the noise floor,
-// seed + 1. Throws UserError naming a file it cannot read.
+// its scene.json as returned) rendered by `script` in `blender` (its version line) with
+// `seed` and, for the noise floor, seed + 1. The sample count is the key's "samples" alone
+// (not in its scene digest), so a key can be asked for with other samples and seeds
+// (with_samples). Throws UserError naming a file it cannot read.
 nlohmann::json truth_key(const nlohmann::json& exported, const std::filesystem::path& scene_dir,
-                         const std::filesystem::path& script, int seed);
+                         const std::filesystem::path& script, int seed, const std::string& blender);
+
+// `key` of the same view and judge with other samples and seeds (seed, seed + 1).
+nlohmann::json with_samples(nlohmann::json key, int samples, int seed);
 
 // A kept truth as loading it found it (as KeptReference).
 struct KeptTruth {

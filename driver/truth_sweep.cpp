@@ -77,8 +77,13 @@ nlohmann::json judge_sweep_with_truth(reports::SweepTable& table, const std::str
     auto it = truths.find(row.group);
     if (it == truths.end()) {
       it = truths.emplace(row.group, truth_of(row, images.frame.width, images.frame.height)).first;
+      // The report shows it beside the frames (sweep_report_truth.h), as they are seen.
+      const std::string image = fmt::format("{}/g{}.png", kTruthImageDir, groups.size());
+      fs::create_directories(fs::path(out_dir) / kTruthImageDir);
+      quality::save_png(it->second.images.image, fs::path(out_dir) / image);
       groups[row.group] = {{"group", row.group},
                            {"truth", it->second.about},
+                           {"image", image},
                            {"noise_floor", truth_noise_floor(it->second, images.mask())}};
     }
     const nlohmann::json j = judge_against_truth(images.frame, it->second, images.mask());

@@ -14,6 +14,9 @@
 
 namespace skinsim::driver {
 
+// The folder of a sweep directory that holds the truth images.
+inline constexpr const char* kTruthImageDir = "truth";
+
 // The truth of one group's view: `row` is one of its configurations, its frame width x height.
 using GroupTruth = std::function<Truth(const reports::ConfigResult& row, int width, int height)>;
 
@@ -23,9 +26,11 @@ using GroupTruth = std::function<Truth(const reports::ConfigResult& row, int wid
 // and truth_floor_flip_skin/_frame, the truth's noise floor (absent when not measured); a PSNR
 // is absent where it is infinite (a frame identical to the truth), as results.json holds
 // finite numbers.
-// Returns, for results.json's "truth", per group: where its truth came from, its noise floor,
-// the configuration recommended when the reference judges and when the truth does, and the
-// configurations whose verdict "visibly different" changes.
+// Writes each group's truth image (as its frames are seen: truth_image.h display_image) to
+// out_dir/truth/g<N>.png, N counting the groups in the rows' order.
+// Returns, for results.json's "truth", per group: where its truth came from, its image, its
+// noise floor, the configuration recommended when the reference judges and when the truth
+// does, and the configurations whose verdict "visibly different" changes.
 nlohmann::json judge_sweep_with_truth(reports::SweepTable& table, const std::string& out_dir,
                                       const GroupTruth& truth_of);
 

@@ -164,13 +164,14 @@ std::string recommendation_section(const SweepTable& t, const ReportOptions& o,
        "tile size) would need a re-render and are not in the range. <i>Energy</i> is the "
        "dynamic energy of the frame (docs/cost-model.md); its range has every energy figure of "
        "the device profile at its minimum, then at its maximum.</p>\n</div>\n";
-  return h;
+  return h + o.after_recommendation;
 }
 
 // A slider between any two of the group's full frames (the reference and every configuration,
 // the recommended one on the left), with their difference; then per window the crops at 1:1
 // and magnified, with the difference's colour scale.
-std::string panel_html(const SweepTable& t, const ComparisonPanel& p) {
+std::string panel_html(const SweepTable& t, const ComparisonPanel& p,
+                       const std::map<std::string, std::string>& truth_images) {
   std::vector<std::pair<std::string, std::string>> frames = {{"reference", p.reference_image}};
   std::size_t left = 0;
   for (const ConfigResult& r : t.rows) {
@@ -179,6 +180,8 @@ std::string panel_html(const SweepTable& t, const ComparisonPanel& p) {
     if (r.id == p.chosen) left = frames.size();
     frames.emplace_back(what + name_of(r), r.frame_image);
   }
+  const auto truth = truth_images.find(p.group);
+  if (truth != truth_images.end()) frames.emplace_back("truth (path-traced)", truth->second);
   if (left == 0) {  // a panel from a results.json whose rows lack frames: its own two
     frames.emplace_back("recommended: " + p.chosen, p.chosen_image);
     left = frames.size() - 1;
@@ -186,11 +189,13 @@ std::string panel_html(const SweepTable& t, const ComparisonPanel& p) {
   return "<h3>" + esc(p.group) + "</h3>\n" + image_slider_html(frames, left, 0, p.difference_gain) +
          crop_windows_html(p.windows) +
          colour_bar_html(p.colour_bar, p.difference_gain,
-                         p.best == p.chosen ? "|recommended - reference|"
-                                            : "|recommended - reference| and |recommended - best|");
+                         std::string(p.best == p.chosen ? "|recommended - reference|"
+                                                        : "|recommended - reference| and "
+                                                          "|recommended - best|") +
+                             (truth == truth_images.end() ? "" : ", |recommended - truth|"));
 }
 
-std::string comparison_section(const SweepTable& t) {
+std::string comparison_section(const SweepTable& t, const ReportOptions& o) {
   if (t.panels.empty()) return "";
   std::string h =
       "<h2>What the recommendation looks like</h2>\n<p>Pick any two frames of the group (the "
@@ -198,7 +203,7 @@ std::string comparison_section(const SweepTable& t) {
       "<i>difference</i> to see where they differ. Below, the windows where the recommended "
       "frame differs most (found in the FLIP error over skin), cut out of the reference, the "
       "best and the recommended frame. Click any image for full size.</p>\n";
-  for (const ComparisonPanel& p : t.panels) h += panel_html(t, p);
+  for (const ComparisonPanel& p : t.panels) h += panel_html(t, p, o.truth_images);
   return h + image_compare_script();
 }
 
@@ -491,8 +496,9 @@ std::string write_report(const SweepTable& table, const std::string& dir,
   std::string page = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
   page += "<title>" + esc(options.title) + "</title>\n<style>" + kPageStyle + kStyle +
           kImageCompareStyle + "</style>\n</head>\n";
+  const std::string comparison = comparison_section(table, options);
   page += "<body>\n" + header_section(table, options) + verdicts_section(table, options) +
-          recommendation_section(table, options, recommendations) + comparison_section(table) +
+          recommendation_section(table, options, recommendations) + comparison +
           charts_section(figures, options.draw_charts) + timeline_section(table, chosen) +
           techniques_section(table, options) + table_section(table, options, chosen) +
           thumbnails_section(table, dir) + assumptions_section(table);

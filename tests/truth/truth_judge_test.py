@@ -1,7 +1,10 @@
 """Judging with a truth (docs/validation.md, "Judging with the truth").
 Usage: truth_judge_test.py CASE SKINSIM SKINSIM_EXR WORKDIR
 
-  store       `run --truth cached` keeps the truth it renders in the truth store and reuses it;
+  store       `run --truth cached` keeps the truth it renders in the truth store and reuses it,
+              under a key naming `blender --version` (another Blender's is a miss); a truth
+              named by --truth-samples/--truth-seed is only looked up (exit 2, naming the
+              `skinsim truth` command, when missing) and found once that command kept it;
               a tampered image, a marker that is not JSON or is a symlink, an image replaced by
               a symlink: each is discarded with a note and rendered again; SKINSIM_CACHE_DIR=off
               renders every time. Blender is a stand-in script here (SKINSIM_BLENDER) that
@@ -14,12 +17,16 @@ Usage: truth_judge_test.py CASE SKINSIM SKINSIM_EXR WORKDIR
               --noise-floor its two seeds measure the floor, and the frame is judged above it;
               without, one image, no floor; a truth.json without its seed exits 2, named.
   compare     `compare A B --truth cached` judges two runs by the truth both were judged with
-              (stand-in Blender), in the terminal and compare.json; `--truth FILE` too; runs
+              (stand-in Blender), in the terminal and compare.json, or by that view's truth
+              of --truth-samples/--truth-seed; `--truth FILE` too; runs
               judged by no or by different truths, and a missing file, exit 2, named.
   sweep_file  `sweep --truth FILE` of two configurations, the truth being one of their own
               frames: per-configuration figures against it in results.json/csv, and the
               recommendation and that frame's verdict change to it; a missing truth exits 2
               before the sweep.
+  sweep_store `sweep --truth cached` of two groups with the stand-in Blender: one
+              `blender --version` a process, report.html shows each group's truth in the
+              slider and crops and says what it judged; a missing named truth exits 2.
   sweep       a truth-judged sweep of two configurations with Blender Cycles (`--truth
               cached`, 64x48; exit 77 where Blender is not installed).
 """
@@ -37,9 +44,16 @@ ENV = dict(os.environ, SKINSIM_CACHE_DIR=f"{WORK}/cache", SKINSIM_EXR_TOOL=EXR_T
 SIZE = ["--resolution", "32x24"]
 
 # Stands in for `blender -b ... -P cycles_render.py -- scene.json out.exr seed threads`: a flat
-# grey image a little brighter for each seed, written as OpenEXR by skinsim-exr.
+# grey image a little brighter for each seed, written as OpenEXR by skinsim-exr; and for
+# `blender --version`, whose first line ($STAND_IN_VERSION) is in the truth's key.
 FAKE_BLENDER = f"""#!/usr/bin/env python3
-import json, struct, subprocess, sys
+import json, os, struct, subprocess, sys
+if sys.argv[1:] == ["--version"]:
+    with open({WORK!r} + "/version_calls", "a") as f:
+        f.write("version\\n")
+    print("Blender " + os.environ.get("STAND_IN_VERSION", "3.4.1 (stand-in)"))
+    print("\\tbuild date: today")
+    sys.exit(0)
 args = sys.argv[sys.argv.index("--") + 1:]
 scene, exr, seed = json.load(open(args[0])), args[1], int(args[2])
 w, h = scene["width"], scene["height"]
@@ -59,6 +73,14 @@ def run(*args, expect=0):
 def blender_calls():
     path = f"{WORK}/blender_calls"
     calls = open(path).read().split() if os.path.exists(path) else []
+    if os.path.exists(path):
+        os.remove(path)
+    return calls
+
+
+def version_calls():
+    path = f"{WORK}/version_calls"
+    calls = len(open(path).read().split()) if os.path.exists(path) else 0
     if os.path.exists(path):
         os.remove(path)
     return calls
@@ -101,7 +123,7 @@ def test_store():
     for image in ("frame", "reference"):
         if "visible" not in truth[image]["skin"] or image not in p.stdout:
             fail(f"the {image} is not judged against the truth: {truth}")
-    if truth["source"] != "rendered" or "noise floor" not in p.stdout:
+    if truth["source"] != "rendered" or "noise floor" not in p.stdout or "Blender 3.4.1" not in p.stdout:
         fail(f"where the truth came from / its floor is not stated: {truth['source']}\n{p.stdout}")
     (marker,) = glob.glob(f"{WORK}/cache/truths/truth_*.json")
     stem = marker[:-len(".json")]
@@ -131,9 +153,45 @@ def test_store():
     os.symlink(f"{WORK}/marker.json", marker)
     run_cached("truth marker")
     blender_calls()
+    version_calls()
     run_cached()
     if blender_calls():
         fail("the truth kept after the discards is not reused")
+
+    if judged(f"{WORK}/run")["key"]["blender"] != "Blender 3.4.1 (stand-in)" or version_calls() != 1:
+        fail("the key does not name the Blender of `blender --version`, asked once a run")
+    # Another Blender: its truth is another judge, a miss, rendered again and kept beside.
+    ENV["STAND_IN_VERSION"] = "4.2.0 (stand-in)"
+    run_cached()
+    if blender_calls() != ["1", "2"] or judged(f"{WORK}/run")["key"]["blender"] != "Blender 4.2.0 (stand-in)":
+        fail("a truth of another Blender was reused")
+    del ENV["STAND_IN_VERSION"]
+    run_cached()
+    if blender_calls():
+        fail("the first Blender's truth is no longer found")
+
+    # A named truth is only looked up: missing, exit 2 naming the options and the command.
+    named = ["--truth-samples", "8", "--truth-seed", "5"]
+    p = run(SKINSIM, "run", *SIZE, "--truth", "cached", *named, "--out", f"{WORK}/n", expect=2)
+    for words in ("--truth-samples 8 --truth-seed 5", "8 samples and seeds 5 and 6",
+                  "skinsim truth --resolution 32x24 --samples 8 --seed 5 --noise-floor"):
+        if words not in p.stderr:
+            fail(f"a missing named truth: the error does not say '{words}': {p.stderr}")
+    if blender_calls() or os.path.exists(f"{WORK}/n"):
+        fail("a missing named truth was rendered, or left an output directory")
+    p = run(SKINSIM, "run", *SIZE, "--truth", f"{WORK}/run/frame.png", "--truth-samples", "8",
+            "--out", f"{WORK}/n", expect=2)
+    if "only with --truth cached" not in p.stderr:
+        fail(f"--truth-samples with a file: {p.stderr}")
+    # `skinsim truth --samples 8 --seed 5 --noise-floor` keeps it where the run then finds it.
+    run(SKINSIM, "truth", *SIZE, "--samples", "8", "--seed", "5", "--noise-floor",
+        "--out", f"{WORK}/t8")
+    if blender_calls() != ["5", "6"]:
+        fail("skinsim truth did not render seeds 5 and 6")
+    run(SKINSIM, "run", *SIZE, "--truth", "cached", *named, "--out", f"{WORK}/n")
+    key = judged(f"{WORK}/n")["key"]
+    if blender_calls() or (key["samples"], key["seed"]) != (8, 5):
+        fail(f"the named truth kept by `skinsim truth` was not used: {key}")
 
     ENV["SKINSIM_CACHE_DIR"] = "off"
     run_cached()
@@ -225,6 +283,21 @@ def test_compare():
     for line in ("A vs truth: skin PSNR", "B vs truth: skin PSNR", "noise floor: skin"):
         if line not in p.stdout:
             fail(f"compare does not print '{line}':\n{p.stdout}")
+    # The same view's truth of other samples: missing, exit 2 naming the options; once
+    # `skinsim truth` has kept it, both runs are judged by it.
+    named = ["--truth-samples", "8", "--truth-seed", "3"]
+    p = run(SKINSIM, "compare", a, b, "--truth", "cached", *named, expect=2)
+    if "--truth-samples 8 --truth-seed 3" not in p.stderr or "skinsim truth" not in p.stderr:
+        fail(f"compare of a missing named truth: {p.stderr}")
+    run(SKINSIM, "truth", *SIZE, "--samples", "8", "--seed", "3", "--noise-floor", "--out",
+        f"{WORK}/t8")
+    blender_calls()
+    p = run(SKINSIM, "compare", a, b, "--truth", "cached", *named, "--out", f"{WORK}/cmp8",
+            expect=1)
+    with open(f"{WORK}/cmp8/compare.json") as f:
+        key = json.load(f)["truth"]["truth"]["key"]
+    if (key["samples"], key["seed"], key["second_seed"]) != (8, 3, 4) or blender_calls():
+        fail(f"compare did not judge by the kept 8-sample truth: {key}")
     p = run(SKINSIM, "compare", a, b, "--truth", f"{a}/reference.png", expect=1)
     if "noise floor: not measured" not in p.stdout:
         fail(f"a file's floor is not stated: {p.stdout}")
@@ -287,6 +360,37 @@ def test_sweep_file():
         fail(f"the verdicts that changed: {changed}, against the reference {cheap['visible_vs_reference']}")
 
 
+def test_sweep_store():
+    use_fake_blender()
+    sweep = SWEEP + ["--resolutions", "64x48,32x24"]
+    sweep.remove("64x48")
+    sweep.remove("--resolutions")
+    p = run(SKINSIM, *sweep, "--truth", "cached", "--out", f"{WORK}/s")
+    results = sweep_truth(f"{WORK}/s", floor=True)
+    if len(blender_calls()) != 4 or version_calls() != 1:
+        fail("two groups' truths: not 4 renders and one `blender --version` a process")
+    # The report: the truth in each group's slider and crops, and the section on what it says.
+    with open(f"{WORK}/s/report.html") as f:
+        page = f.read()
+    for words in ("<h2>Judged by truth</h2>", ">truth (path-traced)</option>",
+                  "<th>truth (path-traced)</th>", "<th>|recommended - truth| x 8</th>",
+                  "sRGB transfer function", "noise floor", "Recommendation: "):
+        if words not in page:
+            fail(f"report.html does not show '{words}'")
+    if "cannot separate" not in page and "this truth separates them" not in page:
+        fail("report.html does not say whether the truth separates the configurations")
+    for g in results["truth"]:
+        if f'value="{g["image"]}"' not in page or not os.path.isfile(f"{WORK}/s/{g['image']}"):
+            fail(f"the truth image {g['image']} is not in the slider, or not written")
+    if p.stdout.count("judged by the truth") != 2:
+        fail(f"one line per group: {p.stdout}")
+    # A named truth nobody rendered: exit 2 naming it (the configurations are kept).
+    p = run(SKINSIM, *sweep, "--truth", "cached", "--truth-seed", "9", "--out", f"{WORK}/s",
+            expect=2)
+    if "--truth-samples 64 --truth-seed 9" not in p.stderr or blender_calls():
+        fail(f"a sweep's missing named truth: {p.stderr}")
+
+
 def test_sweep():
     blender = ENV.get("SKINSIM_BLENDER", "blender")
     if shutil.which(blender) is None:
@@ -313,7 +417,7 @@ def main():
     shutil.rmtree(WORK, ignore_errors=True)
     os.makedirs(WORK)
     {"store": test_store, "file": test_file, "directory": test_directory, "compare": test_compare,
-     "sweep_file": test_sweep_file, "sweep": test_sweep}[CASE]()
+     "sweep_file": test_sweep_file, "sweep_store": test_sweep_store, "sweep": test_sweep}[CASE]()
     print("ok")
 
 

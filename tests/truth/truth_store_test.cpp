@@ -100,22 +100,37 @@ TEST(TruthKey, FollowsTheExportedBytesButNotTheSourcePath) {
                              {"height", 3},
                              {"render", {{"samples", 64}}},
                              {"lights", {1, 2}}};
-  const nlohmann::json k = truth_key(scene, dir, dir / "script.py", 1);
+  const auto key_of = [&dir](const nlohmann::json& exported, int seed,
+                             const std::string& blender = "Blender 3.4.1") {
+    return truth_key(exported, dir, dir / "script.py", seed, blender);
+  };
+  const nlohmann::json k = key_of(scene, 1);
   EXPECT_EQ(k["samples"], 64);
   EXPECT_EQ(k["second_seed"], 2);
+  EXPECT_EQ(k["blender"], "Blender 3.4.1");
 
   nlohmann::json moved = scene;
   moved["source"] = "/scratch/b/head.glb";  // the same scan elsewhere: the same truth
-  EXPECT_EQ(truth_key(moved, dir, dir / "script.py", 1), k);
+  EXPECT_EQ(key_of(moved, 1), k);
   nlohmann::json lit = scene;
   lit["lights"] = {1, 3};
-  EXPECT_NE(truth_key(lit, dir, dir / "script.py", 1), k);
-  EXPECT_NE(truth_key(scene, dir, dir / "script.py", 2), k);
+  EXPECT_NE(key_of(lit, 1), k);
+  EXPECT_NE(key_of(scene, 2), k);
+  // Another Blender's Cycles is another judge.
+  EXPECT_NE(key_of(scene, 1, "Blender 4.2.0"), k);
   write(dir / "textures" / "image0.png", "other texels");
-  EXPECT_NE(truth_key(scene, dir, dir / "script.py", 1), k);
+  EXPECT_NE(key_of(scene, 1), k);
   write(dir / "textures" / "image0.png", "texels");
   write(dir / "script.py", "render(better)");
-  EXPECT_NE(truth_key(scene, dir, dir / "script.py", 1), k);
+  EXPECT_NE(key_of(scene, 1), k);
+  write(dir / "script.py", "render()");
+
+  // The same view with other samples and seeds: what `--truth-samples`, `--truth-seed` ask for.
+  nlohmann::json more = scene;
+  more["render"]["samples"] = 1024;
+  const nlohmann::json k1024 = key_of(more, 7);
+  EXPECT_NE(k1024, k);
+  EXPECT_EQ(with_samples(k, 1024, 7), k1024);
 }
 
 }  // namespace
