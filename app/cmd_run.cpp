@@ -20,6 +20,7 @@
 #include "driver/reference_cache.h"
 #include "driver/result_json.h"
 #include "driver/sequence_charts.h"
+#include "driver/sequence_page.h"
 #include "driver/sequence_run.h"
 #include "driver/truth_judge.h"
 #include "gpu_model/sensitivity.h"
@@ -77,6 +78,7 @@ struct SequenceRun {
   driver::Sequence sequence;
   driver::SequenceResult result;
   driver::SequenceChartsOutcome charts;
+  driver::SequencePage page;  // sequence.html and its video
 };
 
 SequenceRun play_sequence(const RunOptions& o, const driver::SceneSource& scene,
@@ -96,7 +98,8 @@ SequenceRun play_sequence(const RunOptions& o, const driver::SceneSource& scene,
       [&out](int index, const driver::FrameResult& frame) {
         driver::write_png(frame.output.frame, out / kFramesDir / fmt::format("{:04d}.png", index));
       },
-      o.reference);
+      o.reference ? driver::rendered_references(*r.gpu_scene, o.device.threads)
+                  : driver::SequenceReferences{});
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (const driver::SequenceResult::Notice& notice : r.result.notices) {
@@ -120,14 +123,14 @@ SequenceRun play_sequence(const RunOptions& o, const driver::SceneSource& scene,
       o.device.threads > 0 ? o.device.threads
                            : static_cast<int>(std::thread::hardware_concurrency()),
       r.result.passes_replayed, r.result.passes_replayed + r.result.passes_rendered);
-  if (o.charts) {
-    r.charts = driver::write_sequence_charts(
-        r.sequence, r.result,
-        fmt::format("{} on {}, {}x{}", scene.label(), device.name, config.width, config.height),
-        out);
-  }
+  const std::string title =
+      fmt::format("{} on {}, {}x{}", scene.label(), device.name, config.width, config.height);
+  if (o.charts) r.charts = driver::write_sequence_charts(r.sequence, r.result, title, out);
   if (!r.charts.note.empty())
     fmt::print(stderr, "skinsim run: no sequence charts: {}\n", r.charts.note);
+  r.page =
+      driver::write_sequence_page(out, kFramesDir, r.sequence, r.result, title, r.charts.written);
+  if (!r.page.note.empty()) fmt::print(stderr, "skinsim run: note: {}\n", r.page.note);
   if (o.reference) {
     const nlohmann::json summary = driver::sequence_json(r.sequence, r.result);
     if (summary.contains("worst_quality")) {
@@ -223,6 +226,7 @@ int run(const RunOptions& o) {
   if (sequence) {
     written.push_back(std::string(kFramesDir) + "/*.png");
     written.insert(written.end(), sequence->charts.written.begin(), sequence->charts.written.end());
+    written.insert(written.end(), sequence->page.written.begin(), sequence->page.written.end());
   }
   driver::write_png(result.output.frame, out / "frame.png");
   for (const pipeline::NamedTarget& t : result.output.intermediates) {

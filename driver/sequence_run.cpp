@@ -98,14 +98,24 @@ FrameMsStats frame_ms_stats(const std::vector<double>& frame_ms) {
   return s;
 }
 
+SequenceReferences rendered_references(const pipeline::GpuScene& scene, int threads) {
+  return [&scene, threads](const pipeline::PipelineConfig& frame) {
+    return reference_images(pipeline::render_reference(scene, frame, threads));
+  };
+}
+
 SequenceResult run_sequence(const pipeline::GpuScene& scene, const Sequence& sequence,
                             const pipeline::PipelineConfig& config,
                             const gpu_model::DeviceProfile& device, int threads,
-                            const SequenceFrameSink& sink, bool reference) {
+                            const SequenceFrameSink& sink, const SequenceReferences& references,
+                            sim::PassMemo* shared_memo) {
   SequenceResult r;
   // The previous frame and its reference, for the temporal step.
   std::optional<quality::Image> previous_frame, previous_reference;
-  sim::PassMemo memo(kPassMemoBytes);
+  std::optional<sim::PassMemo> own_memo;
+  if (!shared_memo) own_memo.emplace(kPassMemoBytes);
+  sim::PassMemo& memo = shared_memo ? *shared_memo : *own_memo;
+  const sim::PassMemo::Stats before = memo.stats();
   std::vector<double> frame_ms;
   for (int i = 0; i < sequence.frames; ++i) {
     const pipeline::PipelineConfig frame_config = sequence_frame_config(sequence, i, config, scene);
@@ -130,9 +140,8 @@ SequenceResult run_sequence(const pipeline::GpuScene& scene, const Sequence& seq
         ++same->frames;
       }
     }
-    if (reference) {
-      const ReferenceImages ref =
-          reference_images(pipeline::render_reference(scene, frame_config, threads));
+    if (references) {
+      const ReferenceImages ref = references(frame_config);
       quality::Image image = to_image(frame.output.frame);
       f.quality = evaluate_quality(image, ref).metrics;
       // Temporal stability after the tLP measure of Chu et al. ("Learning temporal coherence
@@ -154,8 +163,8 @@ SequenceResult run_sequence(const pipeline::GpuScene& scene, const Sequence& seq
     r.frames.push_back(std::move(f));
   }
   r.stats = frame_ms_stats(frame_ms);
-  r.passes_replayed = memo.stats().replayed;
-  r.passes_rendered = memo.stats().rendered;
+  r.passes_replayed = memo.stats().replayed - before.replayed;
+  r.passes_rendered = memo.stats().rendered - before.rendered;
   return r;
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "tests/app/run_skinsim.h"
+#include "tests/scoped_env.h"
 
 namespace {
 
@@ -81,6 +82,31 @@ TEST(SequenceCli, PushInWritesFramesAndTheDistribution) {
   EXPECT_TRUE(s.at("per_frame").at(1).at("temporal").contains("error"));
   EXPECT_TRUE(s.at("temporal").contains("mean_error"));
   EXPECT_TRUE(s.contains("worst_quality"));
+}
+
+TEST(SequenceCli, PageShowsTheVideoOrSaysWhyNot) {
+  const auto dir = temp_dir("video");
+  const std::string args =
+      "run --sequence head-turn --frames 2 --no-reference --no-charts" + kSmall;
+  const Result r = run(args + " --out " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  ASSERT_TRUE(std::filesystem::exists(dir / "sequence.webm")) << r.output;
+  std::ifstream page(dir / "sequence.html");
+  const std::string html((std::istreambuf_iterator<char>(page)), {});
+  EXPECT_NE(html.find("<video src=\"sequence.webm\""), std::string::npos) << html;
+
+  const auto bare = temp_dir("no_video");
+  {
+    const skinsim::test::ScopedEnv no_ffmpeg("PATH", "/nonexistent");
+    const Result n = run(args + " --out " + bare.string());
+    ASSERT_EQ(n.exit_code, 0) << n.output;
+    EXPECT_NE(n.output.find("ffmpeg is not installed"), std::string::npos) << n.output;
+  }
+  EXPECT_FALSE(std::filesystem::exists(bare / "sequence.webm"));
+  EXPECT_TRUE(std::filesystem::exists(bare / "frames" / "0001.png"));
+  std::ifstream bare_page(bare / "sequence.html");
+  const std::string bare_html((std::istreambuf_iterator<char>(bare_page)), {});
+  EXPECT_NE(bare_html.find("No video: ffmpeg is not installed"), std::string::npos) << bare_html;
 }
 
 }  // namespace
