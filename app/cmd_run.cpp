@@ -19,6 +19,7 @@
 #include "driver/images.h"
 #include "driver/reference_cache.h"
 #include "driver/result_json.h"
+#include "driver/sequence_animation.h"
 #include "driver/sequence_charts.h"
 #include "driver/sequence_page.h"
 #include "driver/sequence_run.h"
@@ -89,6 +90,11 @@ SequenceRun play_sequence(const RunOptions& o, const driver::SceneSource& scene,
   r.sequence = driver::load_sequence(o.sequence, o.frames, o.fps);
   driver::check_sequence(r.sequence, config);
   const float aspect = static_cast<float>(config.width) / static_cast<float>(config.height);
+  std::optional<driver::AnimatedScene> animated;
+  if (r.sequence.animated) {
+    animated.emplace(scene, aspect, r.sequence);
+    driver::fit_to_animation(r.sequence, animated->animation());
+  }
   r.scene = std::make_unique<scene::Scene>(driver::load_scene(scene, aspect));
   r.gpu_scene = std::make_unique<pipeline::GpuScene>(*r.scene);
   std::filesystem::create_directories(out / kFramesDir);
@@ -98,8 +104,10 @@ SequenceRun play_sequence(const RunOptions& o, const driver::SceneSource& scene,
       [&out](int index, const driver::FrameResult& frame) {
         driver::write_png(frame.output.frame, out / kFramesDir / fmt::format("{:04d}.png", index));
       },
-      o.reference ? driver::rendered_references(*r.gpu_scene, o.device.threads)
-                  : driver::SequenceReferences{});
+      o.reference ? driver::rendered_references(o.device.threads) : driver::SequenceReferences{},
+      nullptr,
+      animated ? [&animated](double t) -> const pipeline::GpuScene& { return animated->at(t); }
+               : driver::SceneAtTime{});
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (const driver::SequenceResult::Notice& notice : r.result.notices) {

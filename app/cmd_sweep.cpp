@@ -228,6 +228,10 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
   std::optional<driver::Sequence> sequence;
   if (!o.sequence.empty()) {
     sequence = driver::load_sequence(o.sequence, o.frames, o.fps);
+    if (sequence->animated) {
+      throw driver::SweepError("--sequence " + o.sequence +
+                               ": a glTF animation plays in `skinsim run` only, not yet in sweeps");
+    }
     for (const driver::SweepConfig& c : configs) driver::check_sequence(*sequence, c.config);
   }
 

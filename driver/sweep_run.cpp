@@ -160,12 +160,13 @@ std::uint64_t expected_host_cost(const pipeline::PipelineConfig& resolved) {
 }
 
 // A sequence's per-frame references, kept in refs/ like the sweep's own.
-SequenceReferences sweep_references(const pipeline::GpuScene& scene, const nlohmann::json& scene_fp,
-                                    const fs::path& dir, const SweepRunOptions& o) {
-  return [&scene, &scene_fp, dir, &o](const pipeline::PipelineConfig& frame) {
-    return cached_reference(scene, frame, scene_fp, dir / "refs", o.threads,
-                            o.reference_store ? &*o.reference_store : nullptr);
-  };
+SequenceReferences sweep_references(const nlohmann::json& scene_fp, const fs::path& dir,
+                                    const SweepRunOptions& o) {
+  return
+      [&scene_fp, dir, &o](const pipeline::GpuScene& scene, const pipeline::PipelineConfig& frame) {
+        return cached_reference(scene, frame, scene_fp, dir / "refs", o.threads,
+                                o.reference_store ? &*o.reference_store : nullptr);
+      };
 }
 
 }  // namespace
@@ -362,7 +363,7 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
         if (options.sequence) {
           PlayedConfig played = play_sweep_config(
               *job.scene, *options.sequence, job.resolved, *job.device, arena.max_concurrency(),
-              memo, sweep_references(*job.scene, scene_fp, dir, options), dir, job.config->id);
+              memo, sweep_references(scene_fp, dir, options), dir, job.config->id);
           next->frame = std::move(played.cost_frame);
           next->image = std::move(played.shown_image);
           next->sequence = std::move(played.summary);

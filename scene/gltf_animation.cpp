@@ -124,6 +124,11 @@ glm::vec4 sample(const AnimationChannel& c, float t) {
 
 }  // namespace
 
+bool NodeAnimation::moves(int node) const {
+  return std::any_of(channels.begin(), channels.end(),
+                     [node](const AnimationChannel& c) { return c.node == node; });
+}
+
 glm::mat4 NodeTrs::matrix() const {
   return glm::scale(glm::translate(glm::mat4(1.0f), translation) * glm::mat4_cast(rotation), scale);
 }

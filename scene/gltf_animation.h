@@ -35,6 +35,7 @@ struct NodeAnimation {
   std::vector<AnimationChannel> channels;
   double duration_s = 0.0;           // the last keyframe over all channels
   std::vector<std::string> skipped;  // channels not played, e.g. "channels[2]: weights"
+  bool moves(int node) const;
 };
 
 // A node's local transform, T * R * S.
