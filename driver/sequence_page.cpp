@@ -49,7 +49,7 @@ SequencePage write_sequence_page(const std::filesystem::path& dir, const std::st
   }
   for (const std::string& chart : charts) {
     if (chart.ends_with(".png"))
-      h += "<p><img src=\"" + escape_markup(chart) + "\" alt=\"\"></p>\n";
+      h += "<p><img src=\"" + escape_markup(chart) + "\" alt=\"\" style=\"max-width:100%\"></p>\n";
   }
   io::write_file_atomically((dir / "sequence.html").string(), h + "</body>\n</html>\n");
   page.written.push_back("sequence.html");
