@@ -19,7 +19,9 @@
 #include "driver/images.h"
 #include "driver/reference_cache.h"
 #include "driver/result_json.h"
+#include "driver/sequence_animation.h"
 #include "driver/sequence_charts.h"
+#include "driver/sequence_page.h"
 #include "driver/sequence_run.h"
 #include "driver/truth_judge.h"
 #include "gpu_model/sensitivity.h"
@@ -78,6 +80,7 @@ struct SequenceRun {
   driver::Sequence sequence;
   driver::SequenceResult result;
   driver::SequenceChartsOutcome charts;
+  driver::SequencePage page;  // sequence.html and its video
 };
 
 SequenceRun play_sequence(const RunOptions& o, const driver::SceneSource& scene,
@@ -88,6 +91,11 @@ SequenceRun play_sequence(const RunOptions& o, const driver::SceneSource& scene,
   r.sequence = driver::load_sequence(o.sequence, o.frames, o.fps);
   driver::check_sequence(r.sequence, config);
   const float aspect = static_cast<float>(config.width) / static_cast<float>(config.height);
+  std::optional<driver::AnimatedScene> animated;
+  if (r.sequence.animated) {
+    animated.emplace(scene, aspect, r.sequence);
+    driver::fit_to_animation(r.sequence, animated->animation());
+  }
   r.scene = std::make_unique<scene::Scene>(driver::load_scene(scene, aspect));
   r.gpu_scene = std::make_unique<pipeline::GpuScene>(*r.scene);
   std::filesystem::create_directories(out / kFramesDir);
@@ -97,7 +105,10 @@ SequenceRun play_sequence(const RunOptions& o, const driver::SceneSource& scene,
       [&out](int index, const driver::FrameResult& frame) {
         driver::write_png(frame.output.frame, out / kFramesDir / fmt::format("{:04d}.png", index));
       },
-      o.reference);
+      o.reference ? driver::rendered_references(o.device.threads) : driver::SequenceReferences{},
+      nullptr,
+      animated ? [&animated](double t) -> const pipeline::GpuScene& { return animated->at(t); }
+               : driver::SceneAtTime{});
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (const driver::SequenceResult::Notice& notice : r.result.notices) {
@@ -121,14 +132,14 @@ SequenceRun play_sequence(const RunOptions& o, const driver::SceneSource& scene,
       o.device.threads > 0 ? o.device.threads
                            : static_cast<int>(std::thread::hardware_concurrency()),
       r.result.passes_replayed, r.result.passes_replayed + r.result.passes_rendered);
-  if (o.charts) {
-    r.charts = driver::write_sequence_charts(
-        r.sequence, r.result,
-        fmt::format("{} on {}, {}x{}", scene.label(), device.name, config.width, config.height),
-        out);
-  }
+  const std::string title =
+      fmt::format("{} on {}, {}x{}", scene.label(), device.name, config.width, config.height);
+  if (o.charts) r.charts = driver::write_sequence_charts(r.sequence, r.result, title, out);
   if (!r.charts.note.empty())
     fmt::print(stderr, "skinsim run: no sequence charts: {}\n", r.charts.note);
+  r.page =
+      driver::write_sequence_page(out, kFramesDir, r.sequence, r.result, title, r.charts.written);
+  if (!r.page.note.empty()) fmt::print(stderr, "skinsim run: note: {}\n", r.page.note);
   if (o.reference) {
     const nlohmann::json summary = driver::sequence_json(r.sequence, r.result);
     if (summary.contains("worst_quality")) {
@@ -225,6 +236,7 @@ int run(const RunOptions& o) {
   if (sequence) {
     written.push_back(std::string(kFramesDir) + "/*.png");
     written.insert(written.end(), sequence->charts.written.begin(), sequence->charts.written.end());
+    written.insert(written.end(), sequence->page.written.begin(), sequence->page.written.end());
   }
   driver::write_png(result.output.frame, out / "frame.png");
   for (const pipeline::NamedTarget& t : result.output.intermediates) {

@@ -19,6 +19,7 @@
 #include "app/cli_options.h"
 #include "app/commands.h"
 #include "driver/frame_job.h"
+#include "driver/sequence.h"
 #include "driver/sweep_file.h"
 #include "driver/sweep_report.h"
 #include "driver/sweep_results.h"
@@ -81,6 +82,9 @@ struct SweepOptions {
   bool merge = false;
   std::string truth;                 // --truth: "cached", a file, or none
   driver::TruthChoice truth_choice;  // --truth-samples, --truth-seed
+  std::string sequence;              // --sequence: every configuration plays it; empty: one frame
+  int frames = 0;                    // --frames, --fps: 0 = the sequence's own
+  double fps = 0.0;
 };
 
 // `--out ""` would write into the current directory, and a file there cannot hold results.
@@ -224,6 +228,15 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
   driver::require_cached_for_choice(o.truth, o.truth_choice);
   const driver::SweepSpec spec = build_spec(o, cmd);
   const std::vector<driver::SweepConfig> configs = driver::expand_sweep(spec, o.max_configs);
+  std::optional<driver::Sequence> sequence;
+  if (!o.sequence.empty()) {
+    sequence = driver::load_sequence(o.sequence, o.frames, o.fps);
+    if (sequence->animated) {
+      throw driver::SweepError("--sequence " + o.sequence +
+                               ": a glTF animation plays in `skinsim run` only, not yet in sweeps");
+    }
+    for (const driver::SweepConfig& c : configs) driver::check_sequence(*sequence, c.config);
+  }
 
   driver::SweepRunOptions run_options;
   run_options.out_dir = o.out;
@@ -232,6 +245,7 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
   run_options.cancel = &g_cancel;
   run_options.compute = !o.merge;
   run_options.reference_store = driver::ReferenceStore::from_environment();
+  run_options.sequence = sequence ? &*sequence : nullptr;
   // Given, even empty: `--shard ""` (an unset $K in a script) must not run the whole sweep.
   if (cmd.get_option("--shard")->count()) {
     run_options.shard = driver::parse_shard(o.shard, "--shard");
@@ -323,6 +337,8 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
     written.push_back(report.charts_drawn ? "report.html + charts" : "report.html (no charts)");
   }
   if (!report.note.empty()) fmt::print(stderr, "skinsim sweep: note: {}\n", report.note);
+  if (sequence)
+    fmt::print("recommendations hold each configuration's p95 frame time to the budget\n");
   print_recommendations(table);
   if (!truth.is_null()) {
     add_truth_to_results(o.out, truth);
@@ -408,6 +424,18 @@ Command add_sweep_command(CLI::App& app) {
                   "per group whether the recommendation "
                   "and the visibility verdicts stay (docs/validation.md)");
   add_truth_choice_options(*cmd, o->truth_choice);
+  CLI::Option* sequence =
+      cmd->add_option(
+             "--sequence", o->sequence,
+             "Every configuration plays a sequence (push-in, head-turn, light-orbit or a "
+             "sequence file); its p95 frame time is held to the budget (docs/sequences.md)")
+          ->excludes("--truth");
+  cmd->add_option("--frames", o->frames, "Frames of the sequence (default: the sequence's own)")
+      ->check(integer_in(1, driver::kMaxSequenceFrames))
+      ->needs(sequence);
+  cmd->add_option("--fps", o->fps, "Frame rate of the sequence (default: the sequence's own)")
+      ->check(positive_real(1000.0))
+      ->needs(sequence);
   cmd->add_flag("--merge", o->merge,
                 "Compute nothing: write the tables and report from the configurations in --out "
                 "(after the shards), naming those missing and their shard; exit 1 if any is")

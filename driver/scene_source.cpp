@@ -32,6 +32,8 @@ scene::Scene load_scene(const SceneSource& source, float aspect) {
   o.skin_materials = source.skin_materials;
   o.skin_albedo = source.skin_albedo;
   o.warn = source.warn;
+  o.animation = source.animation;
+  o.animation_time_s = source.animation_time_s;
   return scene::load_gltf(source.path, o);
 }
 

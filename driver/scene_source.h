@@ -8,6 +8,10 @@
 
 #include "scene/scene.h"
 
+namespace skinsim::scene {
+struct NodeAnimation;
+}
+
 namespace skinsim::driver {
 
 // The largest scene scale a user may give (units per millimetre): a nanometre-unit scene; any
@@ -23,6 +27,9 @@ struct SceneSource {
   std::string skin_albedo;    // --skin-albedo (scene/skin_albedo.h); empty: the file's colours
   // Receives the loader's warnings (scene::LoadOptions::warn); empty: printed to stderr.
   std::function<void(const std::string&)> warn;
+  // Set: the glTF posed by this animation at animation_time_s (a sequence's frame).
+  const scene::NodeAnimation* animation = nullptr;
+  double animation_time_s = 0.0;
   bool builtin() const { return path.empty() || path == "builtin"; }
   std::string label() const { return builtin() ? "builtin:default-head" : path; }
 };

@@ -52,9 +52,12 @@ Sequence preset(const std::string& name) {
     s.frames = 120;
     s.loops = true;
     s.tracks = {{.knob = "light_azimuth_deg", .relative = true, .by = 360.0}};
+  } else if (name == "animation" || name.starts_with("animation:")) {
+    s.animated = true;
+    s.animation = name.substr(std::min(name.size(), std::string("animation:").size()));
   } else {
     throw SequenceError(
-        fmt::format("--sequence: unknown sequence '{}': expected one of {} or a "
+        fmt::format("--sequence: unknown sequence '{}': expected one of {}, animation[:NAME] or a "
                     "sequence file (.toml)",
                     name, fmt::join(sequence_preset_names(), ", ")));
   }

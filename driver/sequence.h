@@ -8,6 +8,8 @@
 //                face turns under it (60 frames at 30 fps)
 //   light-orbit  light_azimuth_deg once round the head (120 frames at 30 fps; the last frame
 //                stops one step short of the first, so the sequence loops)
+//   animation[:NAME]  the glTF scene's own animation NAME (default: its first) at 30 fps, from
+//                0 s to its last keyframe (sequence_animation.h)
 //
 // A sequence file (TOML, docs/sequences.md) has a [sequence] table naming a preset or its own
 // tracks.
@@ -47,6 +49,10 @@ struct Sequence {
   // first and last frames are the path's ends.
   bool loops = false;
   std::vector<SequenceTrack> tracks;
+  // `--sequence animation[:NAME]`: the scene's own glTF animation (sequence_animation.h),
+  // `animation` its name ("" = the file's first); frames 0 until fitted to its duration.
+  bool animated = false;
+  std::string animation;
 
   double time_s(int frame) const { return frame / fps; }
   // How far along the path frame `frame` is, 0..1.

@@ -1,5 +1,7 @@
 #include "driver/sequence_run.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -98,18 +100,36 @@ FrameMsStats frame_ms_stats(const std::vector<double>& frame_ms) {
   return s;
 }
 
+SequenceReferences rendered_references(int threads) {
+  return [threads](const pipeline::GpuScene& scene, const pipeline::PipelineConfig& frame) {
+    return reference_images(pipeline::render_reference(scene, frame, threads));
+  };
+}
+
 SequenceResult run_sequence(const pipeline::GpuScene& scene, const Sequence& sequence,
                             const pipeline::PipelineConfig& config,
                             const gpu_model::DeviceProfile& device, int threads,
-                            const SequenceFrameSink& sink, bool reference) {
+                            const SequenceFrameSink& sink, const SequenceReferences& references,
+                            sim::PassMemo* shared_memo, const SceneAtTime& animated) {
+  if (sequence.animated && !animated) {
+    throw SequenceError(fmt::format(
+        "sequence '{}' plays the scene's glTF animation: only `skinsim run --sequence` plays "
+        "one",
+        sequence.name));
+  }
   SequenceResult r;
   // The previous frame and its reference, for the temporal step.
   std::optional<quality::Image> previous_frame, previous_reference;
-  sim::PassMemo memo(kPassMemoBytes);
+  std::optional<sim::PassMemo> own_memo;
+  if (!shared_memo) own_memo.emplace(kPassMemoBytes);
+  sim::PassMemo& memo = shared_memo ? *shared_memo : *own_memo;
+  const sim::PassMemo::Stats before = memo.stats();
   std::vector<double> frame_ms;
   for (int i = 0; i < sequence.frames; ++i) {
-    const pipeline::PipelineConfig frame_config = sequence_frame_config(sequence, i, config, scene);
-    FrameResult frame = run_frame(scene, frame_config, device, threads, {}, &memo);
+    const pipeline::GpuScene& frame_scene = animated ? animated(sequence.time_s(i)) : scene;
+    const pipeline::PipelineConfig frame_config =
+        sequence_frame_config(sequence, i, config, frame_scene);
+    FrameResult frame = run_frame(frame_scene, frame_config, device, threads, {}, &memo);
     SequenceFrame f;
     f.index = i;
     f.time_s = sequence.time_s(i);
@@ -130,9 +150,8 @@ SequenceResult run_sequence(const pipeline::GpuScene& scene, const Sequence& seq
         ++same->frames;
       }
     }
-    if (reference) {
-      const ReferenceImages ref =
-          reference_images(pipeline::render_reference(scene, frame_config, threads));
+    if (references) {
+      const ReferenceImages ref = references(frame_scene, frame_config);
       quality::Image image = to_image(frame.output.frame);
       f.quality = evaluate_quality(image, ref).metrics;
       // Temporal stability after the tLP measure of Chu et al. ("Learning temporal coherence
@@ -154,8 +173,8 @@ SequenceResult run_sequence(const pipeline::GpuScene& scene, const Sequence& seq
     r.frames.push_back(std::move(f));
   }
   r.stats = frame_ms_stats(frame_ms);
-  r.passes_replayed = memo.stats().replayed;
-  r.passes_rendered = memo.stats().rendered;
+  r.passes_replayed = memo.stats().replayed - before.replayed;
+  r.passes_rendered = memo.stats().rendered - before.rendered;
   return r;
 }
 
@@ -209,6 +228,7 @@ nlohmann::json sequence_json(const Sequence& sequence, const SequenceResult& res
       {"reuse",
        {{"passes_replayed", result.passes_replayed}, {"passes_rendered", result.passes_rendered}}},
       {"per_frame", frames}};
+  if (sequence.animated) out["animation"] = sequence.animation;
   if (const std::optional<nlohmann::json> t = temporal_json(sequence, result)) out["temporal"] = *t;
   if (const std::optional<nlohmann::json> q = worst_quality_json(sequence, result)) {
     out["worst_quality"] = *q;

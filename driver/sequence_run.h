@@ -15,7 +15,12 @@
 #include <vector>
 
 #include "driver/frame_job.h"
+#include "driver/frame_quality.h"
 #include "driver/sequence.h"
+
+namespace skinsim::sim {
+class PassMemo;
+}
 
 namespace skinsim::driver {
 
@@ -69,14 +74,29 @@ struct SequenceResult {
 // Called with each frame as it is finished, in order (to write its image, say).
 using SequenceFrameSink = std::function<void(int index, const FrameResult&)>;
 
+// Each frame's reference, for the frame's scene and configuration: rendered
+// (rendered_references), or a sweep's, kept in its refs/ so configurations that share the
+// reference knobs share it.
+using SequenceReferences = std::function<ReferenceImages(const pipeline::GpuScene& scene,
+                                                         const pipeline::PipelineConfig& frame)>;
+SequenceReferences rendered_references(int threads);
+
+// The scene posed at a time (an animated glTF, sequence_animation.h); the reference it returns
+// is valid until the next call.
+using SceneAtTime = std::function<const pipeline::GpuScene&(double time_s)>;
+
 // `config` resolved (resolve_config) and checked against the sequence (check_sequence).
-// With `reference`, each frame's reference is rendered too, for its quality and the temporal
-// stability: how much more (or less) the frame changes from the previous one than the
-// reference does, in FLIP (sequence_run.cpp says why).
+// With `references`, each frame is measured against its reference, for its quality and the
+// temporal stability: how much more (or less) the frame changes from the previous one than
+// the reference does, in FLIP (sequence_run.cpp says why). `memo` (a sweep's, shared by its
+// configurations) replaces the sequence's own. With `animated` (required by an animated
+// sequence), each frame is of the scene it gives at the frame's time instead of `scene`.
 SequenceResult run_sequence(const pipeline::GpuScene& scene, const Sequence& sequence,
                             const pipeline::PipelineConfig& config,
                             const gpu_model::DeviceProfile& device, int threads,
-                            const SequenceFrameSink& sink = {}, bool reference = false);
+                            const SequenceFrameSink& sink = {},
+                            const SequenceReferences& references = {},
+                            sim::PassMemo* memo = nullptr, const SceneAtTime& animated = {});
 
 // result.json's "sequence" section (docs/outputs.md).
 nlohmann::json sequence_json(const Sequence& sequence, const SequenceResult& result);

@@ -15,6 +15,7 @@
 
 #include "driver/frame_job.h"
 #include "driver/images.h"
+#include "driver/sequence_sweep.h"
 #include "driver/skin_diagnosis.h"
 #include "driver/sweep_config_result.h"
 #include "driver/sweep_progress.h"
@@ -110,7 +111,8 @@ std::string non_finite_figure(const reports::ConfigResult& row) {
 // Measures a rendered configuration and writes its files; the JSON goes last, so a
 // configuration counts as finished only once all its files are in place. Throws SweepError when
 // a figure is not a finite number.
-void finish(const fs::path& dir, const Job& job, const FrameResult& frame, quality::Image image) {
+void finish(const fs::path& dir, const Job& job, const FrameResult& frame, quality::Image image,
+            const std::optional<reports::SequenceSummary>& sequence) {
   const std::string& id = job.config->id;
   FrameQuality measured = evaluate_quality(image, *job.reference);
   // Each PNG's deflate stream is encoded by one thread: the two at once, each with its
@@ -131,6 +133,7 @@ void finish(const fs::path& dir, const Job& job, const FrameResult& frame, quali
   // config_row reads the metrics; the error map went into its PNG above.
   stored.row = config_row(*job.config, frame, measured, config_frame_path(id),
                           config_error_path(id), job.reference_image);
+  if (sequence) reports::apply_sequence_summary(stored.row, *sequence);
   if (const std::string bad = non_finite_figure(stored.row); !bad.empty()) throw SweepError(bad);
   stored.heatmap = pass_heatmap(frame, kHeatmapPass, id);
   add_sensitivity(frame, *job.device, stored);
@@ -145,7 +148,8 @@ struct Finishing {
   Clock::time_point done;   // of its files
   FrameResult frame;        // its counters and timing; its render targets are let go
   quality::Image image;     // its frame, converted
-  std::string failure;      // why it could not be measured, if it could not
+  std::optional<reports::SequenceSummary> sequence;  // of a sweep over a sequence
+  std::string failure;  // why it could not be measured, if it could not
 };
 
 // What a configuration is expected to cost the host, for balancing shards: its output pixels
@@ -153,6 +157,16 @@ struct Finishing {
 std::uint64_t expected_host_cost(const pipeline::PipelineConfig& resolved) {
   return static_cast<std::uint64_t>(resolved.width) * static_cast<std::uint64_t>(resolved.height) *
          pipeline::find_technique(resolved.technique).host_ns_per_pixel;
+}
+
+// A sequence's per-frame references, kept in refs/ like the sweep's own.
+SequenceReferences sweep_references(const nlohmann::json& scene_fp, const fs::path& dir,
+                                    const SweepRunOptions& o) {
+  return
+      [&scene_fp, dir, &o](const pipeline::GpuScene& scene, const pipeline::PipelineConfig& frame) {
+        return cached_reference(scene, frame, scene_fp, dir / "refs", o.threads,
+                                o.reference_store ? &*o.reference_store : nullptr);
+      };
 }
 
 }  // namespace
@@ -216,6 +230,7 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
     job.fingerprint = config_fingerprint(c, scene_fp, job.resolved.width, job.resolved.height);
     job.fingerprint["device_profile"] = device_fingerprints.at(c.device);
     job.fingerprint["build"] = build_identity();  // another skinsim may compute other figures
+    if (options.sequence) job.fingerprint["sequence"] = sequence_fingerprint(*options.sequence);
     summary.fingerprints[c.id] = job.fingerprint;
     if (shard_of[index] != this_shard) continue;  // another shard's
     ++summary.this_part;
@@ -269,14 +284,19 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
       s.gpu = std::make_unique<pipeline::GpuScene>(*s.scene);
     }
     job.scene = s.gpu.get();
-    const std::string stem = reference_stem(job.resolved, scene_fp);
+    // A sequence's configurations show, and are compared on, one frame (shown_frame).
+    const pipeline::PipelineConfig shown =
+        options.sequence ? sequence_frame_config(*options.sequence, shown_frame(*options.sequence),
+                                                 job.resolved, *s.gpu)
+                         : job.resolved;
+    const std::string stem = reference_stem(shown, scene_fp);
     job.reference_image = reference_image_path(stem);
     auto it = references.find(stem);
     if (it == references.end()) {
       ReferenceSource source = ReferenceSource::kKept;
       ReferenceImages images;
       arena.execute([&] {
-        images = cached_reference(*s.gpu, job.resolved, scene_fp, dir / "refs", options.threads,
+        images = cached_reference(*s.gpu, shown, scene_fp, dir / "refs", options.threads,
                                   options.reference_store ? &*options.reference_store : nullptr,
                                   &source, options.progress);
         images.flip_features = std::make_shared<const quality::FlipFeatures>(images.image);
@@ -340,14 +360,28 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
       next->job = &job;
       next->start = Clock::now();
       try {
-        next->frame =
-            run_frame(*job.scene, job.resolved, *job.device, arena.max_concurrency(), {}, &memo);
+        if (options.sequence) {
+          PlayedConfig played = play_sweep_config(
+              *job.scene, *options.sequence, job.resolved, *job.device, arena.max_concurrency(),
+              memo, sweep_references(scene_fp, dir, options), dir, job.config->id);
+          next->frame = std::move(played.cost_frame);
+          next->image = std::move(played.shown_image);
+          next->sequence = std::move(played.summary);
+          const std::vector<std::string>& said = summary.warnings;
+          if (!played.video_note.empty() &&
+              std::find(said.begin(), said.end(), played.video_note) == said.end()) {
+            summary.warnings.push_back(played.video_note);
+          }
+        } else {
+          next->frame =
+              run_frame(*job.scene, job.resolved, *job.device, arena.max_concurrency(), {}, &memo);
+          next->image = to_image(next->frame.output.frame);
+        }
       } catch (const UserError& e) {
         complete();
         summary.failed.push_back({job.config->id, e.what()});
         continue;
       }
-      next->image = to_image(next->frame.output.frame);
       next->frame.output.frame = {};
       next->frame.output.intermediates.clear();
       complete();
@@ -358,7 +392,7 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
       finishing = std::move(next);
       finishing_task.run([&dir, f = finishing.get()] {
         try {
-          finish(dir, *f->job, f->frame, std::move(f->image));
+          finish(dir, *f->job, f->frame, std::move(f->image), f->sequence);
         } catch (const UserError& e) {
           f->failure = e.what();
         }

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "driver/reference_store.h"
+#include "driver/sequence.h"
 #include "driver/sweep_shard.h"
 #include "driver/sweep_spec.h"
 
@@ -43,6 +44,8 @@ struct SweepRunOptions {
   std::optional<ReferenceStore> reference_store;
   // Called (from a worker thread, one call at a time) after each configuration is written.
   std::function<void(const std::string& id)> on_finished;
+  // Set: each configuration plays this sequence (driver/sequence_sweep.h).
+  const Sequence* sequence = nullptr;
 };
 
 // A configuration that ran but could not be measured (an error, or a figure that is not a

@@ -79,6 +79,8 @@ std::vector<std::string> sweep_csv_columns(const SweepTable& table) {
   cols.insert(cols.end(),
               {"visible_vs_reference", "group", "finest", "knob_flip", "knob_visible_px",
                "knob_visible", "best", "vs_best_flip", "vs_best_visible_px", "vs_best_visible"});
+  const std::vector<std::string> sequence = sequence_csv_columns(table);
+  cols.insert(cols.end(), sequence.begin(), sequence.end());
   std::set<std::string> seen;
   for (const std::string& col : cols) {
     if (!seen.insert(col).second) {
@@ -121,6 +123,8 @@ std::string sweep_csv(const SweepTable& table) {
       cells.insert(cells.end(), {against->against, number(against->flip_mean),
                                  number(against->visible_px), yes_no(against->visible)});
     }
+    const std::vector<std::string> sequence = sequence_csv_cells(table, r);
+    cells.insert(cells.end(), sequence.begin(), sequence.end());
     append_record(out, cells);
   }
   return out;

@@ -498,10 +498,11 @@ std::string write_report(const SweepTable& table, const std::string& dir,
           kImageCompareStyle + "</style>\n</head>\n";
   const std::string comparison = comparison_section(table, options);
   page += "<body>\n" + header_section(table, options) + verdicts_section(table, options) +
-          recommendation_section(table, options, recommendations) + comparison +
-          charts_section(figures, options.draw_charts) + timeline_section(table, chosen) +
-          techniques_section(table, options) + table_section(table, options, chosen) +
-          thumbnails_section(table, dir) + assumptions_section(table);
+          recommendation_section(table, options, recommendations) + sequence_sweep_section(table) +
+          comparison + charts_section(figures, options.draw_charts) +
+          timeline_section(table, chosen) + techniques_section(table, options) +
+          table_section(table, options, chosen) + thumbnails_section(table, dir) +
+          assumptions_section(table);
   if (options.write_data_files) {
     page +=
         "<h2>Data</h2>\n<p><a href=\"results.json\">results.json</a> (everything on this "

@@ -183,6 +183,8 @@ ConfigResult parse_config(const json& j, const std::string& where) {
   c.group = opt_string(j, where, "group");
   c.vs_finest = opt_comparison(j, where, "vs_finest");
   c.vs_best = opt_comparison(j, where, "vs_best");
+  if (j.contains("sequence"))
+    c.sequence = parse_sequence_summary(j["sequence"], where + ".sequence");
   return c;
 }
 
@@ -381,6 +383,7 @@ void to_json(json& j, const ConfigResult& v) {
            {"group", v.group},
            {"vs_finest", v.vs_finest ? json(*v.vs_finest) : json(nullptr)},
            {"vs_best", v.vs_best ? json(*v.vs_best) : json(nullptr)}};
+  if (v.sequence) j["sequence"] = *v.sequence;
 }
 
 void to_json(json& j, const FrameComparison& v) {

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "reports/sequence_sweep.h"
+
 namespace skinsim::reports {
 
 // Modelled cost of one render pass of one configuration. A frame's passes, plus a "dram_wait"
@@ -86,6 +88,9 @@ struct ConfigResult {
   std::optional<FrameComparison> vs_finest;
   // Against the best configuration of the group over every technique.
   std::optional<FrameComparison> vs_best;
+  // A sweep over a sequence: the frame-time distribution and temporal stability
+  // (sequence_sweep.h; frame_ms above is then the p95).
+  std::optional<SequenceSummary> sequence;
 };
 
 // Cost of one pass per screen tile. Row-major, row 0 is the TOP row of the frame:

@@ -165,7 +165,8 @@ Scene load_gltf(const std::string& path, const LoadOptions& opts) {
   tinygltf::Model model = gltf::parse_gltf_file(path);
   check_required_extensions(model, path);
   const int scene_index = pick_scene(model, path);
-  const std::vector<gltf::PlacedNode> nodes = gltf::flatten_scene(model, scene_index, path);
+  const std::vector<gltf::PlacedNode> nodes =
+      gltf::flatten_scene(model, scene_index, path, opts.animation, opts.animation_time_s);
 
   Scene scene;
   scene.source = path;

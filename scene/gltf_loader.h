@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/gltf_animation.h"
 #include "scene/scene.h"
 
 namespace skinsim::scene {
@@ -39,6 +40,9 @@ struct LoadOptions {
   std::vector<std::string> skin_materials;
   // The CLI's --skin-albedo (skin_albedo.h): empty keeps the file's base colours.
   std::string skin_albedo;
+  // Set: the scene posed by this animation at `animation_time_s` (gltf_animation.h).
+  const NodeAnimation* animation = nullptr;
+  double animation_time_s = 0.0;
   // Receives non-fatal problems (skipped primitives, ignored lights...). Empty: stderr.
   std::function<void(const std::string&)> warn;
 };

@@ -9,6 +9,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "scene/error.h"
+#include "scene/gltf_animation.h"
 
 namespace skinsim::scene::gltf {
 namespace {
@@ -55,6 +56,26 @@ glm::mat4 local_matrix(const tinygltf::Node& n, int index, const std::string& fi
   return m;
 }
 
+// An animated node's transform at `time_s`: its own TRS with the animation's channels applied.
+glm::mat4 animated_matrix(const tinygltf::Node& n, int index, const NodeAnimation& animation,
+                          double time_s, const std::string& file) {
+  if (!n.matrix.empty()) {
+    throw SceneError(fmt::format(
+        "{}: nodes[{}].matrix: an animated node must use translation, rotation and scale", file,
+        index));
+  }
+  local_matrix(n, index, file);  // checks its TRS values
+  NodeTrs rest;
+  if (!n.translation.empty()) rest.translation = glm::vec3(glm::make_vec3(n.translation.data()));
+  if (!n.rotation.empty()) {
+    rest.rotation = glm::normalize(
+        glm::quat(static_cast<float>(n.rotation[3]), static_cast<float>(n.rotation[0]),
+                  static_cast<float>(n.rotation[1]), static_cast<float>(n.rotation[2])));
+  }
+  if (!n.scale.empty()) rest.scale = glm::vec3(glm::make_vec3(n.scale.data()));
+  return sample_node(animation, index, time_s, rest).matrix();
+}
+
 int checked_node(const tinygltf::Model& model, int node, const std::string& where,
                  const std::string& file) {
   if (node < 0 || static_cast<std::size_t>(node) >= model.nodes.size()) {
@@ -67,7 +88,8 @@ int checked_node(const tinygltf::Model& model, int node, const std::string& wher
 }  // namespace
 
 std::vector<PlacedNode> flatten_scene(const tinygltf::Model& model, int scene_index,
-                                      const std::string& file) {
+                                      const std::string& file, const NodeAnimation* animation,
+                                      double time_s) {
   if (model.nodes.size() > kMaxNodes) {
     throw SceneError(
         fmt::format("{}: {} nodes; skinsim reads at most {}", file, model.nodes.size(), kMaxNodes));
@@ -92,7 +114,10 @@ std::vector<PlacedNode> flatten_scene(const tinygltf::Model& model, int scene_in
           fmt::format("{}: {}: node {} is reached twice (it has two parents)", file, where, node));
     }
     state[node] = kOnPath;
-    const glm::mat4 world = parent * local_matrix(model.nodes[node], node, file);
+    const glm::mat4 world =
+        parent * (animation && animation->moves(node)
+                      ? animated_matrix(model.nodes[node], node, *animation, time_s, file)
+                      : local_matrix(model.nodes[node], node, file));
     out.push_back({node, world});
     stack.push_back({node, world, 0});
   };

@@ -10,6 +10,10 @@ namespace tinygltf {
 class Model;
 }
 
+namespace skinsim::scene {
+struct NodeAnimation;
+}
+
 namespace skinsim::scene::gltf {
 
 struct PlacedNode {
@@ -26,8 +30,11 @@ inline constexpr std::size_t kMaxNodes = 4096;
 // world matrix. The glTF spec (3.5.3) requires the nodes to form disjoint trees: a node
 // reached twice (a cycle or a second parent) throws SceneError, as do out-of-range
 // indices, malformed TRS/matrix values and more than kMaxNodes nodes. Iterative, so deep trees
-// cannot overflow the stack.
+// cannot overflow the stack. With `animation`, the nodes it moves take their transform at
+// `time_s` (gltf_animation.h); such a node must use TRS, not a matrix (spec 3.11).
 std::vector<PlacedNode> flatten_scene(const tinygltf::Model& model, int scene_index,
-                                      const std::string& file);
+                                      const std::string& file,
+                                      const NodeAnimation* animation = nullptr,
+                                      double time_s = 0.0);
 
 }  // namespace skinsim::scene::gltf

@@ -33,6 +33,7 @@ test_packages=(
   python3  # the budget CLI test parses JUnit XML with its standard library
   slurmctld slurmd slurm-client munge  # tests/slurm: a throwaway single-node Slurm cluster
   chromium  # tests/reports: report.html checked in a real (headless) browser
+  ffmpeg  # a sequence's frames as a VP9 WebM for the run's and the sweep's pages (docs/sequences.md)
   openimageio-tools  # oiiotool: tests/reports measures the browser's screenshots with it
   # skinsim truth (docs/validation.md): Blender's Cycles path-traces the ground truth
   # (3.4; ~80 MB download, ~264 MB installed on top of the rest)

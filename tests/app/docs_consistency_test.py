@@ -117,6 +117,8 @@ def produced_files():
     skinsim("sweep", "--scales", "1", "--luts", "16x64", "--resolutions", "64x48", "--out",
             str(WORK / "s"))
     skinsim("export", *SMALL, "--out", str(WORK / "x"))
+    skinsim("run", "--sequence", "push-in", "--frames", "2", "--no-reference", "--no-charts", *SMALL,
+            "--out", str(WORK / "q"))  # sequence.html
     # The path-traced truth of run a, one sample (Blender: scripts/install-deps.sh installs it).
     skinsim("truth", "--device", "ipad4", *SMALL, "--samples", "1", "--compare", str(run_a),
             "--out", str(WORK / "t"))

@@ -8,6 +8,8 @@
 #include <string>
 
 #include "tests/app/run_skinsim.h"
+#include "tests/scene/gltf_fixture.h"
+#include "tests/scoped_env.h"
 
 namespace {
 
@@ -81,6 +83,101 @@ TEST(SequenceCli, PushInWritesFramesAndTheDistribution) {
   EXPECT_TRUE(s.at("per_frame").at(1).at("temporal").contains("error"));
   EXPECT_TRUE(s.at("temporal").contains("mean_error"));
   EXPECT_TRUE(s.contains("worst_quality"));
+}
+
+TEST(SequenceCli, PageShowsTheVideoOrSaysWhyNot) {
+  const auto dir = temp_dir("video");
+  const std::string args =
+      "run --sequence head-turn --frames 2 --no-reference --no-charts" + kSmall;
+  const Result r = run(args + " --out " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  ASSERT_TRUE(std::filesystem::exists(dir / "sequence.webm")) << r.output;
+  std::ifstream page(dir / "sequence.html");
+  const std::string html((std::istreambuf_iterator<char>(page)), {});
+  EXPECT_NE(html.find("<video src=\"sequence.webm\""), std::string::npos) << html;
+
+  const auto bare = temp_dir("no_video");
+  {
+    const skinsim::test::ScopedEnv no_ffmpeg("PATH", "/nonexistent");
+    const Result n = run(args + " --out " + bare.string());
+    ASSERT_EQ(n.exit_code, 0) << n.output;
+    EXPECT_NE(n.output.find("ffmpeg is not installed"), std::string::npos) << n.output;
+  }
+  EXPECT_FALSE(std::filesystem::exists(bare / "sequence.webm"));
+  EXPECT_TRUE(std::filesystem::exists(bare / "frames" / "0001.png"));
+  std::ifstream bare_page(bare / "sequence.html");
+  const std::string bare_html((std::istreambuf_iterator<char>(bare_page)), {});
+  EXPECT_NE(bare_html.find("No video: ffmpeg is not installed"), std::string::npos) << bare_html;
+}
+
+// A skin quad 2 m in front of a perspective camera, with one animation "slide" moving node
+// `animated` (0: the quad, 1: the camera) 0.6 m along +x over 1 s.
+std::string slide_scene(skinsim::scene::testing::GltfFixture& f, int animated) {
+  f.add_quad_mesh(true, true);
+  f.json()["nodes"][0]["translation"] = {-0.5, -0.5, -2.0};
+  f.json()["materials"] = {{{"name", "skin"}}};
+  f.json()["meshes"][0]["primitives"][0]["material"] = 0;
+  f.json()["cameras"] = {
+      {{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"znear", 0.1}, {"zfar", 10.0}}}}};
+  f.json()["nodes"].push_back({{"camera", 0}, {"translation", {0.0, 0.0, 0.0}}});
+  f.json()["scenes"][0]["nodes"].push_back(1);
+  const nlohmann::json rest = f.json()["nodes"][animated]["translation"];
+  const std::vector<float> start = rest.get<std::vector<float>>();
+  const int input = f.add_floats({0.0f, 1.0f}, "SCALAR");
+  const int output =
+      f.add_floats({start[0], start[1], start[2], start[0] + 0.6f, start[1], start[2]}, "VEC3");
+  f.json()["animations"] = {
+      {{"name", "slide"},
+       {"samplers", nlohmann::json::array({{{"input", input}, {"output", output}}})},
+       {"channels",
+        nlohmann::json::array(
+            {{{"sampler", 0}, {"target", {{"node", animated}, {"path", "translation"}}}}})}}};
+  return f.write_gltf("slide");
+}
+
+std::string read_bytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+TEST(SequenceCli, GltfAnimationDrivesTheFrames) {
+  for (int animated : {0, 1}) {  // the quad moves, then the camera
+    skinsim::scene::testing::GltfFixture f("seq_anim" + std::to_string(animated));
+    const std::string scene = slide_scene(f, animated);
+    const auto dir = f.dir() / "out";
+    const Result r = run("run --scene " + scene + " --sequence animation:slide --fps 4" +
+                         " --resolution 64x48 --out " + dir.string());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    // 0 s to the last keyframe (1 s) at 4 fps: 5 frames.
+    EXPECT_NE(r.output.find("sequence animation:slide: 5 frames at 4 fps"), std::string::npos)
+        << r.output;
+    std::ifstream in(dir / "result.json");
+    const nlohmann::json s = nlohmann::json::parse(in).at("sequence");
+    EXPECT_EQ(s.at("animation"), "slide");
+    ASSERT_EQ(s.at("per_frame").size(), 5u);
+    EXPECT_NE(read_bytes(dir / "frames" / "0000.png"), read_bytes(dir / "frames" / "0004.png"));
+    EXPECT_GT(s.at("per_frame").at(1).at("temporal").at("reference_flip").get<double>(), 0.0);
+  }
+}
+
+TEST(SequenceCli, BadGltfAnimationExitsTwoNamingTheField) {
+  skinsim::scene::testing::GltfFixture f("seq_anim_bad");
+  const std::string scene = slide_scene(f, 0);
+  const Result missing = run("run --scene " + scene + " --sequence animation:walk" + kSmall);
+  EXPECT_EQ(missing.exit_code, 2) << missing.output;
+  EXPECT_NE(missing.output.find("no animation named 'walk' (there are: slide)"), std::string::npos)
+      << missing.output;
+  f.json()["animations"][0]["channels"][0]["sampler"] = 5;
+  const std::string broken = f.write_gltf("broken");
+  const Result sampler = run("run --scene " + broken + " --sequence animation" + kSmall);
+  EXPECT_EQ(sampler.exit_code, 2) << sampler.output;
+  EXPECT_NE(sampler.output.find("animations[0].channels[0].sampler: index 5 out of range"),
+            std::string::npos)
+      << sampler.output;
+  const Result builtin = run("run --sequence animation" + kSmall);
+  EXPECT_EQ(builtin.exit_code, 2) << builtin.output;
+  EXPECT_NE(builtin.output.find("the built-in head has no animation"), std::string::npos)
+      << builtin.output;
 }
 
 }  // namespace

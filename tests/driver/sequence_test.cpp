@@ -189,7 +189,8 @@ TEST_F(PlayedSequence, IdenticalFramesHaveNoTemporalError) {
       "[sequence]\nframes = 3\nfps = 30\n[[sequence.track]]\nknob = \"camera_yaw_deg\"\n"
       "by = 0\n",
       "still.toml");
-  const SequenceResult r = run_sequence(*gpu_scene_, still, config(), *device_, 2, {}, true);
+  const SequenceResult r =
+      run_sequence(*gpu_scene_, still, config(), *device_, 2, {}, rendered_references(2));
   ASSERT_FALSE(r.frames[0].temporal);  // no previous frame
   for (std::size_t i = 1; i < r.frames.size(); ++i) {
     ASSERT_TRUE(r.frames[i].temporal);
@@ -206,7 +207,8 @@ TEST_F(PlayedSequence, IdenticalFramesHaveNoTemporalError) {
 TEST_F(PlayedSequence, MovingFramesChangeAsTheReferenceDoes) {
   // A turning head: consecutive frames differ, and so do their references.
   const Sequence turn = load_sequence("head-turn", 3, 0.0);
-  const SequenceResult r = run_sequence(*gpu_scene_, turn, config(), *device_, 2, {}, true);
+  const SequenceResult r =
+      run_sequence(*gpu_scene_, turn, config(), *device_, 2, {}, rendered_references(2));
   ASSERT_TRUE(r.frames[1].temporal);
   EXPECT_GT(r.frames[1].temporal->frame_flip, 0.0);
   EXPECT_GT(r.frames[1].temporal->reference_flip, 0.0);

@@ -1,0 +1,61 @@
+// A glTF animation's node transforms (glTF 2.0 spec, 3.11 "Animations"): each channel moves one
+// node's translation, rotation or scale along keyframes with LINEAR (rotation: spherical
+// linear), STEP or CUBICSPLINE (Hermite, with the in- and out-tangents stored around each
+// value) interpolation. Before the first keyframe a channel holds its first value, after the
+// last its last. Morph-target weights channels are named in `skipped` and not played.
+#pragma once
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tinygltf {
+class Model;
+}
+
+namespace skinsim::scene {
+
+enum class AnimationPath { kTranslation, kRotation, kScale };
+enum class Interpolation { kLinear, kStep, kCubicSpline };
+
+struct AnimationChannel {
+  int node = -1;
+  AnimationPath path = AnimationPath::kTranslation;
+  Interpolation interpolation = Interpolation::kLinear;
+  std::vector<float> times;  // seconds, strictly increasing
+  // Per keyframe 3 (translation, scale) or 4 (rotation x, y, z, w) numbers; CUBICSPLINE keeps
+  // in-tangent, value, out-tangent per keyframe, as stored.
+  std::vector<float> values;
+};
+
+struct NodeAnimation {
+  std::string name;
+  std::vector<AnimationChannel> channels;
+  double duration_s = 0.0;           // the last keyframe over all channels
+  std::vector<std::string> skipped;  // channels not played, e.g. "channels[2]: weights"
+  bool moves(int node) const;
+};
+
+// A node's local transform, T * R * S.
+struct NodeTrs {
+  glm::vec3 translation{0.0f};
+  glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
+  glm::vec3 scale{1.0f};
+  glm::mat4 matrix() const;
+};
+
+// The animation called `name` (empty: the file's first) of a parsed file. Throws SceneError
+// starting with `file` and naming the field: no animations, no animation of that name (listing
+// those there are), a sampler or node index out of range, an unknown interpolation or path,
+// keyframe times that are not increasing, an output of the wrong length.
+NodeAnimation read_animation(const tinygltf::Model& model, const std::string& name,
+                             const std::string& file);
+// The same from a .gltf/.glb file (gltf_input.h's checks).
+NodeAnimation load_animation(const std::string& path, const std::string& name);
+
+// `rest` (the node's own TRS) with every channel of `node` applied at `time_s`.
+NodeTrs sample_node(const NodeAnimation& animation, int node, double time_s, NodeTrs rest);
+
+}  // namespace skinsim::scene
