@@ -15,7 +15,6 @@ const TechniqueSpec& ssss_technique();
 const TechniqueSpec& texture_space_technique();
 const TechniqueSpec& dipole_technique();
 const TechniqueSpec& urp_technique();
-const TechniqueSpec& lambert_technique();
 
 const std::vector<const TechniqueSpec*>& all_techniques() {
   static const std::vector<const TechniqueSpec*> all = {
@@ -28,7 +27,6 @@ const std::vector<const TechniqueSpec*>& all_techniques() {
       &texture_space_technique(),  // techniques/texture_space/
       &dipole_technique(),         // techniques/dipole/
       &urp_technique(),            // techniques/urp/
-      &lambert_technique(),        // techniques/lambert/
   };
   return all;
 }
