@@ -83,7 +83,7 @@ void BM_FlipAgainstPrepared(benchmark::State& state) {
   static const auto frames = [&f] {
     const auto frame_at = [&f](float scale) {
       pipeline::PipelineConfig config = f.config;
-      config.scale = scale;
+      config.mobile.scale = scale;
       config.lut_width = 64;
       config.lut_height = 256;
       return driver::to_image(driver::run_frame(f.gpu_scene, config, f.device, 0).output.frame);
@@ -106,7 +106,7 @@ const quality::Image& scale_eighth_frame() {
   static const quality::Image frame = [] {
     Fixture& f = fixture();
     pipeline::PipelineConfig config = f.config;
-    config.scale = 0.125f;
+    config.mobile.scale = 0.125f;
     return driver::to_image(driver::run_frame(f.gpu_scene, config, f.device, 0).output.frame);
   }();
   return frame;

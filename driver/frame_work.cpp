@@ -89,7 +89,7 @@ FrameWork estimate_frame_work(const pipeline::GpuScene& scene,
   const std::vector<std::string> knobs = pipeline::technique_knobs(config.technique);
   if (std::find(knobs.begin(), knobs.end(), "texture_space_size") != knobs.end()) {
     work.texture_space_texels =
-        static_cast<double>(config.texture_space_size) * config.texture_space_size;
+        static_cast<double>(config.texture_space.size) * config.texture_space.size;
   }
   return work;
 }
@@ -119,7 +119,7 @@ std::vector<std::string> frame_work_notes(const FrameWork& work,
         "--texture-space-size {0}: each texture-space pass renders {0}x{0} = {1:.1f} million "
         "texels, {2:.0f} times the {3} frame's pixels: this frame takes far more time and "
         "memory than its size suggests",
-        config.texture_space_size, work.texture_space_texels / 1e6,
+        config.texture_space.size, work.texture_space_texels / 1e6,
         work.texture_space_texels / (static_cast<double>(config.width) * config.height),
         frame_size(config)));
   }

@@ -8,6 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "pipeline/techniques/burley/params.h"
+#include "pipeline/techniques/dipole/params.h"
+#include "pipeline/techniques/mobile/params.h"
+#include "pipeline/techniques/preintegrated/params.h"
+#include "pipeline/techniques/texture_space/params.h"
+#include "pipeline/techniques/urp/params.h"
+#include "pipeline/techniques/wrap/params.h"
 #include "sim/op_profile.h"
 #include "sim/texture.h"
 #include "util/user_error.h"
@@ -26,11 +33,6 @@ enum class GammaMode { kSquare, kSrgb };  // gamma 2.0 (GPU Pro 5) or exact sRGB
 // a single GGX lobe, or two GGX lobes mixed in D.
 enum class SpecularModel { kKsLut, kKs, kGgx, kDualGgx };
 
-// Where the pre-integrated shader gets surface curvature: baked offline per vertex
-// (smoothed, stored in a UV-space texture) or from screen-space derivatives (noisy on
-// low-poly meshes: constant per triangle).
-enum class CurvatureSource { kVertex, kDerivatives };
-
 // Shadow-map fetch: one texel compared (nearest), or the 2x2 footprint compared and
 // filtered by the hardware (EXT_shadow_samplers with a linear filter on iOS).
 enum class ShadowFilter { kNearest, kPcf2x2 };
@@ -44,31 +46,11 @@ struct SpecularLobe {
   float weight;
 };
 
-// Size of the Burley shader's uniform tap array (each tap: a vec2 offset and an RGB weight,
-// two uniform vectors; 64 taps fit the SGX's fragment uniform file).
-inline constexpr int kMaxBurleySamples = 64;
-
-// Size of the dipole shader's uniform tap arrays (a vec2 offset and an area per tap: one
-// uniform vector).
-inline constexpr int kMaxDipoleSamples = 64;
-// Screen-space AO taps per pixel (urp).
-inline constexpr int kMaxSsaoTaps = 32;
-
 struct PipelineConfig {
   std::string technique = "mobile";  // a name from the registry (technique.h)
-  // Integration (irradiance) buffer size per axis, as a fraction of the render resolution.
-  float scale = 0.5f;
-  int lut_width = 32;    // BRDF LUT: N.H axis
-  int lut_height = 128;  // BRDF LUT: N.V axis
+  int lut_width = 32;                // BRDF LUT: N.H axis
+  int lut_height = 128;              // BRDF LUT: N.V axis
   sim::TexelFormat lut_format = sim::TexelFormat::kRGBA8;
-  int blur_iterations = 1;
-  // Standard deviation of the screen-space diffusion blur in millimetres on the skin; by
-  // default derived from the six-Gaussian profile (diffusion.h).
-  std::optional<float> blur_width_mm;
-  float normal_offset_mm = 1.0f;  // irradiance-pass vertex push along the normal
-  // Mobile blur: 0 = taps ignore depth (GPU Pro 5); > 0 = taps on a surface this many mm
-  // nearer or farther than the centre fade out (the irradiance buffer's alpha carries depth).
-  float blur_follow_mm = 0.0f;
   GammaMode gamma = GammaMode::kSquare;
   // Kelemen/Szirmay-Kalos dual lobe: d'Eon & Luebke (GPU Gems 3 ch. 14) use m = 0.3 for a
   // single lobe; the second, broader lobe models the oily layer's spread.
@@ -79,7 +61,6 @@ struct PipelineConfig {
   int height = 0;
   // MSAA samples per pixel of the framebuffer render (background, eyes, skin): 1, 2 or 4.
   int msaa = 1;
-  float lod_distance_m = 2.0f;  // beyond this camera distance the single-pass shader runs
 
   // Light and framing (pipeline/lighting.h). Unset: the scene's own.
   std::optional<float> light_azimuth_deg;    // key light around the up axis, 0 = camera side
@@ -102,29 +83,21 @@ struct PipelineConfig {
   // The ground truth every technique is measured against (reference.h).
   ReferenceProfile reference_profile = ReferenceProfile::kSixGaussian;
 
-  // Technique knobs (docs/techniques.md). Specular model of every technique's skin shader;
+  // Shading every technique shares (docs/techniques.md). Specular model of the skin shaders;
   // only ks_lut reads the BRDF LUT, so the lut and lut_format knobs matter only with it.
   SpecularModel specular = SpecularModel::kKsLut;
   // Default float precision of every technique's skin fragment shader (sim/program.h).
   sim::Precision skin_precision = sim::Precision::kHighp;
-  int preintegrated_lut_width = 64;   // N.L axis
-  int preintegrated_lut_height = 64;  // curvature axis
-  CurvatureSource curvature = CurvatureSource::kVertex;
-  float wrap = 0.5f;  // light-wrap amount w: diffuse = max(0, (N.L + w) / (1 + w))
-  int burley_samples = 16;
-  // Burley scattering distance d per channel (mm); by default fitted to the six-Gaussian
-  // profile's mean scattering radius (techniques/kernels.h).
-  std::optional<glm::vec3> burley_distance_mm;
-  // Dipole taps per pixel, the centre included (the Unity article's 30 directions).
-  int dipole_samples = 30;
-  int texture_space_size = 1024;  // texture-space diffusion buffers, texels per axis
-  bool shadow_scatter = true;     // pre-integrated: Penner's penumbra scattering
-  // urp (the URP skin shader article): screen-space AO passes and their taps, the tiling pore
-  // detail normals, the clear-coat layer.
-  bool urp_ssao = true;
-  int urp_ssao_taps = 12;
-  bool urp_detail_normals = true;
-  bool urp_clear_coat = true;
+
+  // Each technique's own knobs, a struct in its folder (pipeline/techniques/<name>/params.h);
+  // the knob rows of its TechniqueSpec bind to the fields.
+  MobileParams mobile;
+  PreintegratedParams preintegrated;
+  WrapParams wrap;
+  BurleyParams burley;
+  TextureSpaceParams texture_space;
+  DipoleParams dipole;
+  UrpParams urp;
 
   // Throws ConfigError naming the knob when a value is out of range (each row of the knob
   // table checks its own; knobs.cpp).

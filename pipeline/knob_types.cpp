@@ -65,33 +65,33 @@ glm::vec3 parse_knob_rgb(const std::string& key, const std::string& text) {
           parse_knob_float(key, text.substr(c2 + 1))};
 }
 
-KnobSpec real_knob(std::string name, std::string flag, std::string help,
-                   float PipelineConfig::*field, Interval range) {
+KnobSpec real_knob(std::string name, std::string flag, std::string help, ConfigField<float> field,
+                   Interval range) {
   KnobSpec k = row(std::move(name), std::move(flag), "number in " + range.text(), std::move(help));
   k.set = [field, key = k.name](PipelineConfig& c, const std::string& text) {
-    c.*field = parse_knob_float(key, text);
+    field(c) = parse_knob_float(key, text);
   };
-  k.get = [field](const PipelineConfig& c) { return fmt::format("{}", c.*field); };
+  k.get = [field](const PipelineConfig& c) { return fmt::format("{}", field(c)); };
   k.invalid = [field, range, key = k.name](const PipelineConfig& c) -> std::string {
-    if (range.contains(c.*field)) return "";
-    return fmt::format("{} must be in {}, got {:g}", key, range.text(), c.*field);
+    if (range.contains(field(c))) return "";
+    return fmt::format("{} must be in {}, got {:g}", key, range.text(), field(c));
   };
   return k;
 }
 
 KnobSpec optional_real_knob(std::string name, std::string flag, std::string help,
-                            std::optional<float> PipelineConfig::*field, Interval range) {
+                            ConfigField<std::optional<float>> field, Interval range) {
   KnobSpec k = row(std::move(name), std::move(flag), "number in " + range.text() + " or auto",
                    std::move(help));
   k.set = [field, key = k.name](PipelineConfig& c, const std::string& text) {
-    c.*field = text == "auto" ? std::nullopt : std::optional(parse_knob_float(key, text));
+    field(c) = text == "auto" ? std::nullopt : std::optional(parse_knob_float(key, text));
   };
   k.get = [field](const PipelineConfig& c) {
-    return c.*field ? fmt::format("{}", *(c.*field)) : std::string("auto");
+    return field(c) ? fmt::format("{}", *field(c)) : std::string("auto");
   };
   k.invalid = [field, range, key = k.name](const PipelineConfig& c) -> std::string {
-    if (!(c.*field) || range.contains(*(c.*field))) return "";
-    return fmt::format("{} must be in {}, got {:g}", key, range.text(), *(c.*field));
+    if (!field(c) || range.contains(*field(c))) return "";
+    return fmt::format("{} must be in {}, got {:g}", key, range.text(), *field(c));
   };
   return k;
 }
@@ -108,35 +108,35 @@ KnobSpec swept_by(KnobSpec knob, std::string sweep_flag, std::string sweep_help)
 }
 
 KnobSpec switch_knob(std::string name, std::string flag, std::string help,
-                     bool PipelineConfig::*field) {
+                     ConfigField<bool> field) {
   KnobSpec k = row(std::move(name), std::move(flag), "on or off", std::move(help));
   k.set = [field, key = k.name](PipelineConfig& c, const std::string& text) {
     try {
-      c.*field = parse_switch(text);
+      field(c) = parse_switch(text);
     } catch (const ConfigError& e) {
       throw ConfigError(key + ": " + e.what());
     }
   };
-  k.get = [field](const PipelineConfig& c) { return std::string(switch_name(c.*field)); };
+  k.get = [field](const PipelineConfig& c) { return std::string(switch_name(field(c))); };
   k.invalid = [](const PipelineConfig&) { return std::string(); };
   return k;
 }
 
 KnobSpec optional_rgb_knob(std::string name, std::string flag, std::string help,
-                           std::optional<glm::vec3> PipelineConfig::*field, Interval range) {
+                           ConfigField<std::optional<glm::vec3>> field, Interval range) {
   KnobSpec k = row(std::move(name), std::move(flag), "r,g,b each in " + range.text() + ", or auto",
                    std::move(help));
   k.set = [field, key = k.name](PipelineConfig& c, const std::string& text) {
-    c.*field = text == "auto" ? std::nullopt : std::optional(parse_knob_rgb(key, text));
+    field(c) = text == "auto" ? std::nullopt : std::optional(parse_knob_rgb(key, text));
   };
   k.get = [field](const PipelineConfig& c) {
-    if (!(c.*field)) return std::string("auto");
-    const glm::vec3 v = *(c.*field);
+    if (!field(c)) return std::string("auto");
+    const glm::vec3 v = *field(c);
     return fmt::format("{},{},{}", v.r, v.g, v.b);
   };
   k.invalid = [field, range, key = k.name](const PipelineConfig& c) -> std::string {
-    if (!(c.*field)) return "";
-    const glm::vec3 v = *(c.*field);
+    if (!field(c)) return "";
+    const glm::vec3 v = *field(c);
     if (range.contains(v.r) && range.contains(v.g) && range.contains(v.b)) return "";
     return fmt::format("{} must be in {} per channel, got {:g},{:g},{:g}", key, range.text(), v.r,
                        v.g, v.b);
@@ -144,8 +144,8 @@ KnobSpec optional_rgb_knob(std::string name, std::string flag, std::string help,
   return k;
 }
 
-KnobSpec integer_knob(std::string name, std::string flag, std::string help,
-                      int PipelineConfig::*field, int lo, int hi, bool power_of_two_only) {
+KnobSpec integer_knob(std::string name, std::string flag, std::string help, ConfigField<int> field,
+                      int lo, int hi, bool power_of_two_only) {
   KnobSpec k;
   k.name = std::move(name);
   k.flag = std::move(flag);
@@ -153,11 +153,11 @@ KnobSpec integer_knob(std::string name, std::string flag, std::string help,
       power_of_two_only ? power_of_two_range(lo, hi) : fmt::format("integer in [{}, {}]", lo, hi);
   k.help = std::move(help);
   k.set = [field, key = k.name](PipelineConfig& c, const std::string& text) {
-    c.*field = parse_knob_int(key, text);
+    field(c) = parse_knob_int(key, text);
   };
-  k.get = [field](const PipelineConfig& c) { return std::to_string(c.*field); };
+  k.get = [field](const PipelineConfig& c) { return std::to_string(field(c)); };
   k.invalid = [=, key = k.name](const PipelineConfig& c) -> std::string {
-    const int v = c.*field;
+    const int v = field(c);
     if (v >= lo && v <= hi && (!power_of_two_only || power_of_two(v))) return "";
     return fmt::format(
         "{} must be {}, got {}", key,
@@ -167,19 +167,19 @@ KnobSpec integer_knob(std::string name, std::string flag, std::string help,
   return k;
 }
 
-KnobSpec size_knob(std::string name, std::string flag, std::string help, int PipelineConfig::*width,
-                   int PipelineConfig::*height, int lo, int hi) {
+KnobSpec size_knob(std::string name, std::string flag, std::string help, ConfigField<int> width,
+                   ConfigField<int> height, int lo, int hi) {
   KnobSpec k = row(std::move(name), std::move(flag),
                    fmt::format("WxH, powers of two in [{}, {}]", lo, hi), std::move(help));
   k.set = [=, key = k.name](PipelineConfig& c, const std::string& text) {
-    std::tie(c.*width, c.*height) = parse_size(text, key);
+    std::tie(width(c), height(c)) = parse_size(text, key);
   };
-  k.get = [=](const PipelineConfig& c) { return fmt::format("{}x{}", c.*width, c.*height); };
+  k.get = [=](const PipelineConfig& c) { return fmt::format("{}x{}", width(c), height(c)); };
   k.invalid = [=, key = k.name](const PipelineConfig& c) -> std::string {
     const auto ok = [&](int v) { return v >= lo && v <= hi && power_of_two(v); };
-    if (ok(c.*width) && ok(c.*height)) return "";
+    if (ok(width(c)) && ok(height(c))) return "";
     return fmt::format("{} must be powers of two in [{}, {}] per axis, got {}x{}", key, lo, hi,
-                       c.*width, c.*height);
+                       width(c), height(c));
   };
   return k;
 }

@@ -24,7 +24,7 @@ shaders::TechniqueUniforms technique_uniforms(const View& view, const PipelineCo
   u.lobe1_roughness = cfg.lobe1.roughness;
   u.lobe2_roughness = cfg.lobe2.roughness;
   u.lut_lod = bake::brdf_lut_lod(1.0f);  // the config's own roughness
-  u.wrap = cfg.wrap;
+  u.wrap = cfg.wrap.amount;
   return u;
 }
 

@@ -52,9 +52,9 @@ TEST(BudgetFile, ReadsEveryField) {
   EXPECT_EQ(b.device, "ipad4");
   EXPECT_EQ(b.config.width, 640);
   EXPECT_EQ(b.config.height, 480);
-  EXPECT_FLOAT_EQ(b.config.scale, 0.25f);
+  EXPECT_FLOAT_EQ(b.config.mobile.scale, 0.25f);
   EXPECT_EQ(b.config.lut_width, 64);
-  EXPECT_EQ(b.config.blur_iterations, 2);
+  EXPECT_EQ(b.config.mobile.blur_iterations, 2);
   EXPECT_DOUBLE_EQ(b.target_fps, 30.0);
   EXPECT_EQ(b.scene.path, "ci/heads/lee.glb");
   EXPECT_EQ(b.scene.head_triangles, 20000);

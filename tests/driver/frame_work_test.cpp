@@ -149,7 +149,7 @@ TEST(FrameWork, TextureSpaceBuffersBeyond2048AreAnnouncedForTheTechniqueThatRend
        {std::tuple{"texture-space", 4096, true}, std::tuple{"texture-space", 2048, false},
         std::tuple{"mobile", 4096, false}}) {
     pipeline::PipelineConfig config = frame_config(technique);
-    config.texture_space_size = size;
+    config.texture_space.size = size;
     const std::vector<std::string> notes =
         frame_work_notes(estimate_frame_work(gpu_scene, config), config);
     ASSERT_EQ(notes.size(), noted ? 1u : 0u) << technique << " " << size;

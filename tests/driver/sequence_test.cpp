@@ -237,7 +237,7 @@ TEST_F(PlayedSequence, PushInCrossesTheLodDistanceAtThePredictedFrame) {
   int predicted = -1;
   for (int i = 0; i < push.frames && predicted < 0; ++i) {
     const double distance = track.from + push.progress(i) * (track.to - track.from);
-    if (distance <= c.lod_distance_m) predicted = i;
+    if (distance <= c.mobile.lod_distance_m) predicted = i;
   }
   ASSERT_GT(predicted, 0);
   const SequenceResult r = run_sequence(*gpu_scene_, push, c, *device_, 2);

@@ -29,7 +29,7 @@ budget_ms = 16.7
   const std::vector<SweepConfig> configs = expand_sweep(spec);
   ASSERT_EQ(configs.size(), 4u);
   EXPECT_EQ(configs[3].id, "scale0.5_lut32x128_mobile");
-  EXPECT_EQ(configs[3].config.blur_iterations, 2);
+  EXPECT_EQ(configs[3].config.mobile.blur_iterations, 2);
   EXPECT_EQ(configs[3].device, "iphone5");
   EXPECT_EQ(spec.scene.path, "/data/sweeps/heads/lee.glb");  // relative to the file
   EXPECT_EQ(spec.scene.skin_materials, std::vector<std::string>{"all"});

@@ -18,9 +18,12 @@ namespace skinsim::pipeline {
 namespace {
 
 TEST(TechniqueConfig, EveryTechniqueRoundTrips) {
+  // The registry's order is its own (golden.coverage checks the set): the default first, each
+  // name once.
   const std::vector<std::string> names = technique_names();
-  EXPECT_EQ(names, (std::vector<std::string>{"mobile", "lod", "preintegrated", "wrap", "burley",
-                                             "ssss", "texture-space", "dipole", "urp"}));
+  ASSERT_FALSE(names.empty());
+  EXPECT_EQ(names.front(), PipelineConfig{}.technique);
+  EXPECT_EQ(std::set<std::string>(names.begin(), names.end()).size(), names.size());
   for (const std::string& name : names) {
     PipelineConfig c;
     set_config_field(c, "technique", name);

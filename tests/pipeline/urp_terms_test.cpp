@@ -108,7 +108,7 @@ sim::RenderTarget ssao_of_plane(float a, float b) {
           sim::quantize(glm::vec4(n, 100.0f + a * x_mm + b * y_mm), sim::TexelFormat::kRGBA16F);
     }
   }
-  shaders::SsaoUniforms u = ssao_uniforms(PipelineConfig{}.urp_ssao_taps);
+  shaders::SsaoUniforms u = ssao_uniforms(PipelineConfig{}.urp.ssao_taps);
   u.focal_uv = glm::vec2(kPixelsPerMm / kSize);
   u.noise_uv = glm::vec2(0.06711056f * kSize, 0.00583715f * kSize);
   View view;

@@ -18,10 +18,10 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLig
                    sim::Gpu& gpu) {
   return one_kernel_frame(gs, cfg, lights, gpu, [&](const View& view) {
     const BurleyKernel kernel =
-        burley_kernel(cfg.burley_samples, cfg.burley_distance_mm.value_or(burley_distance_fit()));
+        burley_kernel(cfg.burley.samples, cfg.burley.distance_mm.value_or(burley_distance_fit()));
     shaders::BurleyFS::Uniforms u;
     static_cast<shaders::ScreenKernelUniforms&>(u) = kernel_uniforms(view, gs.scene().units_per_mm);
-    u.count = cfg.burley_samples;
+    u.count = cfg.burley.samples;
     std::copy(kernel.offsets_mm.begin(), kernel.offsets_mm.end(), u.offsets_mm.begin());
     std::copy(kernel.weights.begin(), kernel.weights.end(), u.weights.begin());
     return kernel_program<shaders::BurleyFSFor>(view, u);
@@ -30,7 +30,7 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLig
 
 std::vector<sim::NamedProfile> programs() {
   shaders::BurleyFS::Uniforms taps;  // the profile counts the taps: the default count
-  taps.count = PipelineConfig{}.burley_samples;
+  taps.count = PipelineConfig{}.burley.samples;
   std::vector<sim::NamedProfile> list = screen_diffusion_programs();
   for (const sim::NamedProfile& kernel :
        {fragment_entry<shaders::BurleyFS>(taps), fragment_entry<shaders::BurleyOrthoFS>(taps)}) {
@@ -47,11 +47,13 @@ const TechniqueSpec& burley_technique() {
       .passes = "diffuse, sss, skin",
       .summary = "Burley normalized diffusion in screen space, importance-sampled (Golubev 2018)",
       .knobs = {integer_knob("burley_samples", "--burley-samples", "Burley diffusion taps",
-                             &PipelineConfig::burley_samples, 4, kMaxBurleySamples),
+                             {&PipelineConfig::burley, &BurleyParams::samples}, 4,
+                             kMaxBurleySamples),
                 optional_rgb_knob("burley_distance_mm", "--burley-distance-mm",
                                   "Burley scattering distance per channel in mm (auto: fitted to "
                                   "the six-Gaussian profile)",
-                                  &PipelineConfig::burley_distance_mm, {0.01, 20.0})},
+                                  {&PipelineConfig::burley, &BurleyParams::distance_mm},
+                                  {0.01, 20.0})},
       .render = render,
       .shaders = programs,
       .host_ns_per_pixel = 2100,

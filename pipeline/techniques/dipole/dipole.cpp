@@ -32,7 +32,7 @@ shaders::DipoleUniforms dipole_uniforms(int samples) {
 FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLights& lights,
                    sim::Gpu& gpu) {
   return one_kernel_frame(gs, cfg, lights, gpu, [&](const View& view) {
-    shaders::DipoleUniforms u = dipole_uniforms(cfg.dipole_samples);
+    shaders::DipoleUniforms u = dipole_uniforms(cfg.dipole.samples);
     u.focal_uv = kernel_uniforms(view, gs.scene().units_per_mm).focal_uv;
     u.noise_uv = interleaved_noise_uv(cfg);
     return kernel_program<shaders::DipoleFSFor>(view, u);
@@ -41,7 +41,7 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLig
 
 std::vector<sim::NamedProfile> programs() {
   // The profile counts the taps: the default count.
-  const shaders::DipoleUniforms taps = dipole_uniforms(PipelineConfig{}.dipole_samples);
+  const shaders::DipoleUniforms taps = dipole_uniforms(PipelineConfig{}.dipole.samples);
   std::vector<sim::NamedProfile> list = screen_diffusion_programs();
   list.push_back(fragment_entry<shaders::DipoleFS>(taps));
   list.push_back(fragment_entry<shaders::DipoleOrthoFS>(taps));
@@ -59,7 +59,8 @@ const TechniqueSpec& dipole_technique() {
           "space (Unity article)",
       .knobs = {integer_knob("dipole_samples", "--dipole-samples",
                              "Dipole taps per pixel, the centre included (the article uses 30)",
-                             &PipelineConfig::dipole_samples, 4, kMaxDipoleSamples)},
+                             {&PipelineConfig::dipole, &DipoleParams::samples}, 4,
+                             kMaxDipoleSamples)},
       .render = render,
       .shaders = programs,
       // Measured 9870 ns against burley's 3380 in the same loaded session (burley's spec:

@@ -33,7 +33,7 @@ std::vector<sim::NamedProfile> programs() {
 KnobSpec blur_iterations_knob() {
   KnobSpec k =
       swept_by(integer_knob("blur_iterations", "--blur-iterations", "Separable blur iterations",
-                            &PipelineConfig::blur_iterations, 1, 8),
+                            {&PipelineConfig::mobile, &MobileParams::blur_iterations}, 1, 8),
                "--blur-iterations", "Blur iteration counts, e.g. 1,2,4");
   k.id_prefix = "blur";
   return k;
@@ -50,24 +50,27 @@ const TechniqueSpec& mobile_technique() {
           {
               swept_by(real_knob("scale", "--scale",
                                  "Integration-buffer size per axis as a fraction of the frame",
-                                 &PipelineConfig::scale, {0.0, 1.0, true, false}),
+                                 {&PipelineConfig::mobile, &MobileParams::scale},
+                                 {0.0, 1.0, true, false}),
                        "--scales",
                        "Integration-buffer scales, e.g. 1,0.5,0.25,0.125 (default sweep: those)"),
               blur_iterations_knob(),
               optional_real_knob("blur_width_mm", "--blur-width-mm",
                                  "Blur standard deviation on the skin in mm (auto: from the "
                                  "six-Gaussian profile)",
-                                 &PipelineConfig::blur_width_mm, {0.0, 50.0, true, false}),
+                                 {&PipelineConfig::mobile, &MobileParams::blur_width_mm},
+                                 {0.0, 50.0, true, false}),
               real_knob("normal_offset_mm", "--normal-offset-mm",
                         "Irradiance-pass vertex push along the normal, mm",
-                        &PipelineConfig::normal_offset_mm, {0.0, 20.0}),
+                        {&PipelineConfig::mobile, &MobileParams::normal_offset_mm}, {0.0, 20.0}),
               real_knob("blur_follow_mm", "--blur-follow-mm",
                         "Depth-aware blur: taps on a surface this many mm nearer or farther "
                         "than the centre fade out (0: the blur ignores depth, as GPU Pro 5)",
-                        &PipelineConfig::blur_follow_mm, {0.0, 50.0}),
+                        {&PipelineConfig::mobile, &MobileParams::blur_follow_mm}, {0.0, 50.0}),
               real_knob("lod_distance_m", "--lod-distance",
                         "Camera distance in metres beyond which the single-pass LOD shader runs",
-                        &PipelineConfig::lod_distance_m, {0.0, 10000.0, true, false}),
+                        {&PipelineConfig::mobile, &MobileParams::lod_distance_m},
+                        {0.0, 10000.0, true, false}),
           },
       .render = render,
       .shaders = programs,

@@ -34,13 +34,13 @@ sim::PassCounters irradiance_pass(const GpuScene& gs, const View& view, const Pi
                                   const FrameLights& lights, sim::RenderTarget& buffer,
                                   sim::Gpu& gpu) {
   const float mm_per_unit = 1.0f / gs.scene().units_per_mm;
-  const float offset = cfg.normal_offset_mm * gs.scene().units_per_mm;
+  const float offset = cfg.mobile.normal_offset_mm * gs.scene().units_per_mm;
   // The skin at its true position and depth decides every pixel it covers; the normal offset
   // only dilates coverage into the background, in a second draw behind all skin.
   shaders::SurfaceVS::Uniforms vu{view.view_proj, 0.0f,
                                   lights.vertex_uniforms(Transmission::kComputedHere)};
   shaders::IrradianceFS::Uniforms fu{lights.uniforms()};
-  if (cfg.blur_follow_mm > 0.0f) {
+  if (cfg.mobile.blur_follow_mm > 0.0f) {
     // View depth in mm: dot(p - camera, forward) / units_per_mm.
     vu.view_depth = true;
     vu.view_depth_plane = glm::vec4(view.forward * mm_per_unit,
@@ -105,7 +105,7 @@ FrameOutput render_mobile_frame(const GpuScene& gs, const PipelineConfig& cfg,
   out.frame = sim::RenderTarget("frame", cfg.width, cfg.height, sim::TexelFormat::kRGBA8);
   const float units_per_m = gs.scene().units_per_mm * 1000.0f;
   const bool lod = mode == MobileMode::kForceLod || !gs.has_skin() || !out.view.skin_visible ||
-                   out.view.skin_distance > cfg.lod_distance_m * units_per_m;
+                   out.view.skin_distance > cfg.mobile.lod_distance_m * units_per_m;
   out.decisions["lod_shader"] = lod ? 1.0 : 0.0;
   if (lod && mode != MobileMode::kForceLod && !gs.has_skin()) {
     out.notices.push_back(
@@ -116,7 +116,7 @@ FrameOutput render_mobile_frame(const GpuScene& gs, const PipelineConfig& cfg,
         "the single-pass LOD shader was chosen: camera distance {:.3g} m > lod_distance_m {:.3g} "
         "m at units_per_mm {:.4g}; if the scene is not in metres pass --units-per-mm (or raise "
         "--lod-distance)",
-        out.view.skin_distance / units_per_m, cfg.lod_distance_m, gs.scene().units_per_mm));
+        out.view.skin_distance / units_per_m, cfg.mobile.lod_distance_m, gs.scene().units_per_mm));
   }
 
   if (lod) {
@@ -125,17 +125,17 @@ FrameOutput render_mobile_frame(const GpuScene& gs, const PipelineConfig& cfg,
     return out;
   }
 
-  const int bw = std::max(1, static_cast<int>(std::lround(cfg.width * cfg.scale)));
-  const int bh = std::max(1, static_cast<int>(std::lround(cfg.height * cfg.scale)));
+  const int bw = std::max(1, static_cast<int>(std::lround(cfg.width * cfg.mobile.scale)));
+  const int bh = std::max(1, static_cast<int>(std::lround(cfg.height * cfg.mobile.scale)));
   sim::RenderTarget irradiance("irradiance", bw, bh, sim::TexelFormat::kRGBA8);
   out.passes.push_back(irradiance_pass(gs, out.view, cfg, lights, irradiance, gpu));
 
   // Blur width: the profile's wide-layer sigma in mm, projected at the skin's distance, in
   // buffer texels; k iterations of sigma/sqrt(k) compose to the same total variance.
-  const float sigma_mm = cfg.blur_width_mm.value_or(skin_layer_split().wide_sigma_mm);
+  const float sigma_mm = cfg.mobile.blur_width_mm.value_or(skin_layer_split().wide_sigma_mm);
   const float sigma_full = sigma_mm * out.view.pixels_per_mm(gs.scene().units_per_mm);
   const float blur_sigma = sigma_full * static_cast<float>(bw) / static_cast<float>(cfg.width) /
-                           std::sqrt(static_cast<float>(cfg.blur_iterations));
+                           std::sqrt(static_cast<float>(cfg.mobile.blur_iterations));
   out.decisions["blur_sigma_texels"] = blur_sigma;
   const sim::PixelRect rect = scale_rect(out.view.skin_rect, static_cast<float>(bw) / cfg.width,
                                          static_cast<float>(bh) / cfg.height, bw, bh);
@@ -144,16 +144,16 @@ FrameOutput render_mobile_frame(const GpuScene& gs, const PipelineConfig& cfg,
   // Depth-aware taps (blur_follow_mm): the tent's half-width in depth codes; the last axis
   // writes the premultiplied light and coverage the skin pass reads.
   const auto follow = [&](bool last_axis) -> std::optional<BlurFollow> {
-    if (cfg.blur_follow_mm <= 0.0f) return std::nullopt;
-    return BlurFollow{255.0f * kMmPerDepthCode / cfg.blur_follow_mm, last_axis};
+    if (cfg.mobile.blur_follow_mm <= 0.0f) return std::nullopt;
+    return BlurFollow{255.0f * kMmPerDepthCode / cfg.mobile.blur_follow_mm, last_axis};
   };
   const sim::RenderTarget* source = &irradiance;
-  for (int i = 0; i < cfg.blur_iterations; ++i) {
+  for (int i = 0; i < cfg.mobile.blur_iterations; ++i) {
     const std::string suffix = i == 0 ? "" : std::to_string(i + 1);  // blur_h, blur_h2, ...
     out.passes.push_back(
         blur_pass("blur_h" + suffix, *source, ping, rect, {1, 0}, blur_sigma, gpu, follow(false)));
     out.passes.push_back(blur_pass("blur_v" + suffix, ping, blurred, rect, {0, 1}, blur_sigma, gpu,
-                                   follow(i + 1 == cfg.blur_iterations)));
+                                   follow(i + 1 == cfg.mobile.blur_iterations)));
     source = &blurred;
   }
   const sim::Texture2D blurred_texture =

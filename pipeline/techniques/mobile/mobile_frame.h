@@ -12,7 +12,7 @@
 namespace skinsim::pipeline {
 
 enum class MobileMode {
-  kAuto,      // the single-pass shader only beyond config.lod_distance_m
+  kAuto,      // the single-pass shader only beyond config.mobile.lod_distance_m
   kForceLod,  // always the single-pass shader (the `lod` technique)
 };
 

@@ -41,11 +41,11 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLig
       sim::texture_view(lut_target, {sim::Filter::kBilinear, sim::Wrap::kClamp});
   const float max_curvature = bake::PreintegratedLutParams{}.max_curvature_per_mm;
   std::optional<sim::Texture2D> curvature;
-  if (cfg.curvature == CurvatureSource::kVertex) {
+  if (cfg.preintegrated.curvature == CurvatureSource::kVertex) {
     require_skin_uvs(gs, "preintegrated (curvature vertex)");
     curvature = curvature_texture(gs, kCurvatureTextureSize, max_curvature);
   }
-  const bool shadow_scatter = cfg.shadow_scatter && lights.uniforms().shadows;
+  const bool shadow_scatter = cfg.preintegrated.shadow_scatter && lights.uniforms().shadows;
   // Baked only when a frame reads it.
   std::optional<sim::Texture2D> shadow_lut;
   if (shadow_scatter) shadow_lut = shadow_scatter_texture(lights.penumbra_mm());
@@ -59,7 +59,7 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLig
     // Derivatives give curvature in 1/world unit: times units_per_mm is 1/mm.
     u.curvature_scale = gs.scene().units_per_mm / max_curvature;
     d.fragment_program = with_gamma_and_specular(cfg, [&](auto gamma, auto spec) {
-      if (cfg.curvature == CurvatureSource::kVertex) {
+      if (cfg.preintegrated.curvature == CurvatureSource::kVertex) {
         return sim::make_fragment_program<
             shaders::PreintegratedFS<gamma(), spec(), CurvatureSource::kVertex>>(
             u, cfg.skin_precision);
@@ -92,7 +92,7 @@ KnobSpec shadow_scatter_knob() {
   KnobSpec k = switch_knob("shadow_scatter", "--shadow-scatter",
                            "Penner's shadow penumbra scattering: the filtered shadow through a "
                            "LUT that widens and reddens the penumbra (one dependent read)",
-                           &PipelineConfig::shadow_scatter);
+                           {&PipelineConfig::preintegrated, &PreintegratedParams::shadow_scatter});
   k.applies = [](const PipelineConfig& c) { return c.shadows; };
   return k;
 }
@@ -110,8 +110,9 @@ const TechniqueSpec& preintegrated_technique() {
               choice_knob("curvature", "--curvature",
                           "Curvature source: baked per vertex and smoothed, or screen-space "
                           "derivatives (constant per triangle on low-poly meshes)",
-                          "vertex or derivatives", &PipelineConfig::curvature, parse_curvature,
-                          curvature_name),
+                          "vertex or derivatives",
+                          {&PipelineConfig::preintegrated, &PreintegratedParams::curvature},
+                          parse_curvature, curvature_name),
               shadow_scatter_knob(),
           },
       .render = render,

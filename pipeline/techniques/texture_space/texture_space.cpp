@@ -61,7 +61,7 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLig
                    sim::Gpu& gpu) {
   require_skin_uvs(gs, "texture-space");
   FrameOutput out = start_frame(gs, cfg);
-  const int size = cfg.texture_space_size;
+  const int size = cfg.texture_space.size;
   const sim::PixelRect all{0, 0, size, size};
   const TextureSpaceKernel kernel = texture_space_kernel();
   const float texels_per_mm = uv_texels_per_mm(gs, size);
@@ -124,7 +124,8 @@ const TechniqueSpec& texture_space_technique() {
       .summary = "d'Eon & Luebke texture-space diffusion (GPU Gems 3 ch. 14)",
       .knobs = {integer_knob("texture_space_size", "--texture-space-size",
                              "Texture-space diffusion buffer size per axis",
-                             &PipelineConfig::texture_space_size, 64, 4096, true)},
+                             {&PipelineConfig::texture_space, &TextureSpaceParams::size}, 64, 4096,
+                             true)},
       .render = render,
       .shaders = programs,
       // Its 1024^2 texture-space passes do not scale with the output: the average per

@@ -72,7 +72,7 @@ sim::RenderTarget ssao_passes(const GpuScene& gs, const PipelineConfig& cfg, Fra
   const View& view = out.view;
   sim::RenderTarget depth_normal = screen_buffer("depth_normal", cfg);
   out.passes.push_back(depth_normal_pass(gs, cfg, view, depth_normal, gpu));
-  shaders::SsaoUniforms u = ssao_uniforms(cfg.urp_ssao_taps);
+  shaders::SsaoUniforms u = ssao_uniforms(cfg.urp.ssao_taps);
   u.focal_uv = kernel_uniforms(view, gs.scene().units_per_mm).focal_uv;
   u.noise_uv = interleaved_noise_uv(cfg);
   sim::RenderTarget ao("ssao", cfg.width, cfg.height, sim::TexelFormat::kRGBA8);

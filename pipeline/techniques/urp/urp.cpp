@@ -65,9 +65,9 @@ shaders::UrpUniforms urp_uniforms(const GpuScene& gs, const PipelineConfig& cfg,
   // Derivatives give curvature in 1/world unit: times units_per_mm is 1/mm.
   u.curvature_scale = gs.scene().units_per_mm / bake::PreintegratedLutParams{}.max_curvature_per_mm;
   u.shadow_color = cfg.shadow_tint.value_or(shaders::kShadowSkinColor);
-  u.ssao = cfg.urp_ssao;
-  u.detail_normals = cfg.urp_detail_normals;
-  u.clear_coat = cfg.urp_clear_coat;
+  u.ssao = cfg.urp.ssao;
+  u.detail_normals = cfg.urp.detail_normals;
+  u.clear_coat = cfg.urp.clear_coat;
   const int cube = gs.environment().size();
   u.lobe1_lod = environment_lod(cfg.lobe1.roughness, cube);
   u.lobe2_lod = environment_lod(cfg.lobe2.roughness, cube);
@@ -81,7 +81,7 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLig
                    sim::Gpu& gpu) {
   FrameOutput out = start_frame(gs, cfg);
   std::optional<sim::RenderTarget> ao;
-  if (cfg.urp_ssao && out.view.skin_visible) ao = ssao_passes(gs, cfg, out, gpu);
+  if (cfg.urp.ssao && out.view.skin_visible) ao = ssao_passes(gs, cfg, out, gpu);
   std::optional<sim::Texture2D> ao_texture;
   if (ao) ao_texture = sim::texture_view(*ao, {sim::Filter::kNearest, sim::Wrap::kClamp});
   require_skin_uvs(gs, "urp (baked AO)");
@@ -105,7 +105,7 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLig
     d.textures.cubes[B::kEnvironment] = &gs.environment();
     d.textures.textures[B::kBakedAo] = &baked_ao;
     d.textures.textures[B::kPreintegratedLut] = &lut;
-    if (cfg.urp_detail_normals) d.textures.textures[B::kDetailNormals] = &pore_normal_texture();
+    if (cfg.urp.detail_normals) d.textures.textures[B::kDetailNormals] = &pore_normal_texture();
     if (ao_texture) d.textures.textures[B::kAo] = &*ao_texture;
   };
   out.passes.push_back(skin_framebuffer_pass(gs, out.view, lights, Transmission::kComputedHere,
@@ -116,7 +116,7 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLig
 }
 
 std::vector<sim::NamedProfile> programs() {
-  std::vector<sim::NamedProfile> list = ssao_programs(PipelineConfig{}.urp_ssao_taps);
+  std::vector<sim::NamedProfile> list = ssao_programs(PipelineConfig{}.urp.ssao_taps);
   list.push_back(fragment_entry<shaders::UrpFS<GammaMode::kSquare>>());
   list.push_back(mediump_fragment_entry<shaders::UrpFS<GammaMode::kSquare>>());
   return list;
@@ -137,24 +137,24 @@ const TechniqueSpec& urp_technique() {
             KnobSpec k = switch_knob("urp_ssao", "--urp-ssao",
                                      "Screen-space AO: a depth/normal pre-pass, the AO pass "
                                      "and a two-pass blur before the skin pass",
-                                     &PipelineConfig::urp_ssao);
+                                     {&PipelineConfig::urp, &UrpParams::ssao});
             k.decides = true;  // urp_ssao_taps applies only with it on
             return k;
           }(),
           [] {
             KnobSpec k =
                 integer_knob("urp_ssao_taps", "--urp-ssao-taps", "Screen-space AO taps per pixel",
-                             &PipelineConfig::urp_ssao_taps, 4, kMaxSsaoTaps);
-            k.applies = [](const PipelineConfig& c) { return c.urp_ssao; };
+                             {&PipelineConfig::urp, &UrpParams::ssao_taps}, 4, kMaxSsaoTaps);
+            k.applies = [](const PipelineConfig& c) { return c.urp.ssao; };
             return k;
           }(),
           switch_knob("urp_detail_normals", "--urp-detail-normals",
                       "Tiling pore detail normals (generated: the scenes have no detail "
                       "map), sharp and blurred: two more reads",
-                      &PipelineConfig::urp_detail_normals),
+                      {&PipelineConfig::urp, &UrpParams::detail_normals}),
           switch_knob("urp_clear_coat", "--urp-clear-coat",
                       "Clear-coat specular layer over the skin (direct and image-based)",
-                      &PipelineConfig::urp_clear_coat),
+                      {&PipelineConfig::urp, &UrpParams::clear_coat}),
       },
       .render = render,
       .shaders = programs,

@@ -40,7 +40,7 @@ const TechniqueSpec& wrap_technique() {
       .summary = "light wrapping: the cheapest baseline",
       .knobs = {real_knob("wrap", "--wrap",
                           "Light-wrap amount w: diffuse = max(0, (N.L + w) / (1 + w))",
-                          &PipelineConfig::wrap, {0.0, 1.0})},
+                          {&PipelineConfig::wrap, &WrapParams::amount}, {0.0, 1.0})},
       .render = render,
       .shaders = programs,
       .host_ns_per_pixel = 640,

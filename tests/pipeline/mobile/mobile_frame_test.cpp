@@ -20,9 +20,9 @@ FrameOutput render(const GpuScene& gs, float scale, int blur_iterations = 1,
   PipelineConfig c;
   c.width = 512;
   c.height = 384;
-  c.scale = scale;
-  c.blur_iterations = blur_iterations;
-  c.blur_follow_mm = blur_follow_mm;
+  c.mobile.scale = scale;
+  c.mobile.blur_iterations = blur_iterations;
+  c.mobile.blur_follow_mm = blur_follow_mm;
   sim::Gpu gpu(sim::GpuConfig{});
   return render_frame(gs, c, gpu);
 }
