@@ -1,4 +1,4 @@
-// The micro-benchmark shaders, in the emulator's shading language (sim/shader_lang.h). Each
+// The micro-benchmark shaders, in the emulator's shading language (shading/shader_lang.h). Each
 // is minimal for what its benchmark stresses, so the op profile the emulator records is
 // known by inspection (and checked by the tests).
 #pragma once

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/op_profile.h"
+#include "shading/op_profile.h"
 #include "sim/texture.h"
 #include "util/user_error.h"
 

@@ -13,8 +13,8 @@
 
 #include <array>
 
+#include "shading/shader_lanes.h"
 #include "sim/shader_io.h"
-#include "sim/shader_lanes.h"
 #include "util/check.h"
 
 namespace skinsim::sim {

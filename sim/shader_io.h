@@ -8,7 +8,7 @@
 #include <glm/glm.hpp>
 #include <utility>
 
-#include "sim/shader_lang.h"
+#include "shading/shader_lang.h"
 #include "sim/texture_unit.h"
 #include "sim/triangle_setup.h"
 #include "util/check.h"

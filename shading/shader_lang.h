@@ -27,8 +27,8 @@
 #include <glm/glm.hpp>
 #include <type_traits>
 
-#include "sim/fp16.h"
-#include "sim/op_profile.h"
+#include "shading/fp16.h"
+#include "shading/op_profile.h"
 
 // A shader's fragment function, as every shader writes it: a template over the language L
 // (Exec, Count, Emit ...) reading the interpolated inputs `in`, the texture unit `tex` and
@@ -524,6 +524,6 @@ inline CVec<3> operator*(const glm::mat3& m, const CVec<3>& v) {
 // The Emit instantiation's overloads (GLSL-emitting value types) must be visible
 // wherever shaders are defined: they call the language qualified (`sl::max`), and a
 // qualified call in a template finds only what is declared before the template.
-#include "sim/shader_emit.h"  // IWYU pragma: export
+#include "shading/shader_emit.h"  // IWYU pragma: export
 // Likewise the four-fragment Exec4 instantiation's (shader_exec4_io.h).
-#include "sim/shader_lanes.h"  // IWYU pragma: export
+#include "shading/shader_lanes.h"  // IWYU pragma: export
