@@ -11,7 +11,7 @@
 #include <string>
 
 #include "driver/frame_job.h"
-#include "sim/shader_lang.h"
+#include "shading/shader_lang.h"
 
 namespace skinsim::driver {
 

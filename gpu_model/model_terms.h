@@ -2,8 +2,8 @@
 #pragma once
 
 #include "gpu_model/device_profile.h"
+#include "shading/op_profile.h"
 #include "sim/counters.h"
-#include "sim/op_profile.h"
 
 namespace skinsim::gpu_model {
 

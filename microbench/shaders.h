@@ -1,4 +1,4 @@
-// The micro-benchmark shaders, in the emulator's shading language (sim/shader_lang.h). Each
+// The micro-benchmark shaders, in the emulator's shading language (shading/shader_lang.h). Each
 // is minimal for what its benchmark stresses, so the op profile the emulator records is
 // known by inspection (and checked by the tests).
 #pragma once
@@ -30,15 +30,11 @@ struct TransformVS {
 // TransformVS plus the texture coordinates as varying 0-1.
 struct TransformUvVS {
   static constexpr const char* kName = "mb_transform_uv_vs";
-  struct Uniforms {
-    glm::mat4 transform{1.0f};
-  };
+  using Uniforms = TransformVS::Uniforms;
   template <class L>
   static void vertex(const typename L::VertexIn& in, typename L::VertexOut& out,
                      const Uniforms& u) {
-    using vec4 = typename L::vec4;
-    const auto p = in.position();
-    out.position = u.transform * vec4(sl::x(p), sl::y(p), sl::z(p), 1.0f);
+    TransformVS::vertex<L>(in, out, u);
     out.set(0, in.uv());
   }
 };

@@ -15,7 +15,7 @@
 #include "pipeline/techniques/texture_space/params.h"
 #include "pipeline/techniques/urp/params.h"
 #include "pipeline/techniques/wrap/params.h"
-#include "sim/op_profile.h"
+#include "shading/op_profile.h"
 #include "sim/texture.h"
 #include "util/user_error.h"
 

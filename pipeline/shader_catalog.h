@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/op_profile.h"
+#include "shading/op_profile.h"
 
 namespace skinsim::pipeline {
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "pipeline/config.h"
-#include "sim/op_profile.h"
+#include "shading/op_profile.h"
 #include "sim/program.h"
 
 namespace skinsim::pipeline {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "pipeline/knob.h"
-#include "sim/op_profile.h"
+#include "shading/op_profile.h"
 
 namespace skinsim::sim {
 class Gpu;

@@ -68,55 +68,21 @@ std::vector<glm::vec2> planar_uvs(const std::vector<glm::vec3>& p) {
   return uv;
 }
 
-}  // namespace
+// One primitive being read: where its data is and how errors name it.
+struct PrimitiveSource {
+  const tinygltf::Model& model;
+  const tinygltf::Primitive& prim;
+  const std::string& file;
+  std::string where;  // "meshes[m].primitives[p]"
 
-std::optional<Mesh> convert_primitive(const tinygltf::Model& model, int mesh_index, int prim_index,
-                                      const glm::mat4& world, int material, const std::string& file,
-                                      const std::function<void(const std::string&)>& warn) {
-  const tinygltf::Mesh& src_mesh = model.meshes[static_cast<std::size_t>(mesh_index)];
-  const tinygltf::Primitive& prim = src_mesh.primitives[static_cast<std::size_t>(prim_index)];
-  const std::string where = fmt::format("meshes[{}].primitives[{}]", mesh_index, prim_index);
-  const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
-  if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
-      mode != TINYGLTF_MODE_TRIANGLE_FAN) {
-    warn(fmt::format("{}: {}: mode {} draws points or lines; skipped", file, where, mode));
-    return std::nullopt;
-  }
-  const glm::mat3 linear(world);
-  const float det = glm::determinant(linear);
-  if (!std::isfinite(det)) {
-    warn(
-        fmt::format("{}: {}: node transform scales by more than a float holds (determinant {}); "
-                    "skipped",
-                    file, where, det));
-    return std::nullopt;
-  }
-  if (std::abs(det) < 1e-30f) {
-    warn(fmt::format("{}: {}: node transform is singular (zero scale); skipped", file, where));
-    return std::nullopt;
-  }
-
-  const auto attr = [&](const char* name) {
+  // The accessor of attribute `name`, or -1.
+  int attribute(const char* name) const {
     auto it = prim.attributes.find(name);
     return it == prim.attributes.end() ? -1 : it->second;
-  };
-  const int pos_acc = attr("POSITION");
-  if (pos_acc < 0) throw SceneError(fmt::format("{}: {}: no POSITION attribute", file, where));
-
-  Mesh m;
-  m.name = src_mesh.name.empty() ? fmt::format("mesh{}", mesh_index) : src_mesh.name;
-  if (src_mesh.primitives.size() > 1) m.name += fmt::format("/{}", prim_index);
-  m.material = material;
-  m.positions = to_vectors<glm::vec3, 3>(read_floats(model, pos_acc, 3, AttributeFormat::kFloatOnly,
-                                                     file, where + ".attributes.POSITION"));
-  const std::size_t n = m.positions.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!finite3(m.positions[i])) {
-      throw SceneError(fmt::format("{}: {}.attributes.POSITION: vertex {} is not finite (NaN/Inf)",
-                                   file, where, i));
-    }
   }
-  const auto read_matching = [&](int acc, int comps, AttributeFormat format, const char* name) {
+  // Attribute `name` (accessor `acc`), which must have one element per vertex of `n`.
+  std::vector<float> read_matching(int acc, int comps, AttributeFormat format, const char* name,
+                                   std::size_t n) const {
     std::vector<float> v =
         read_floats(model, acc, comps, format, file, where + ".attributes." + name);
     if (v.size() != n * comps) {
@@ -124,100 +90,180 @@ std::optional<Mesh> convert_primitive(const tinygltf::Model& model, int mesh_ind
                                    where, name, v.size() / comps, n));
     }
     return v;
-  };
+  }
+};
 
+// Why the primitive is skipped (points or lines, a transform a float cannot hold or a
+// singular one), or empty if it is drawn.
+std::string reason_to_skip(int mode, float det) {
+  if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+      mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+    return fmt::format("mode {} draws points or lines", mode);
+  }
+  if (!std::isfinite(det)) {
+    return fmt::format("node transform scales by more than a float holds (determinant {})", det);
+  }
+  if (std::abs(det) < 1e-30f) return "node transform is singular (zero scale)";
+  return {};
+}
+
+std::vector<glm::vec3> read_positions(const PrimitiveSource& src) {
+  const int acc = src.attribute("POSITION");
+  if (acc < 0) throw SceneError(fmt::format("{}: {}: no POSITION attribute", src.file, src.where));
+  std::vector<glm::vec3> positions =
+      to_vectors<glm::vec3, 3>(read_floats(src.model, acc, 3, AttributeFormat::kFloatOnly, src.file,
+                                           src.where + ".attributes.POSITION"));
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    if (!finite3(positions[i])) {
+      throw SceneError(fmt::format("{}: {}.attributes.POSITION: vertex {} is not finite (NaN/Inf)",
+                                   src.file, src.where, i));
+    }
+  }
+  return positions;
+}
+
+// The primitive's triangles as a list of indices into its `n` vertices.
+std::vector<std::uint32_t> read_triangles(const PrimitiveSource& src, int mode, std::size_t n) {
   std::vector<std::uint32_t> idx;
-  if (prim.indices >= 0) {
-    idx = read_indices(model, prim.indices, file, where + ".indices");
+  if (src.prim.indices >= 0) {
+    idx = read_indices(src.model, src.prim.indices, src.file, src.where + ".indices");
     for (std::size_t i = 0; i < idx.size(); ++i) {
       if (idx[i] >= n) {
         throw SceneError(fmt::format("{}: {}.indices: index {} (at {}) out of range of {} vertices",
-                                     file, where, idx[i], i, n));
+                                     src.file, src.where, idx[i], i, n));
       }
     }
   } else {
     idx.resize(n);
     for (std::uint32_t i = 0; i < n; ++i) idx[i] = i;
   }
-  m.indices = to_triangle_list(std::move(idx), mode, file, where);
-  if (m.indices.empty()) {
-    warn(fmt::format("{}: {}: no triangles; skipped", file, where));
-    return std::nullopt;
-  }
+  return to_triangle_list(std::move(idx), mode, src.file, src.where);
+}
 
-  // Transform to world space. Normals use the inverse transpose; a mirroring transform
-  // (det < 0) flips the winding back to counter-clockwise and the bitangent sign.
-  const glm::mat3 normal_matrix = glm::transpose(glm::inverse(linear));
+// Positions to world space; a mirroring transform (det < 0) flips the winding back to
+// counter-clockwise.
+void place_in_world(Mesh& m, const glm::mat4& world, float det, const PrimitiveSource& src) {
   for (auto& p : m.positions) {
     p = glm::vec3(world * glm::vec4(p, 1.0f));
     if (!finite3(p)) {
-      throw SceneError(
-          fmt::format("{}: {}: a position overflows under the node transform", file, where));
+      throw SceneError(fmt::format("{}: {}: a position overflows under the node transform",
+                                   src.file, src.where));
     }
   }
   if (det < 0.0f) {
     for (std::size_t t = 0; t < m.indices.size(); t += 3)
       std::swap(m.indices[t + 1], m.indices[t + 2]);
   }
+}
 
+// World-space normals: NORMAL through the inverse transpose, smooth normals where it is
+// missing, zero or not finite.
+void fill_normals(Mesh& m, const glm::mat3& linear, const PrimitiveSource& src,
+                  const std::function<void(const std::string&)>& warn) {
+  const std::size_t n = m.positions.size();
   std::vector<glm::vec3> generated;  // smooth normals, computed only if needed
   const auto smooth = [&]() -> const std::vector<glm::vec3>& {
     if (generated.empty()) generated = compute_smooth_normals(m.positions, m.indices);
     return generated;
   };
-  if (const int acc = attr("NORMAL"); acc >= 0) {
-    m.normals =
-        to_vectors<glm::vec3, 3>(read_matching(acc, 3, AttributeFormat::kFloatOnly, "NORMAL"));
-    std::size_t repaired = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      const glm::vec3 w = normal_matrix * m.normals[i];
-      const float len = glm::length(w);
-      if (len > 1e-20f && std::isfinite(len)) {
-        m.normals[i] = w / len;
-      } else {
-        m.normals[i] = smooth()[i];
-        ++repaired;
-      }
-    }
-    if (repaired > 0) {
-      warn(
-          fmt::format("{}: {}.attributes.NORMAL: {} zero or non-finite normals replaced by smooth "
-                      "normals",
-                      file, where, repaired));
-    }
-  } else {
+  const int acc = src.attribute("NORMAL");
+  if (acc < 0) {
     m.normals = smooth();
+    return;
   }
-
-  if (const int acc = attr("TEXCOORD_0"); acc >= 0) {
-    m.uvs = to_vectors<glm::vec2, 2>(
-        read_matching(acc, 2, AttributeFormat::kFloatOrNormalized, "TEXCOORD_0"));
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!std::isfinite(m.uvs[i].x) || !std::isfinite(m.uvs[i].y)) {
-        throw SceneError(
-            fmt::format("{}: {}.attributes.TEXCOORD_0: element {} is not finite", file, where, i));
-      }
+  const glm::mat3 normal_matrix = glm::transpose(glm::inverse(linear));
+  m.normals =
+      to_vectors<glm::vec3, 3>(src.read_matching(acc, 3, AttributeFormat::kFloatOnly, "NORMAL", n));
+  std::size_t repaired = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const glm::vec3 w = normal_matrix * m.normals[i];
+    const float len = glm::length(w);
+    if (len > 1e-20f && std::isfinite(len)) {
+      m.normals[i] = w / len;
+    } else {
+      m.normals[i] = smooth()[i];
+      ++repaired;
     }
-  } else {
+  }
+  if (repaired > 0) {
+    warn(
+        fmt::format("{}: {}.attributes.NORMAL: {} zero or non-finite normals replaced by smooth "
+                    "normals",
+                    src.file, src.where, repaired));
+  }
+}
+
+// TEXCOORD_0, or planar UVs where it is missing.
+void fill_uvs(Mesh& m, const PrimitiveSource& src) {
+  const std::size_t n = m.positions.size();
+  const int acc = src.attribute("TEXCOORD_0");
+  if (acc < 0) {
     m.uvs = planar_uvs(m.positions);
+    return;
+  }
+  m.uvs = to_vectors<glm::vec2, 2>(
+      src.read_matching(acc, 2, AttributeFormat::kFloatOrNormalized, "TEXCOORD_0", n));
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!std::isfinite(m.uvs[i].x) || !std::isfinite(m.uvs[i].y)) {
+      throw SceneError(fmt::format("{}: {}.attributes.TEXCOORD_0: element {} is not finite",
+                                   src.file, src.where, i));
+    }
+  }
+}
+
+// World-space tangents: TANGENT transformed and made orthogonal to the normal (the
+// bitangent sign flipped by a mirroring transform), or computed from the UVs.
+void fill_tangents(Mesh& m, const glm::mat3& linear, float det, const PrimitiveSource& src) {
+  const std::size_t n = m.positions.size();
+  const int acc = src.attribute("TANGENT");
+  if (acc < 0) {
+    m.tangents = compute_tangents(m.positions, m.normals, m.uvs, m.indices);
+    return;
+  }
+  m.tangents = to_vectors<glm::vec4, 4>(
+      src.read_matching(acc, 4, AttributeFormat::kFloatOnly, "TANGENT", n));
+  const float flip = det < 0.0f ? -1.0f : 1.0f;
+  for (std::size_t i = 0; i < n; ++i) {
+    const glm::vec3& nrm = m.normals[i];
+    glm::vec3 t = linear * glm::vec3(m.tangents[i]);
+    t -= nrm * glm::dot(nrm, t);
+    const float len = glm::length(t);
+    t = len > 1e-20f && std::isfinite(len) ? t / len : any_orthogonal(nrm);
+    const float w = m.tangents[i].w < 0.0f ? -1.0f : 1.0f;
+    m.tangents[i] = glm::vec4(t, w * flip);
+  }
+}
+
+}  // namespace
+
+std::optional<Mesh> convert_primitive(const tinygltf::Model& model, int mesh_index, int prim_index,
+                                      const glm::mat4& world, int material, const std::string& file,
+                                      const std::function<void(const std::string&)>& warn) {
+  const tinygltf::Mesh& src_mesh = model.meshes[static_cast<std::size_t>(mesh_index)];
+  const PrimitiveSource src{model, src_mesh.primitives[static_cast<std::size_t>(prim_index)], file,
+                            fmt::format("meshes[{}].primitives[{}]", mesh_index, prim_index)};
+  const int mode = src.prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : src.prim.mode;
+  const glm::mat3 linear(world);
+  const float det = glm::determinant(linear);
+  if (const std::string why = reason_to_skip(mode, det); !why.empty()) {
+    warn(fmt::format("{}: {}: {}; skipped", file, src.where, why));
+    return std::nullopt;
   }
 
-  if (const int acc = attr("TANGENT"); acc >= 0) {
-    m.tangents =
-        to_vectors<glm::vec4, 4>(read_matching(acc, 4, AttributeFormat::kFloatOnly, "TANGENT"));
-    const float flip = det < 0.0f ? -1.0f : 1.0f;
-    for (std::size_t i = 0; i < n; ++i) {
-      const glm::vec3& nrm = m.normals[i];
-      glm::vec3 t = linear * glm::vec3(m.tangents[i]);
-      t -= nrm * glm::dot(nrm, t);
-      const float len = glm::length(t);
-      t = len > 1e-20f && std::isfinite(len) ? t / len : any_orthogonal(nrm);
-      const float w = m.tangents[i].w < 0.0f ? -1.0f : 1.0f;
-      m.tangents[i] = glm::vec4(t, w * flip);
-    }
-  } else {
-    m.tangents = compute_tangents(m.positions, m.normals, m.uvs, m.indices);
+  Mesh m;
+  m.name = src_mesh.name.empty() ? fmt::format("mesh{}", mesh_index) : src_mesh.name;
+  if (src_mesh.primitives.size() > 1) m.name += fmt::format("/{}", prim_index);
+  m.material = material;
+  m.positions = read_positions(src);
+  m.indices = read_triangles(src, mode, m.positions.size());
+  if (m.indices.empty()) {
+    warn(fmt::format("{}: {}: no triangles; skipped", file, src.where));
+    return std::nullopt;
   }
+  place_in_world(m, world, det, src);
+  fill_normals(m, linear, src, warn);
+  fill_uvs(m, src);
+  fill_tangents(m, linear, det, src);
   return m;
 }
 

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # One command that installs what is missing, builds, and passes the tests:
 #   1. Release build with warnings as errors, every CTest test (chart tests run under xvfb-run);
-#   2. ASan + UBSan build of the unit tests (no VTK charts, no benchmarks, no llvmpipe replay:
-#      Mesa's allocations would read as leaks), tests not labelled
-#      slow or lint (the format check reads sources, so one run of it is enough).
+#   2. ASan + UBSan build of the unit tests with the emulator's contracts on (SKINSIM_DEBUG_CHECKS
+#      follows SKINSIM_SANITIZE); no VTK charts, no benchmarks, no llvmpipe replay (Mesa's
+#      allocations would read as leaks); tests not labelled slow or lint (the format check
+#      reads sources, so one run of it is enough).
 # Builds go through ccache when it is installed (scripts/ccache-env.sh), so a second run
 # recompiles only what changed.
 set -euo pipefail

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/op_profile.h"
+#include "shading/op_profile.h"
 
 namespace skinsim::sim {
 

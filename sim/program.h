@@ -8,7 +8,7 @@
 #include <memory>
 #include <string>
 
-#include "sim/op_profile.h"
+#include "shading/op_profile.h"
 #include "sim/shader_io.h"
 
 namespace skinsim::sim {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "sim/texture.h"
+#include "util/check.h"
 
 namespace skinsim::sim {
 
@@ -23,8 +24,15 @@ struct RenderTarget {
         height(h),
         format(f),
         pixels(static_cast<size_t>(w) * h, glm::vec4(0.0f)) {}
-  glm::vec4& at(int x, int y) { return pixels[static_cast<size_t>(y) * width + x]; }
-  const glm::vec4& at(int x, int y) const { return pixels[static_cast<size_t>(y) * width + x]; }
+  glm::vec4& at(int x, int y) { return pixels[index(x, y)]; }
+  const glm::vec4& at(int x, int y) const { return pixels[index(x, y)]; }
+
+ private:
+  size_t index(int x, int y) const {
+    SKINSIM_DCHECK_INDEX(x, width);
+    SKINSIM_DCHECK_INDEX(y, height);
+    return static_cast<size_t>(y) * width + x;
+  }
 };
 
 // A single-level texture over a finished render target's pixels, for a later pass to sample

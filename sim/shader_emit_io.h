@@ -13,8 +13,8 @@
 #include <cstdint>
 #include <string>
 
+#include "shading/shader_lang.h"
 #include "sim/shader_io.h"
-#include "sim/shader_lang.h"
 #include "sim/texture_unit.h"
 
 namespace skinsim::sim {

@@ -13,8 +13,9 @@
 
 #include <array>
 
+#include "shading/shader_lanes.h"
 #include "sim/shader_io.h"
-#include "sim/shader_lanes.h"
+#include "util/check.h"
 
 namespace skinsim::sim {
 
@@ -95,6 +96,7 @@ class Exec4FragIn {
            gather(planes, &Plane::dy) * ry_;
   }
   std::array<const Plane*, sl::kLanes> slot_planes(int slot) const {
+    SKINSIM_DCHECK_INDEX(slot, kMaxVaryings);
     return {fragments_[0].planes + slot, fragments_[1].planes + slot, fragments_[2].planes + slot,
             fragments_[3].planes + slot};
   }

@@ -8,9 +8,10 @@
 #include <glm/glm.hpp>
 #include <utility>
 
-#include "sim/shader_lang.h"
+#include "shading/shader_lang.h"
 #include "sim/texture_unit.h"
 #include "sim/triangle_setup.h"
+#include "util/check.h"
 
 namespace skinsim::sim {
 
@@ -31,7 +32,10 @@ class ExecFragIn {
         frag_coord_(frag_coord),
         inv_size_(inv_target_size) {}
 
-  float f(int slot) const { return planes_[slot].at(rx_, ry_) * w_; }
+  float f(int slot) const {
+    SKINSIM_DCHECK_INDEX(slot, kMaxVaryings);
+    return planes_[slot].at(rx_, ry_) * w_;
+  }
   glm::vec2 v2(int slot) const { return {f(slot), f(slot + 1)}; }
   glm::vec3 v3(int slot) const { return {f(slot), f(slot + 1), f(slot + 2)}; }
   glm::vec4 v4(int slot) const { return {f(slot), f(slot + 1), f(slot + 2), f(slot + 3)}; }
@@ -53,6 +57,7 @@ class ExecFragIn {
  private:
   template <int N>
   [[gnu::always_inline]] Varying<N> grad(int slot) const {
+    SKINSIM_DCHECK(slot >= 0 && slot + N <= kMaxVaryings);
     Varying<N> r;
     for (int i = 0; i < N; ++i) {
       const Plane& p = planes_[slot + i];
@@ -98,9 +103,13 @@ class ExecVertexIn {
 struct ExecVertexOut {
   glm::vec4 position{0.0f};  // clip space
   float varyings[kMaxVaryings] = {};
-  void set(int slot, float v) { varyings[slot] = v; }
+  void set(int slot, float v) {
+    SKINSIM_DCHECK_INDEX(slot, kMaxVaryings);
+    varyings[slot] = v;
+  }
   template <int N>
   void set(int slot, const glm::vec<N, float>& v) {
+    SKINSIM_DCHECK(slot >= 0 && slot + N <= kMaxVaryings);
     for (int i = 0; i < N; ++i) varyings[slot + i] = v[i];
   }
 };

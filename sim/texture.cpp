@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "sim/fp16.h"
+#include "shading/fp16.h"
 #include "util/text.h"
 #include "util/unorm8.h"
 

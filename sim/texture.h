@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "sim/counters.h"
+#include "util/check.h"
 
 namespace skinsim::sim {
 
@@ -67,7 +68,11 @@ struct MipLevel {
   int width = 0;
   int height = 0;
   std::vector<glm::vec4> texels;
-  const glm::vec4& at(int x, int y) const { return texels[static_cast<size_t>(y) * width + x]; }
+  const glm::vec4& at(int x, int y) const {
+    SKINSIM_DCHECK_INDEX(x, width);
+    SKINSIM_DCHECK_INDEX(y, height);
+    return texels[static_cast<size_t>(y) * width + x];
+  }
 };
 
 // One level as the sampler reads it: row-major texels that the texture owns or, for a view
@@ -76,7 +81,11 @@ struct LevelView {
   int width = 0;
   int height = 0;
   const glm::vec4* texels = nullptr;
-  const glm::vec4& at(int x, int y) const { return texels[static_cast<size_t>(y) * width + x]; }
+  const glm::vec4& at(int x, int y) const {
+    SKINSIM_DCHECK_INDEX(x, width);
+    SKINSIM_DCHECK_INDEX(y, height);
+    return texels[static_cast<size_t>(y) * width + x];
+  }
 };
 
 struct SamplerState {
@@ -107,7 +116,10 @@ class Texture2D {
   int width() const { return levels_.front().width; }
   int height() const { return levels_.front().height; }
   int level_count() const { return static_cast<int>(levels_.size()); }
-  const LevelView& level(int i) const { return levels_[i]; }
+  const LevelView& level(int i) const {
+    SKINSIM_DCHECK_INDEX(i, levels_.size());
+    return levels_[i];
+  }
   // Byte offset of a texel from the texture's base address (twiddled within each level).
   std::uint64_t texel_offset(int level, int x, int y) const {
     return level_offsets_[level] +

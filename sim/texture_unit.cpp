@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "util/check.h"
+
 namespace skinsim::sim {
 
 using filtering::footprint_rho2;
@@ -14,6 +16,7 @@ void ExecTexUnit::unbound(int binding, const char* kind) {
 }
 
 const TextureCube& ExecTexUnit::cube(int binding) const {
+  SKINSIM_DCHECK_INDEX(binding, kMaxTextureBindings);
   const TextureCube* t = bindings_ ? bindings_->cubes[binding] : nullptr;
   if (!t) unbound(binding, "cube");
   return *t;

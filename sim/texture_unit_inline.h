@@ -8,10 +8,12 @@
 
 #include "sim/texture_filtering.h"
 #include "sim/texture_footprints.h"
+#include "util/check.h"
 
 namespace skinsim::sim {
 
 inline const Texture2D& ExecTexUnit::texture(int binding) const {
+  SKINSIM_DCHECK_INDEX(binding, kMaxTextureBindings);
   const Texture2D* t = bindings_ ? bindings_->textures[binding] : nullptr;
   if (!t) unbound(binding, "2D texture");
   return *t;
@@ -80,6 +82,10 @@ inline void ExecTexUnit::record_footprint(std::uint64_t l00, std::uint64_t l10, 
   const auto mix = [](const glm::vec4& x, const glm::vec4& y, float a) {
     return x * (1.0f - a) + y * a;
   };
+  SKINSIM_DCHECK_INDEX(f.x0, f.level->width);
+  SKINSIM_DCHECK_INDEX(f.x1, f.level->width);
+  SKINSIM_DCHECK_INDEX(f.y0, f.level->height);
+  SKINSIM_DCHECK_INDEX(f.y1, f.level->height);
   const glm::vec4* row0 = f.level->texels + static_cast<size_t>(f.y0) * f.level->width;
   const glm::vec4* row1 = f.level->texels + static_cast<size_t>(f.y1) * f.level->width;
   return mix(mix(row0[f.x0], row0[f.x1], f.ax), mix(row1[f.x0], row1[f.x1], f.ax), f.ay);

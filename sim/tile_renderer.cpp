@@ -4,6 +4,8 @@
 #include <array>
 #include <bit>
 
+#include "util/check.h"
+
 namespace skinsim::sim {
 
 namespace {
@@ -116,6 +118,7 @@ void TileRenderer::shade_batch() {
 
 void TileRenderer::queue(std::uint32_t triangle, int px, int py, std::size_t index,
                          unsigned samples) {
+  SKINSIM_DCHECK_INDEX(index * pattern_.count, color_.size());
   batch_.push_back({triangle, px, py, index, samples});
   if (batch_.size() == sl::kLanes) shade_batch();
 }
@@ -174,6 +177,7 @@ void TileRenderer::draw_triangle(std::uint32_t tri, TileCounters& counters,
     oy[s] = static_cast<float>(pattern_.dy[s]) / kSubpixelOne;
   }
   rasterize<kSamples>(t, rect_, pattern_, [&](int px, int py, unsigned mask, float rx, float ry) {
+    SKINSIM_DCHECK(px >= rect_.x0 && px < rect_.x1 && py >= rect_.y0 && py < rect_.y1);
     const size_t i = static_cast<size_t>(py - rect_.y0) * ts + (px - rect_.x0);
     ++counters.fragments_depth_tested;
     counters.samples_covered += static_cast<unsigned>(std::popcount(mask));
@@ -205,7 +209,10 @@ void TileRenderer::draw_triangle(std::uint32_t tri, TileCounters& counters,
 
 void TileRenderer::render(int tx, int ty, const std::vector<std::uint32_t>& triangles,
                           TileCounters& counters, TextureLineLog& lines) {
+  SKINSIM_DCHECK_INDEX(tx, grid_.tiles_x);
+  SKINSIM_DCHECK_INDEX(ty, grid_.tiles_y);
   rect_ = grid_.tile_rect(tx, ty);
+  SKINSIM_DCHECK(rect_.x1 - rect_.x0 <= grid_.tile_size && rect_.y1 - rect_.y0 <= grid_.tile_size);
   const int ts = grid_.tile_size;
   const int count = pattern_.count;
   const int width = rect_.x1 - rect_.x0;

@@ -11,6 +11,7 @@
 #include "sim/texture_cache.h"
 #include "sim/texture_line_log.h"
 #include "sim/tile_renderer.h"
+#include "util/check.h"
 
 namespace skinsim::sim {
 
@@ -77,6 +78,7 @@ class TileStage {
   };
 
   void shade(TileRenderer& renderer, int tile) {
+    SKINSIM_DCHECK_INDEX(tile, c_.tiles.size());
     TileCounters& tc = c_.tiles[tile];
     if (grid_.in_area(tc.tile_x, tc.tile_y)) {
       logs_[tile] = take_log();

@@ -15,7 +15,7 @@
 #include "pipeline/bake/error.h"
 #include "pipeline/bake/hemisphere.h"
 #include "pipeline/bake/specular.h"
-#include "sim/fp16.h"
+#include "shading/fp16.h"
 #include "util/unorm8.h"
 
 namespace skinsim::bake {

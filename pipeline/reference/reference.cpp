@@ -223,42 +223,59 @@ glm::vec3 transmittance(float s_mm) {
   return t;
 }
 
-}  // namespace
+// The lights the reference sees: the frame's ambient, key and back light, and how far each
+// light is. The key is distant; the back (rim) light stands 30 cm behind the head, as in a
+// studio, between it and any backdrop, which therefore casts no shadow of it.
+struct ReferenceLights {
+  glm::vec3 ambient{0.0f};
+  std::vector<scene::DirectionalLight> lights;
+  std::vector<float> reach;
+};
 
-ReferenceFrame render_reference(const GpuScene& gs, const PipelineConfig& config, int threads) {
-  const int w = config.width, h = config.height;
-  const View view = make_view(gs, config);
-  const GBuffer g = render_gbuffer(gs, config, view, threads);
-  const scene::Scene& sc = gs.scene();
+ReferenceLights reference_lights(const GpuScene& gs, const PipelineConfig& config) {
   const FrameLighting lighting = frame_lighting(gs, config);
-  std::vector<scene::DirectionalLight> lights{lighting.key};
-  if (lighting.has_back()) lights.push_back(lighting.back);
-  // Shadow rays start this far off the surface (past the triangles they start on).
-  const float ray_offset = 0.05f * sc.units_per_mm;
-  // How far each light is: the key is distant; the back (rim) light stands 30 cm behind the
-  // head, as in a studio, between it and any backdrop, which therefore casts no shadow of it.
-  const std::vector<float> reach{std::numeric_limits<float>::infinity(),
-                                 kBackLightDistanceMm * sc.units_per_mm};
+  ReferenceLights out{lighting.ambient, {lighting.key}, {}};
+  if (lighting.has_back()) out.lights.push_back(lighting.back);
+  out.reach = {std::numeric_limits<float>::infinity(),
+               kBackLightDistanceMm * gs.scene().units_per_mm};
+  return out;
+}
 
-  std::vector<glm::vec3> irradiance(static_cast<size_t>(w) * h, glm::vec3(0.0f));
-  std::vector<float> visible(static_cast<size_t>(w) * h * lights.size(), 0.0f);  // per light
-  const auto for_rows = [&](const std::function<void(int)>& row) {
-    tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-    arena.execute([&] { tbb::parallel_for(0, h, row); });
-  };
-  // Calls row(y, x_begin, x_end) for each row of each block of pixels.
-  const auto for_blocks = [&](const std::function<void(int, int, int)>& row) {
-    tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-    arena.execute([&] {
-      tbb::parallel_for(tbb::blocked_range2d<int>(0, h, 32, 0, w, 128),
-                        [&](const tbb::blocked_range2d<int>& block) {
-                          for (int y = block.rows().begin(); y < block.rows().end(); ++y) {
-                            row(y, block.cols().begin(), block.cols().end());
-                          }
-                        });
-    });
-  };
-  for_rows([&](int y) {
+// Calls row(y) for each row of a w x h image, on `threads` threads (0: all).
+void for_rows(int h, int threads, const std::function<void(int)>& row) {
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  arena.execute([&] { tbb::parallel_for(0, h, row); });
+}
+
+// Calls row(y, x_begin, x_end) for each row of each block of pixels of a w x h image.
+void for_blocks(int w, int h, int threads, const std::function<void(int, int, int)>& row) {
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range2d<int>(0, h, 32, 0, w, 128),
+                      [&](const tbb::blocked_range2d<int>& block) {
+                        for (int y = block.rows().begin(); y < block.rows().end(); ++y) {
+                          row(y, block.cols().begin(), block.cols().end());
+                        }
+                      });
+  });
+}
+
+// Light reaching the skin: irradiance per pixel, and each light's visibility per pixel
+// (pixel-major, lights.size() per pixel).
+struct SkinLight {
+  std::vector<glm::vec3> irradiance;
+  std::vector<float> visible;
+};
+
+SkinLight light_skin(const GpuScene& gs, const View& view, const GBuffer& g,
+                     const ReferenceLights& rl, int threads) {
+  const int w = g.position.width, h = g.position.height;
+  const std::vector<scene::DirectionalLight>& lights = rl.lights;
+  // Shadow rays start this far off the surface (past the triangles they start on).
+  const float ray_offset = 0.05f * gs.scene().units_per_mm;
+  SkinLight out{std::vector<glm::vec3>(static_cast<size_t>(w) * h, glm::vec3(0.0f)),
+                std::vector<float>(static_cast<size_t>(w) * h * lights.size(), 0.0f)};
+  for_rows(h, threads, [&](int y) {
     for (int x = 0; x < w; ++x) {
       if (g.position.at(x, y).w != reference::kKindSkin) continue;
       const glm::vec3 n(g.normal.at(x, y));
@@ -267,78 +284,116 @@ ReferenceFrame render_reference(const GpuScene& gs, const PipelineConfig& config
       // The light's physics, whatever the knobs: visibility is always ray cast and light
       // always crosses thin parts (the shadows and transmission knobs switch the
       // pipelines' approximations of these, measured against this).
-      glm::vec3 e = lighting.ambient;
+      glm::vec3 e = rl.ambient;
       const glm::vec3 origin =
           reference::shadow_ray_origin(gs, view.eye, p, ray_offset) + vertex_n * ray_offset;
       for (std::size_t i = 0; i < lights.size(); ++i) {
         const scene::DirectionalLight& light = lights[i];
         const float n_dot_l = glm::dot(n, light.direction);
         if (n_dot_l <= 0.0f) continue;
-        const float v = visibility(gs.rays(), origin, light.direction, x, y, ray_offset, reach[i]);
-        visible[(static_cast<size_t>(y) * w + x) * lights.size() + i] = v;
+        const float v =
+            visibility(gs.rays(), origin, light.direction, x, y, ray_offset, rl.reach[i]);
+        out.visible[(static_cast<size_t>(y) * w + x) * lights.size() + i] = v;
         e += light.radiance * n_dot_l * v;
       }
-      {
-        glm::vec3 back(0.0f);
-        for (const scene::DirectionalLight& light : lights) {
-          back +=
-              light.radiance * std::clamp(0.3f - glm::dot(vertex_n, light.direction), 0.0f, 1.0f);
-        }
-        if (back != glm::vec3(0.0f)) {
-          e += transmittance(g.vertex_normal.at(x, y).w) * back;
-        }
+      glm::vec3 back(0.0f);
+      for (const scene::DirectionalLight& light : lights) {
+        back += light.radiance * std::clamp(0.3f - glm::dot(vertex_n, light.direction), 0.0f, 1.0f);
       }
-      irradiance[static_cast<size_t>(y) * w + x] = e;
+      if (back != glm::vec3(0.0f)) e += transmittance(g.vertex_normal.at(x, y).w) * back;
+      out.irradiance[static_cast<size_t>(y) * w + x] = e;
     }
   });
+  return out;
+}
 
-  std::unique_ptr<const SkinDiffusion> diffusion;
+// The reference profile's diffusion of the skin's irradiance.
+std::unique_ptr<const SkinDiffusion> skin_diffusion(const PipelineConfig& config, const GBuffer& g,
+                                                    const std::vector<glm::vec3>& irradiance,
+                                                    const View& view, float units_per_mm) {
   if (config.reference_profile == ReferenceProfile::kDipole) {
-    diffusion = std::make_unique<const DipoleDiffusion>(g.position, reference::kKindSkin,
-                                                        irradiance, view, sc.units_per_mm,
-                                                        bake::dipole_terms(bake::jensen_skin1()));
-  } else {
-    diffusion = std::make_unique<const GaussianDiffusion>(g.position, reference::kKindSkin,
-                                                          irradiance, view, sc.units_per_mm);
+    return std::make_unique<const DipoleDiffusion>(g.position, reference::kKindSkin, irradiance,
+                                                   view, units_per_mm,
+                                                   bake::dipole_terms(bake::jensen_skin1()));
   }
-  const bake::BrdfLutParams lut_params = brdf_lut_params(config);
-  const DirectionalTable directional(lut_params);
-  ReferenceFrame out{sim::RenderTarget("reference", w, h, sim::TexelFormat::kRGBA32F),
-                     std::vector<std::uint8_t>(static_cast<size_t>(w) * h, 0)};
-  const auto shade = [&](int x, int y, const glm::vec3& diffused) {
-    const glm::vec4 p = g.position.at(x, y);
+  return std::make_unique<const GaussianDiffusion>(g.position, reference::kKindSkin, irradiance,
+                                                   view, units_per_mm);
+}
+
+// Shades the reference's pixels from the G-buffer, the diffused light and the lights'
+// visibility: the skin's diffuse, the Kelemen/Szirmay-Kalos specular and the environment's
+// Fresnel; other surfaces as the G-buffer holds them.
+class ReferenceShader {
+ public:
+  ReferenceShader(const GpuScene& gs, const PipelineConfig& config, const View& view,
+                  const GBuffer& g, const ReferenceLights& rl, const SkinLight& light)
+      : gs_(gs),
+        view_(view),
+        g_(g),
+        lights_(rl.lights),
+        visible_(light.visible),
+        lut_params_(brdf_lut_params(config)),
+        directional_(lut_params_) {}
+
+  void shade(int x, int y, const glm::vec3& diffused, ReferenceFrame& out) const {
+    const int w = g_.position.width;
+    const glm::vec4 p = g_.position.at(x, y);
     if (p.w != reference::kKindSkin) {
-      out.frame.at(x, y) = g.nonskin.at(x, y);
+      out.frame.at(x, y) = g_.nonskin.at(x, y);
       return;
     }
     out.skin_mask[static_cast<size_t>(y) * w + x] = 1;
-    const glm::vec3 n(g.normal.at(x, y));
-    const float reflectivity = g.normal.at(x, y).w;
-    const glm::vec3 v = view.to_viewer(glm::vec3(p));
+    const glm::vec3 n(g_.normal.at(x, y));
+    const float reflectivity = g_.normal.at(x, y).w;
+    const glm::vec3 v = view_.to_viewer(glm::vec3(p));
     const float n_dot_v = std::clamp(glm::dot(n, v), 0.0f, 1.0f);
-    const glm::vec3 albedo(g.albedo.at(x, y));
+    const glm::vec3 albedo(g_.albedo.at(x, y));
     float energy = 0.0f, fresnel = 0.0f;
-    directional.at(n_dot_v, energy, fresnel);
+    directional_.at(n_dot_v, energy, fresnel);
     const glm::vec3 diffuse = albedo * diffused * energy;
     glm::vec3 specular(0.0f);
-    for (std::size_t i = 0; i < lights.size(); ++i) {
-      const scene::DirectionalLight& light = lights[i];
+    for (std::size_t i = 0; i < lights_.size(); ++i) {
+      const scene::DirectionalLight& light = lights_[i];
       if (glm::dot(n, light.direction) <= 0.0f) continue;
-      specular += light.radiance * ks_specular(n, light.direction, v, lut_params) * reflectivity *
-                  visible[(static_cast<size_t>(y) * w + x) * lights.size() + i];
+      specular += light.radiance * ks_specular(n, light.direction, v, lut_params_) * reflectivity *
+                  visible_[(static_cast<size_t>(y) * w + x) * lights_.size() + i];
     }
     const glm::vec3 env =
-        sample_cube(gs.environment_diffuse(), glm::vec3(g.vertex_normal.at(x, y)));
+        sample_cube(gs_.environment_diffuse(), glm::vec3(g_.vertex_normal.at(x, y)));
     const glm::vec3 color = diffuse + specular + env * fresnel * reflectivity;
     out.frame.at(x, y) =
         glm::vec4(srgb_encode(color.r), srgb_encode(color.g), srgb_encode(color.b), 1.0f);
-  };
+  }
+
+ private:
+  const GpuScene& gs_;
+  const View& view_;
+  const GBuffer& g_;
+  const std::vector<scene::DirectionalLight>& lights_;
+  const std::vector<float>& visible_;
+  const bake::BrdfLutParams lut_params_;
+  const DirectionalTable directional_;
+};
+
+}  // namespace
+
+ReferenceFrame render_reference(const GpuScene& gs, const PipelineConfig& config, int threads) {
+  const int w = config.width, h = config.height;
+  const View view = make_view(gs, config);
+  const GBuffer g = render_gbuffer(gs, config, view, threads);
+  const ReferenceLights lights = reference_lights(gs, config);
+  const SkinLight light = light_skin(gs, view, g, lights, threads);
+  const std::unique_ptr<const SkinDiffusion> diffusion =
+      skin_diffusion(config, g, light.irradiance, view, gs.scene().units_per_mm);
+  const ReferenceShader shader(gs, config, view, g, lights, light);
+  ReferenceFrame out{sim::RenderTarget("reference", w, h, sim::TexelFormat::kRGBA32F),
+                     std::vector<std::uint8_t>(static_cast<size_t>(w) * h, 0)};
   // In blocks, not whole rows: a pixel's diffusion reads ~50 rows around it, and a block's
   // rows stay in the core's cache while a whole row's would not.
-  for_blocks([&](int y, int x_begin, int x_end) {
+  for_blocks(w, h, threads, [&](int y, int x_begin, int x_end) {
     std::vector<glm::vec3> diffused(static_cast<std::size_t>(x_end - x_begin));
     diffusion->row(y, x_begin, x_end, diffused.data());
-    for (int x = x_begin; x < x_end; ++x) shade(x, y, diffused[x - x_begin]);
+    for (int x = x_begin; x < x_end; ++x) shader.shade(x, y, diffused[x - x_begin], out);
   });
   return out;
 }

@@ -12,11 +12,8 @@ struct BackgroundFS {
     LightUniforms lights;
     glm::vec3 albedo_factor{1.0f};
   };
-  template <class L>
-  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
-                                   const Uniforms& u) {
-    using vec3 = typename L::vec3;
-    using vec4 = typename L::vec4;
+  SKINSIM_SL_FRAGMENT {
+    SKINSIM_SL_TYPES(L);
     const vec4 base = tex.sample(0, in.texcoord(SurfaceSlots::kUv));
     const vec3 n = sl::normalize(in.v3(SurfaceSlots::kNormal));
     const vec3 albedo = decode_gamma<GammaMode::kSquare>(sl::xyz(base)) * u.albedo_factor;

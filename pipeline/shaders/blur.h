@@ -40,12 +40,8 @@ struct BlurFS {
   struct Uniforms {
     std::array<float, kBlurTaps> weights{};  // Gaussian weights, centre is tap kBlurTaps/2
   };
-  template <class L>
-  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
-                                   const Uniforms& u) {
-    using vec3 = typename L::vec3;
-    using vec4 = typename L::vec4;
-    using f32 = typename L::f32;
+  SKINSIM_SL_FRAGMENT {
+    SKINSIM_SL_TYPES(L);
     vec3 sum(0.0f);
     f32 weight_sum(0.0f);
     const auto taps = sl::sample_each<kBlurTaps>(tex, 0, [&](int i) { return in.texcoord(2 * i); });
@@ -74,12 +70,8 @@ struct DepthAwareBlurFS {
     float codes_per_tolerance = 1.0f;
     bool last_axis = false;
   };
-  template <class L>
-  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
-                                   const Uniforms& u) {
-    using vec3 = typename L::vec3;
-    using vec4 = typename L::vec4;
-    using f32 = typename L::f32;
+  SKINSIM_SL_FRAGMENT {
+    SKINSIM_SL_TYPES(L);
     const vec4 centre = tex.sample(0, in.texcoord(2 * (kBlurTaps / 2)));
     vec3 sum(0.0f);
     f32 weight_sum(0.0f);

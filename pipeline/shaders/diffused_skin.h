@@ -24,11 +24,8 @@ struct DiffusedSkinFS {
                    specular_suffix(kSpec), gamma_suffix(kGamma)});
   static constexpr const char* kName = kNameText.text;
   using Uniforms = TechniqueUniforms;
-  template <class L>
-  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
-                                   const Uniforms& u) {
-    using vec3 = typename L::vec3;
-    using vec4 = typename L::vec4;
+  SKINSIM_SL_FRAGMENT {
+    SKINSIM_SL_TYPES(L);
     using B = TechniqueBindings;
     const SkinSurface<L> s = skin_surface<L, kGamma>(in, tex, u);
     vec3 diffuse_light(0.0f);
@@ -42,9 +39,7 @@ struct DiffusedSkinFS {
       const vec3 diffused = sl::xyz(buffer) * sl::rcp(sl::max(sl::w(buffer), 1.0f / 255.0f));
       diffuse_light = sl::mix(sharp, diffused, sl::w(buffer));
     }
-    const Reflection<L> r = skin_specular<kSpec, L>(s, tex, u);
-    const vec3 color = s.albedo * diffuse_light * r.diffuse_energy + r.light;
-    return vec4(encode_gamma<kGamma>(color), 1.0f);
+    return skin_color<kGamma, kSpec, L>(s, tex, u, diffuse_light);
   }
 };
 

@@ -56,12 +56,8 @@ template <bool kOrthographic>
 struct DipoleFSFor {
   static constexpr const char* kName = kOrthographic ? "dipole_sss_ortho_fs" : "dipole_sss_fs";
   using Uniforms = DipoleUniforms;
-  template <class L>
-  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
-                                   const Uniforms& u) {
-    using vec2 = typename L::vec2;
-    using vec3 = typename L::vec3;
-    using vec4 = typename L::vec4;
+  SKINSIM_SL_FRAGMENT {
+    SKINSIM_SL_TYPES(L);
     const auto [screen, centre, depth, uv_per_mm] =
         kernel_centre<kOrthographic, L>(in, tex, u.focal_uv);
     // The article's random directions: the disc turned per pixel by interleaved gradient

@@ -18,11 +18,8 @@ struct EyeFS {
   };
   static constexpr int kAlbedo = 0;
   static constexpr int kEnvironment = 2;
-  template <class L>
-  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
-                                   const Uniforms& u) {
-    using vec3 = typename L::vec3;
-    using vec4 = typename L::vec4;
+  SKINSIM_SL_FRAGMENT {
+    SKINSIM_SL_TYPES(L);
     const vec4 base = tex.sample(kAlbedo, in.texcoord(SurfaceSlots::kUv));
     const vec3 n = sl::normalize(in.v3(SurfaceSlots::kNormal));
     const vec3 v = sl::normalize(vec3(u.eye) - in.v3(SurfaceSlots::kWorldPos));

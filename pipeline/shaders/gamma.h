@@ -3,7 +3,7 @@
 #pragma once
 
 #include "pipeline/config.h"
-#include "sim/shader_lang.h"
+#include "shading/shader_lang.h"
 
 namespace skinsim::pipeline::shaders {
 

@@ -23,11 +23,8 @@ struct IrradianceFS {
     float depth_near_mm = 0.0f;
     float inv_depth_range_mm = 1.0f;
   };
-  template <class L>
-  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
-                                   const Uniforms& u) {
-    using vec3 = typename L::vec3;
-    using vec4 = typename L::vec4;
+  SKINSIM_SL_FRAGMENT {
+    SKINSIM_SL_TYPES(L);
     const vec3 n = sl::normalize(in.v3(0));
     const auto visibility = key_visibility<L>(in, tex, u.lights, PositionNormalVS::kLight);
     const vec3 irradiance = lambert_irradiance<L>(n, tinted<L>(visibility, u.lights), u.lights) +

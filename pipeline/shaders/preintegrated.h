@@ -76,19 +76,13 @@ struct PreintegratedFS {
        specular_suffix(kSpec), gamma_suffix(kGamma)});
   static constexpr const char* kName = kNameText.text;
   using Uniforms = TechniqueUniforms;
-  template <class L>
-  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
-                                   const Uniforms& u) {
-    using vec2 = typename L::vec2;
-    using vec3 = typename L::vec3;
-    using vec4 = typename L::vec4;
-    using f32 = typename L::f32;
-    using B = TechniqueBindings;
+  SKINSIM_SL_FRAGMENT {
+    SKINSIM_SL_TYPES(L);
     const SkinSurface<L> s = skin_surface<L, kGamma>(in, tex, u);
     f32 curvature(0.0f);  // LUT v coordinate: curvature / max curvature
     if constexpr (kCurvature == CurvatureSource::kVertex) {
       // The baked texture stores curvature / max curvature: the LUT v coordinate.
-      curvature = sl::x(tex.sample(B::kCurvature, in.texcoord(SurfaceSlots::kUv)));
+      curvature = sl::x(tex.sample(TechniqueBindings::kCurvature, in.texcoord(SurfaceSlots::kUv)));
     } else {
       curvature = derivative_curvature<L>(in, u.curvature_scale);
     }
@@ -108,9 +102,7 @@ struct PreintegratedFS {
                                                   vec3(u.lights.direction[i]), curvature);
       diffuse_light = diffuse_light + light_radiance<L>(i, key_vis, u.lights) * scattered;
     }
-    const Reflection<L> r = skin_specular<kSpec, L>(s, tex, u);
-    const vec3 color = s.albedo * diffuse_light * r.diffuse_energy + r.light;
-    return vec4(encode_gamma<kGamma>(color), 1.0f);
+    return skin_color<kGamma, kSpec, L>(s, tex, u, diffuse_light);
   }
 };
 

@@ -57,11 +57,8 @@ struct DiffuseDepthFS {
     float mm_per_unit = 1.0f;
   };
   static constexpr int kNormalMap = 1;
-  template <class L>
-  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
-                                   const Uniforms& u) {
-    using vec3 = typename L::vec3;
-    using vec4 = typename L::vec4;
+  SKINSIM_SL_FRAGMENT {
+    SKINSIM_SL_TYPES(L);
     const vec3 irradiance = skin_irradiance<L>(in, tex, kNormalMap, u.lights);
     const auto depth_mm = sl::length(vec3(u.eye) - in.v3(SurfaceSlots::kWorldPos)) * u.mm_per_unit;
     return vec4(irradiance, depth_mm);
@@ -79,11 +76,8 @@ struct DiffuseDepthOrthoFS {
     LightUniforms lights;
   };
   static constexpr int kNormalMap = DiffuseDepthFS::kNormalMap;
-  template <class L>
-  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
-                                   const Uniforms& u) {
-    using vec3 = typename L::vec3;
-    using vec4 = typename L::vec4;
+  SKINSIM_SL_FRAGMENT {
+    SKINSIM_SL_TYPES(L);
     const vec3 irradiance = skin_irradiance<L>(in, tex, kNormalMap, u.lights);
     const auto depth_mm =
         sl::dot(vec3(u.depth_axis), in.v3(SurfaceSlots::kWorldPos)) + u.depth_offset;
@@ -163,12 +157,8 @@ template <bool kOrthographic>
 struct BurleyFSFor {
   static constexpr const char* kName = kOrthographic ? "burley_sss_ortho_fs" : "burley_sss_fs";
   using Uniforms = BurleyUniforms;
-  template <class L>
-  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
-                                   const Uniforms& u) {
-    using vec2 = typename L::vec2;
-    using vec3 = typename L::vec3;
-    using vec4 = typename L::vec4;
+  SKINSIM_SL_FRAGMENT {
+    SKINSIM_SL_TYPES(L);
     const auto [screen, centre, depth, uv_per_mm] =
         kernel_centre<kOrthographic, L>(in, tex, u.focal_uv);
     vec3 sum(0.0f);
@@ -194,11 +184,8 @@ template <bool kOrthographic>
 struct SsssBlurFSFor {
   static constexpr const char* kName = kOrthographic ? "ssss_blur_ortho_fs" : "ssss_blur_fs";
   using Uniforms = SsssBlurUniforms;
-  template <class L>
-  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
-                                   const Uniforms& u) {
-    using vec3 = typename L::vec3;
-    using vec4 = typename L::vec4;
+  SKINSIM_SL_FRAGMENT {
+    SKINSIM_SL_TYPES(L);
     const auto [screen, centre, depth, step] =
         kernel_centre<kOrthographic, L>(in, tex, u.focal_uv * u.axis);
     vec3 sum = sl::xyz(centre) * vec3(u.weights[0]);

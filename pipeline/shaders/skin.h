@@ -22,11 +22,8 @@ struct SkinFS {
       shader_name({"skin_fs", specular_suffix(kSpec), gamma_suffix(kGamma)});
   static constexpr const char* kName = kNameText.text;
   using Uniforms = TechniqueUniforms;
-  template <class L>
-  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
-                                   const Uniforms& u) {
-    using vec3 = typename L::vec3;
-    using vec4 = typename L::vec4;
+  SKINSIM_SL_FRAGMENT {
+    SKINSIM_SL_TYPES(L);
     const SkinSurface<L> s = skin_surface<L, kGamma>(in, tex, u);
     const vec4 buffer = tex.sample(SkinBindings::kIrradiance, in.screen_texcoord());
 
@@ -38,9 +35,7 @@ struct SkinFS {
     const vec3 wide = vec3(u.layer_mix);
     const vec3 diffuse_light =
         sharp * (1.0f - wide * sl::w(buffer)) + sl::xyz(buffer) * (wide * kIrradianceRange);
-    const Reflection<L> r = skin_specular<kSpec, L>(s, tex, u);
-    const vec3 color = s.albedo * diffuse_light * r.diffuse_energy + r.light;
-    return vec4(encode_gamma<kGamma>(color), 1.0f);
+    return skin_color<kGamma, kSpec, L>(s, tex, u, diffuse_light);
   }
 };
 
@@ -52,11 +47,8 @@ struct SkinLodFS {
       shader_name({"skin_lod_fs", specular_suffix(kSpec), gamma_suffix(kGamma)});
   static constexpr const char* kName = kNameText.text;
   using Uniforms = TechniqueUniforms;
-  template <class L>
-  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
-                                   const Uniforms& u) {
-    using vec3 = typename L::vec3;
-    using vec4 = typename L::vec4;
+  SKINSIM_SL_FRAGMENT {
+    SKINSIM_SL_TYPES(L);
     const SkinSurface<L> s = skin_surface<L, kGamma>(in, tex, u);
 
     const vec3 n_r = sl::normalize(sl::mix(s.normal, s.vertex_normal, u.layer_mix.r));
@@ -70,9 +62,7 @@ struct SkinLodFS {
       const vec3 n_dot_l = sl::saturate(vec3(sl::dot(n_r, l), sl::dot(n_g, l), sl::dot(n_b, l)));
       diffuse_light = diffuse_light + light_radiance<L>(i, key_vis, u.lights) * n_dot_l;
     }
-    const Reflection<L> r = skin_specular<kSpec, L>(s, tex, u);
-    const vec3 color = s.albedo * diffuse_light * r.diffuse_energy + r.light;
-    return vec4(encode_gamma<kGamma>(color), 1.0f);
+    return skin_color<kGamma, kSpec, L>(s, tex, u, diffuse_light);
   }
 };
 

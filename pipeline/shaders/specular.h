@@ -177,4 +177,14 @@ Reflection<L> skin_specular(const SkinSurface<L>& s, typename L::TexUnit& tex,
   return r;
 }
 
+// What a skin shader returns once it has its diffuse light: that light times the albedo and
+// the specular model's diffuse energy, plus the specular light, gamma-encoded, opaque.
+template <GammaMode kGamma, SpecularModel kSpec, class L>
+typename L::vec4 skin_color(const SkinSurface<L>& s, typename L::TexUnit& tex,
+                            const TechniqueUniforms& u, const typename L::vec3& diffuse_light) {
+  const Reflection<L> r = skin_specular<kSpec, L>(s, tex, u);
+  const typename L::vec3 color = s.albedo * diffuse_light * r.diffuse_energy + r.light;
+  return typename L::vec4(encode_gamma<kGamma>(color), 1.0f);
+}
+
 }  // namespace skinsim::pipeline::shaders

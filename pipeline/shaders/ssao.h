@@ -64,12 +64,8 @@ template <bool kOrthographic>
 struct SsaoFSFor {
   static constexpr const char* kName = kOrthographic ? "ssao_ortho_fs" : "ssao_fs";
   using Uniforms = SsaoUniforms;
-  template <class L>
-  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
-                                   const Uniforms& u) {
-    using vec2 = typename L::vec2;
-    using vec3 = typename L::vec3;
-    using vec4 = typename L::vec4;
+  SKINSIM_SL_FRAGMENT {
+    SKINSIM_SL_TYPES(L);
     const auto [screen, centre, depth, texture_uv_per_mm] =
         kernel_centre<kOrthographic, L>(in, tex, u.focal_uv);
     const vec3 n = sl::xyz(centre);

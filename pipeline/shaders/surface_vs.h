@@ -33,13 +33,19 @@ struct SurfaceVS {
     bool view_depth = false;
     glm::vec4 view_depth_plane{0.0f};
   };
+  // The vertex pushed `normal_offset` along its normal n, projected to out.position.
+  template <class L>
+  static typename L::vec3 place(const typename L::VertexIn& in, typename L::VertexOut& out,
+                                const Uniforms& u, const typename L::vec3& n) {
+    const typename L::vec3 p = in.position() + n * u.normal_offset;
+    out.position = u.view_proj * typename L::vec4(p, 1.0f);
+    return p;
+  }
   template <class L>
   static void vertex(const typename L::VertexIn& in, typename L::VertexOut& out,
                      const Uniforms& u) {
-    using vec4 = typename L::vec4;
     const auto n = in.normal();
-    const auto p = in.position() + n * u.normal_offset;
-    out.position = u.view_proj * vec4(p, 1.0f);
+    const auto p = place<L>(in, out, u, n);
     out.set(SurfaceSlots::kWorldPos, p);
     out.set(SurfaceSlots::kNormal, n);
     out.set(SurfaceSlots::kTangent, in.tangent());
@@ -58,10 +64,8 @@ struct PositionNormalVS {
   template <class L>
   static void vertex(const typename L::VertexIn& in, typename L::VertexOut& out,
                      const Uniforms& u) {
-    using vec4 = typename L::vec4;
     const auto n = in.normal();
-    const auto p = in.position() + n * u.normal_offset;
-    out.position = u.view_proj * vec4(p, 1.0f);
+    const auto p = SurfaceVS::place<L>(in, out, u, n);
     out.set(0, n);
     write_light_varyings<L>(in, out, u.light, p, n, kLight);
     if (u.view_depth) {

@@ -45,11 +45,8 @@ struct UvIrradianceFS {
     LightUniforms lights;
   };
   static constexpr int kNormalMap = 1;
-  template <class L>
-  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
-                                   const Uniforms& u) {
-    using vec3 = typename L::vec3;
-    using vec4 = typename L::vec4;
+  SKINSIM_SL_FRAGMENT {
+    SKINSIM_SL_TYPES(L);
     const vec4 normal_map = tex.sample(kNormalMap, in.texcoord(UvSpaceVS::kUv));
     const vec3 vertex_normal = sl::normalize(in.v3(UvSpaceVS::kNormal));
     const vec3 n = normal_mapped<L>(vertex_normal, in.v4(UvSpaceVS::kTangent), normal_map);
@@ -69,11 +66,8 @@ struct UvCombineFS {
   struct Uniforms {
     std::array<glm::vec3, kTextureSpaceTerms> weights{};
   };
-  template <class L>
-  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
-                                   const Uniforms& u) {
-    using vec3 = typename L::vec3;
-    using vec4 = typename L::vec4;
+  SKINSIM_SL_FRAGMENT {
+    SKINSIM_SL_TYPES(L);
     const auto uv = in.texcoord(0);
     const vec4 first = tex.sample(0, uv);
     vec3 sum = sl::xyz(first) * vec3(u.weights[0]);

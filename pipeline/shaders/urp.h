@@ -144,12 +144,8 @@ struct UrpFS {
   static constexpr ShaderName kNameText = shader_name({"urp_fs", gamma_suffix(kGamma)});
   static constexpr const char* kName = kNameText.text;
   using Uniforms = UrpUniforms;
-  template <class L>
-  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
-                                   const Uniforms& u) {
-    using vec3 = typename L::vec3;
-    using vec4 = typename L::vec4;
-    using f32 = typename L::f32;
+  SKINSIM_SL_FRAGMENT {
+    SKINSIM_SL_TYPES(L);
     using B = UrpBindings;
     const auto uv = in.texcoord(SurfaceSlots::kUv);
     const vec4 base = tex.sample(B::kAlbedo, uv);

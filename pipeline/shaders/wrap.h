@@ -13,11 +13,8 @@ struct WrapFS {
       shader_name({"wrap_fs", specular_suffix(kSpec), gamma_suffix(kGamma)});
   static constexpr const char* kName = kNameText.text;
   using Uniforms = TechniqueUniforms;
-  template <class L>
-  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
-                                   const Uniforms& u) {
-    using vec3 = typename L::vec3;
-    using vec4 = typename L::vec4;
+  SKINSIM_SL_FRAGMENT {
+    SKINSIM_SL_TYPES(L);
     const SkinSurface<L> s = skin_surface<L, kGamma>(in, tex, u);
     const vec3 key_vis = tinted<L>(s.visibility, u.lights);
     vec3 diffuse_light = vec3(u.lights.ambient) +
@@ -27,9 +24,7 @@ struct WrapFS {
       const auto wrapped = sl::saturate((n_dot_l + u.wrap) * (1.0f / (1.0f + u.wrap)));
       diffuse_light = diffuse_light + light_radiance<L>(i, key_vis, u.lights) * wrapped;
     }
-    const Reflection<L> r = skin_specular<kSpec, L>(s, tex, u);
-    const vec3 color = s.albedo * diffuse_light * r.diffuse_energy + r.light;
-    return vec4(encode_gamma<kGamma>(color), 1.0f);
+    return skin_color<kGamma, kSpec, L>(s, tex, u, diffuse_light);
   }
 };
 

@@ -1,4 +1,4 @@
-#include "sim/shader_emit.h"
+#include "shading/shader_emit.h"
 
 #include <gtest/gtest.h>
 

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "pipeline/shaders/gamma.h"
-#include "sim/shader_emit.h"
-#include "sim/shader_lang.h"
+#include "shading/shader_emit.h"
+#include "shading/shader_lang.h"
 
 namespace skinsim::sim::sl {
 namespace {

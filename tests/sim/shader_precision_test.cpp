@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "sim/fp16.h"
+#include "shading/fp16.h"
 #include "tests/sim/test_shaders.h"
 
 namespace skinsim::sim {

@@ -1,6 +1,7 @@
 // Minimal shaders for the emulator's own tests.
 #pragma once
 
+#include "microbench/shaders.h"
 #include "sim/program.h"
 
 namespace skinsim::sim::testing {
@@ -18,27 +19,9 @@ struct PassThroughVS {
   }
 };
 
-struct FlatColorFS {
-  static constexpr const char* kName = "test_flat_fs";
-  struct Uniforms {
-    glm::vec4 color{1.0f};
-  };
-  template <class L>
-  static typename L::vec4 fragment(const typename L::FragIn&, typename L::TexUnit&,
-                                   const Uniforms& u) {
-    return typename L::vec4(u.color);
-  }
-};
-
-struct TexturedFS {
-  static constexpr const char* kName = "test_textured_fs";
-  struct Uniforms {};
-  template <class L>
-  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex,
-                                   const Uniforms&) {
-    return tex.sample(0, in.texcoord(0));
-  }
-};
+// A constant colour, and one texture read returned as is: the micro-benchmarks' shaders.
+using FlatColorFS = microbench::shaders::FlatColorFS;
+using TexturedFS = microbench::shaders::TextureReadFS;
 
 // One independent read, one dependent read, and some arithmetic with known op counts.
 struct ProfileProbeFS {

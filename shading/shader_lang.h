@@ -27,8 +27,24 @@
 #include <glm/glm.hpp>
 #include <type_traits>
 
-#include "sim/fp16.h"
-#include "sim/op_profile.h"
+#include "shading/fp16.h"
+#include "shading/op_profile.h"
+
+// A shader's fragment function, as every shader writes it: a template over the language L
+// (Exec, Count, Emit ...) reading the interpolated inputs `in`, the texture unit `tex` and
+// the shader's `Uniforms` `u`, returning the colour. Followed by the body. (The types are
+// declared in sim/shader_io.h and the other *_io.h.)
+#define SKINSIM_SL_FRAGMENT                                                                \
+  template <class L>                                                                       \
+  static typename L::vec4 fragment(const typename L::FragIn& in, typename L::TexUnit& tex, \
+                                   const Uniforms& u)
+// Language L's scalar and vector types under their GLSL names, in a shader function's body
+// (each marked maybe_unused, as most functions use only some).
+#define SKINSIM_SL_TYPES(L)                       \
+  using f32 [[maybe_unused]] = typename L::f32;   \
+  using vec2 [[maybe_unused]] = typename L::vec2; \
+  using vec3 [[maybe_unused]] = typename L::vec3; \
+  using vec4 [[maybe_unused]] = typename L::vec4
 
 namespace skinsim::sim::sl {
 
@@ -325,8 +341,10 @@ inline CFloat dot(const glm::vec<N, float>& a, const CVec<N>& b) {
   return dot(CVec<N>(a), b);
 }
 
-// Transcendentals: one special-function op per lane.
-#define SKINSIM_SL_TRANSCENDENTAL(name, expr)                   \
+// Functions of one argument, per lane: on floats and vectors, and on Count values, where
+// each lane costs one op of `kind` (OpRecorder::transcendental: a special-function op;
+// OpRecorder::alu: one ALU instruction).
+#define SKINSIM_SL_UNARY(name, expr, kind)                      \
   inline float name(float v) {                                  \
     return expr;                                                \
   }                                                             \
@@ -341,43 +359,22 @@ inline CFloat dot(const glm::vec<N, float>& a, const CVec<N>& b) {
     glm::vec<N, float> r;                                       \
     for (int i = 0; i < N; ++i) r[i] = name(a.v[i]);            \
     if (a.constant) return CVec<N>(r);                          \
-    OpRecorder::transcendental(N);                              \
+    OpRecorder::kind(N);                                        \
     return CVec<N>::computed(r);                                \
   }
 
-SKINSIM_SL_TRANSCENDENTAL(exp2, std::exp2(v))
-SKINSIM_SL_TRANSCENDENTAL(log2, std::log2(v))
-SKINSIM_SL_TRANSCENDENTAL(sqrt, std::sqrt(v))
-SKINSIM_SL_TRANSCENDENTAL(rsqrt, 1.0f / std::sqrt(v))
-SKINSIM_SL_TRANSCENDENTAL(rcp, 1.0f / v)
-SKINSIM_SL_TRANSCENDENTAL(sin, std::sin(v))
-SKINSIM_SL_TRANSCENDENTAL(cos, std::cos(v))
-#undef SKINSIM_SL_TRANSCENDENTAL
-
+SKINSIM_SL_UNARY(exp2, std::exp2(v), transcendental)
+SKINSIM_SL_UNARY(log2, std::log2(v), transcendental)
+SKINSIM_SL_UNARY(sqrt, std::sqrt(v), transcendental)
+SKINSIM_SL_UNARY(rsqrt, 1.0f / std::sqrt(v), transcendental)
+SKINSIM_SL_UNARY(rcp, 1.0f / v, transcendental)
+SKINSIM_SL_UNARY(sin, std::sin(v), transcendental)
+SKINSIM_SL_UNARY(cos, std::cos(v), transcendental)
 // One-instruction ALU functions (min, max, clamp, saturate, step, floor, fract).
-#define SKINSIM_SL_UNARY_ALU(name, expr)                        \
-  inline float name(float v) {                                  \
-    return expr;                                                \
-  }                                                             \
-  template <int N>                                              \
-  inline glm::vec<N, float> name(const glm::vec<N, float>& v) { \
-    glm::vec<N, float> r;                                       \
-    for (int i = 0; i < N; ++i) r[i] = name(v[i]);              \
-    return r;                                                   \
-  }                                                             \
-  template <int N>                                              \
-  inline CVec<N> name(const CVec<N>& a) {                       \
-    glm::vec<N, float> r;                                       \
-    for (int i = 0; i < N; ++i) r[i] = name(a.v[i]);            \
-    if (a.constant) return CVec<N>(r);                          \
-    OpRecorder::alu(N);                                         \
-    return CVec<N>::computed(r);                                \
-  }
-
-SKINSIM_SL_UNARY_ALU(saturate, glm::clamp(v, 0.0f, 1.0f))
-SKINSIM_SL_UNARY_ALU(floor, std::floor(v))
-SKINSIM_SL_UNARY_ALU(fract, v - std::floor(v))
-#undef SKINSIM_SL_UNARY_ALU
+SKINSIM_SL_UNARY(saturate, glm::clamp(v, 0.0f, 1.0f), alu)
+SKINSIM_SL_UNARY(floor, std::floor(v), alu)
+SKINSIM_SL_UNARY(fract, v - std::floor(v), alu)
+#undef SKINSIM_SL_UNARY
 
 inline float abs(float v) {
   return std::fabs(v);
@@ -527,6 +524,6 @@ inline CVec<3> operator*(const glm::mat3& m, const CVec<3>& v) {
 // The Emit instantiation's overloads (GLSL-emitting value types) must be visible
 // wherever shaders are defined: they call the language qualified (`sl::max`), and a
 // qualified call in a template finds only what is declared before the template.
-#include "sim/shader_emit.h"  // IWYU pragma: export
+#include "shading/shader_emit.h"  // IWYU pragma: export
 // Likewise the four-fragment Exec4 instantiation's (shader_exec4_io.h).
-#include "sim/shader_lanes.h"  // IWYU pragma: export
+#include "shading/shader_lanes.h"  // IWYU pragma: export

@@ -9,7 +9,7 @@
 namespace skinsim::sim {
 
 // The default float precision a program runs at, as a GLSL ES fragment shader states it
-// (`precision mediump float;`): highp is FP32, mediump FP16 (sim/fp16.h).
+// (`precision mediump float;`): highp is FP32, mediump FP16 (shading/fp16.h).
 enum class Precision : std::uint8_t { kHighp, kMediump };
 
 struct OpProfile {
