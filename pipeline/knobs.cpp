@@ -157,6 +157,8 @@ const std::vector<KnobSpec>& common_knobs() {
     KnobSpec gamma =
         choice_knob("gamma", "--gamma", "Skin gamma: gamma 2.0 as in GPU Pro 5, or exact sRGB",
                     "square or srgb", &PipelineConfig::gamma, parse_gamma, gamma_name);
+    gamma.sweep_flag = "--gammas";
+    gamma.sweep_help = "Skin gammas: square,srgb (the exact curves cost ALU; docs/techniques.md)";
     gamma.id_prefix = "";
     std::vector<KnobSpec> rows{
         technique_knob(),
