@@ -7,16 +7,12 @@
 #include <vector>
 
 #include "driver/truth_judge.h"
+#include "reports/html_text.h"
 #include "reports/recommendation.h"
-#include "util/text.h"
 
 namespace skinsim::driver {
 
 namespace {
-
-std::string esc(const std::string& s) {
-  return escape_markup(s);
-}
 
 std::string id_text(const nlohmann::json& id) {
   return id.is_null() ? std::string("none (nothing within the budget)") : id.get<std::string>();
@@ -64,7 +60,7 @@ std::string separation_html(const std::vector<const reports::ConfigResult*>& row
   }
   const double spread = hi - lo;
   const double floor_flip = floor[region]["flip"].get<double>();
-  std::string h = esc(fmt::format(
+  std::string h = reports::esc(fmt::format(
       "Against the truth the configurations' {} lies between {:.4f} and {:.4f} (a spread of "
       "{:.4f}); the truth's noise floor is FLIP {:.4f} (its two seeds against each other).",
       truth_metric, lo, hi, spread, floor_flip));
@@ -81,14 +77,14 @@ std::string separation_html(const std::vector<const reports::ConfigResult*>& row
   if (!needed) {
     return "<p>" + h + " Their frames are equally far from it; no sample count would.</p>\n";
   }
-  h += esc(fmt::format(
+  h += reports::esc(fmt::format(
       " A truth of about {:.0f} samples would (an estimate: its noise, and the floor's FLIP "
       "with it, taken to fall as 1/sqrt(samples) from the floor measured at {} samples).",
       *needed, samples));
   h += " Render it with <code>" +
-       esc(fmt::format("skinsim truth --samples {:.0f} --noise-floor", *needed)) +
+       reports::esc(fmt::format("skinsim truth --samples {:.0f} --noise-floor", *needed)) +
        "</code> and the group's scene, device and knob options, and judge with <code>" +
-       esc(fmt::format("--truth cached --truth-samples {:.0f}", *needed)) + "</code>.";
+       reports::esc(fmt::format("--truth cached --truth-samples {:.0f}", *needed)) + "</code>.";
   return "<p>" + h + "</p>\n";
 }
 
@@ -102,20 +98,21 @@ std::string group_html(const reports::SweepTable& table, const nlohmann::json& g
   for (const reports::ConfigResult& r : table.rows) {
     if (r.group == name && r.quality.count(truth_metric)) rows.push_back(&r);
   }
-  std::string h = "<h3>" + esc(name.empty() ? "All configurations" : name) + "</h3>\n";
-  h += "<p><b>Truth:</b> " + esc(source_text(group["truth"])) + ". <b>Noise floor:</b> " +
-       esc(truth_figures(group["noise_floor"])) + ".</p>\n";
+  std::string h = "<h3>" + reports::esc(name.empty() ? "All configurations" : name) + "</h3>\n";
+  h += "<p><b>Truth:</b> " + reports::esc(source_text(group["truth"])) + ". <b>Noise floor:</b> " +
+       reports::esc(truth_figures(group["noise_floor"])) + ".</p>\n";
   const std::string by_reference = id_text(group["recommended_by_reference"]);
   h += group["recommendation_same"].get<bool>()
            ? "<p><b>Recommendation: the same</b> under the truth as under the reference: " +
-                 esc(by_reference) + ".</p>\n"
-           : "<p><b>Recommendation: changed</b>: " + esc(by_reference) + " under the reference, " +
-                 esc(id_text(group["recommended_by_truth"])) + " under the truth (" +
-                 esc(group["verdict_by_truth"].get<std::string>()) + ").</p>\n";
+                 reports::esc(by_reference) + ".</p>\n"
+           : "<p><b>Recommendation: changed</b>: " + reports::esc(by_reference) +
+                 " under the reference, " + reports::esc(id_text(group["recommended_by_truth"])) +
+                 " under the truth (" + reports::esc(group["verdict_by_truth"].get<std::string>()) +
+                 ").</p>\n";
   const nlohmann::json& changed = group["visibility_verdicts_changed"];
   const int verdicts = group["visibility_verdicts"].get<int>();
-  h += "<p>" + esc(fmt::format("{} of {} \"visibly different\" verdicts stay",
-                               verdicts - static_cast<int>(changed.size()), verdicts));
+  h += "<p>" + reports::esc(fmt::format("{} of {} \"visibly different\" verdicts stay",
+                                        verdicts - static_cast<int>(changed.size()), verdicts));
   if (changed.empty()) {
     h += ".</p>\n";
   } else {
@@ -124,19 +121,21 @@ std::string group_html(const reports::SweepTable& table, const nlohmann::json& g
       return v.get<bool>() ? "visibly different" : "not visibly different";
     };
     for (const nlohmann::json& c : changed) {
-      h += "<li><code>" + esc(c["id"].get<std::string>()) +
+      h += "<li><code>" + reports::esc(c["id"].get<std::string>()) +
            "</code>: " + says(c["visible_by_reference"]) + " from the reference, " +
            says(c["visible_by_truth"]) + " from the truth</li>\n";
     }
     h += "</ul>\n";
   }
   h += separation_html(rows, truth_metric, group, region);
-  h += "<table>\n<tr><th>configuration</th><th>" + esc(metric) + " vs reference</th><th>" +
-       esc(metric) + " vs truth</th><th>visible vs reference</th><th>visible vs truth</th></tr>\n";
+  h += "<table>\n<tr><th>configuration</th><th>" + reports::esc(metric) + " vs reference</th><th>" +
+       reports::esc(metric) +
+       " vs truth</th><th>visible vs reference</th><th>visible vs truth</th></tr>\n";
   for (const reports::ConfigResult* r : rows) {
-    h += "<tr><td class=\"text\">" + esc(r->label.empty() ? r->id : r->label) + "</td><td>" +
-         figure(*r, metric) + "</td><td>" + figure(*r, truth_metric) + "</td><td class=\"text\">" +
-         (r->visible_vs_reference ? "yes" : "no") + "</td><td class=\"text\">" +
+    h += "<tr><td class=\"text\">" + reports::esc(r->label.empty() ? r->id : r->label) +
+         "</td><td>" + figure(*r, metric) + "</td><td>" + figure(*r, truth_metric) +
+         "</td><td class=\"text\">" + (r->visible_vs_reference ? "yes" : "no") +
+         "</td><td class=\"text\">" +
          (r->quality.count(visible) && r->quality.at(visible) > 0.0 ? "yes" : "no") +
          "</td></tr>\n";
   }

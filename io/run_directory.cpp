@@ -19,7 +19,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-[[noreturn]] void fail(const std::string& option, const fs::path& dir, const std::string& why) {
+[[noreturn]] void fail_output(const std::string& option, const fs::path& dir,
+                              const std::string& why) {
   throw OutputError(fmt::format("{} {}: {}", option, sanitized(dir.string(), 4096), why));
 }
 
@@ -68,8 +69,8 @@ void check_output_directory(const fs::path& dir, const std::string& kind, bool l
   std::error_code ec;
   const fs::file_status status = fs::symlink_status(dir, ec);
   if (!fs::exists(status)) return;
-  if (fs::is_symlink(status)) fail(option, dir, "is a symlink; name the directory itself");
-  if (!fs::is_directory(status)) fail(option, dir, "exists and is not a directory");
+  if (fs::is_symlink(status)) fail_output(option, dir, "is a symlink; name the directory itself");
+  if (!fs::is_directory(status)) fail_output(option, dir, "exists and is not a directory");
   std::vector<std::string> top;
   for (const fs::directory_entry& e : fs::directory_iterator(dir)) {
     top.push_back(e.path().filename().string());
@@ -78,16 +79,18 @@ void check_output_directory(const fs::path& dir, const std::string& kind, bool l
   std::sort(top.begin(), top.end());
   const auto [marked, listed] = read_marker(dir);
   if (marked.empty()) {
-    fail(option, dir,
-         fmt::format("is not empty and not a skinsim {} directory (no {} marker); it holds {}: "
-                     "refusing to write into it, choose another {}",
-                     kind, kOutputMarker, describe(dir, top), option));
+    fail_output(
+        option, dir,
+        fmt::format("is not empty and not a skinsim {} directory (no {} marker); it holds {}: "
+                    "refusing to write into it, choose another {}",
+                    kind, kOutputMarker, describe(dir, top), option));
   }
   if (marked != kind) {
-    fail(option, dir,
-         fmt::format("is a skinsim {} directory, not a {} directory: refusing to write into it, "
-                     "choose another {}",
-                     sanitized(marked, 40), kind, option));
+    fail_output(
+        option, dir,
+        fmt::format("is a skinsim {} directory, not a {} directory: refusing to write into it, "
+                    "choose another {}",
+                    sanitized(marked, 40), kind, option));
   }
   if (!listed_only) return;
   std::vector<std::string> foreign;
@@ -95,10 +98,11 @@ void check_output_directory(const fs::path& dir, const std::string& kind, bool l
     if (!listed.contains(entry)) foreign.push_back(entry);
   }
   if (!foreign.empty()) {
-    fail(option, dir,
-         fmt::format("holds files skinsim {} did not write ({}): refusing to replace it, move "
-                     "them or choose another {}",
-                     kind, describe(dir, foreign), option));
+    fail_output(
+        option, dir,
+        fmt::format("holds files skinsim {} did not write ({}): refusing to replace it, move "
+                    "them or choose another {}",
+                    kind, describe(dir, foreign), option));
   }
 }
 
@@ -107,7 +111,7 @@ void claim_output_directory(const fs::path& dir, const std::string& kind,
   check_output_directory(dir, kind, /*listed_only=*/false, option);
   std::error_code ec;
   fs::create_directories(dir, ec);
-  if (ec) fail(option, dir, "cannot create it: " + ec.message());
+  if (ec) fail_output(option, dir, "cannot create it: " + ec.message());
   if (!fs::exists(fs::symlink_status(dir / kOutputMarker, ec))) {
     write_file_atomically(dir / kOutputMarker, nlohmann::json{{"kind", kind}}.dump() + "\n");
   }
@@ -116,18 +120,18 @@ void claim_output_directory(const fs::path& dir, const std::string& kind,
 RunDirectory::RunDirectory(const fs::path& out, std::string kind)
     : out_(out.empty() ? out : fs::absolute(out).lexically_normal()), kind_(std::move(kind)) {
   // fs::absolute("") is the working directory, which is not what an empty --out asks for.
-  if (out_.empty()) fail("--out", out_, "empty path: name the output directory");
+  if (out_.empty()) fail_output("--out", out_, "empty path: name the output directory");
   // "dir/", "." and "sub/.." name a directory by its parent's entry, which is what is swapped.
   if (out_.filename().empty() && out_ != out_.root_path()) out_ = out_.parent_path();
   check_output_directory(out_, kind_, /*listed_only=*/true);
   const fs::path parent = out_.parent_path().empty() ? fs::path(".") : out_.parent_path();
   std::error_code ec;
   fs::create_directories(parent, ec);
-  if (ec) fail("--out", out_, "cannot create " + parent.string() + ": " + ec.message());
+  if (ec) fail_output("--out", out_, "cannot create " + parent.string() + ": " + ec.message());
   remove_stale_temporaries(parent);
   staging_ = temporary_path_beside(out_);
   if (!fs::create_directory(staging_, ec)) {
-    fail("--out", out_, "cannot create " + staging_.string() + ": " + ec.message());
+    fail_output("--out", out_, "cannot create " + staging_.string() + ": " + ec.message());
   }
 }
 
@@ -148,14 +152,14 @@ void RunDirectory::commit() {
   if (fs::exists(out_)) {
     previous = temporary_path_beside(out_);
     fs::rename(out_, previous, ec);
-    if (ec) fail("--out", out_, "cannot move the previous output aside: " + ec.message());
+    if (ec) fail_output("--out", out_, "cannot move the previous output aside: " + ec.message());
   }
   fs::rename(staging_, out_, ec);
   if (ec) {
     const std::string why = ec.message();
     std::error_code ignored;
     if (!previous.empty()) fs::rename(previous, out_, ignored);  // put the previous one back
-    fail("--out", out_, "cannot move the new output into place: " + why);
+    fail_output("--out", out_, "cannot move the new output into place: " + why);
   }
   committed_ = true;
   if (!previous.empty()) fs::remove_all(previous, ec);  // a leftover is cleaned up next run

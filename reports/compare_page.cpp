@@ -19,10 +19,6 @@ constexpr const char* kStyle = R"(
 tr.moved { background: #fff0f0; }
 )";
 
-std::string esc(const std::string& s) {
-  return escape_markup(s);
-}
-
 std::string number(const std::optional<double>& v) {
   return v ? fmt::format("{:.6g}", *v) : "-";
 }

@@ -44,16 +44,15 @@ void append_record(std::string& out, const std::vector<std::string>& fields) {
   out += '\n';
 }
 
-// Shortest text that reads back to the same double.
-std::string number(double v) {
-  return fmt::format("{}", v);
-}
-
 std::string yes_no(bool value) {
   return value ? "yes" : "no";
 }
 
 }  // namespace
+
+std::string csv_number(double v) {
+  return fmt::format("{}", v);
+}
 
 std::string csv_field(const std::string& text) {
   if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
@@ -100,18 +99,19 @@ std::string sweep_csv(const SweepTable& table) {
     const std::vector<PassCost> passes = merged_passes(r);
     std::vector<std::string> cells = {r.id, r.label};
     for (const std::string& k : c.knobs) cells.push_back(knob_value(r, k));
-    cells.insert(cells.end(), {number(r.frame_ms), number(r.frame_ms_low), number(r.frame_ms_high),
-                               number(r.fps), number(r.dram_bytes), number(r.energy_mj),
-                               number(r.energy_mj_low), number(r.energy_mj_high)});
+    cells.insert(cells.end(),
+                 {csv_number(r.frame_ms), csv_number(r.frame_ms_low), csv_number(r.frame_ms_high),
+                  csv_number(r.fps), csv_number(r.dram_bytes), csv_number(r.energy_mj),
+                  csv_number(r.energy_mj_low), csv_number(r.energy_mj_high)});
     for (const std::string& name : c.passes) {
       auto it = std::find_if(passes.begin(), passes.end(),
                              [&](const PassCost& p) { return p.name == name; });
-      cells.push_back(it == passes.end() ? "" : number(it->ms));
+      cells.push_back(it == passes.end() ? "" : csv_number(it->ms));
       cells.push_back(it == passes.end() ? "" : it->bottleneck);
     }
     for (const std::string& m : c.metrics) {
       auto it = r.quality.find(m);
-      cells.push_back(it == r.quality.end() ? "" : number(it->second));
+      cells.push_back(it == r.quality.end() ? "" : csv_number(it->second));
     }
     cells.push_back(r.reference_image.empty() ? "" : yes_no(r.visible_vs_reference));
     cells.push_back(r.group);
@@ -120,8 +120,8 @@ std::string sweep_csv(const SweepTable& table) {
         cells.insert(cells.end(), {"", "", "", ""});
         continue;
       }
-      cells.insert(cells.end(), {against->against, number(against->flip_mean),
-                                 number(against->visible_px), yes_no(against->visible)});
+      cells.insert(cells.end(), {against->against, csv_number(against->flip_mean),
+                                 csv_number(against->visible_px), yes_no(against->visible)});
     }
     const std::vector<std::string> sequence = sequence_csv_cells(table, r);
     cells.insert(cells.end(), sequence.begin(), sequence.end());

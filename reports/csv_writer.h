@@ -18,6 +18,9 @@ std::vector<std::string> sweep_csv_columns(const SweepTable& table);
 // The whole CSV text (RFC 4180 quoting, "\n" line ends). Cells a row lacks are empty.
 std::string sweep_csv(const SweepTable& table);
 
+// A number as a CSV cell: the shortest text that reads back to the same double.
+std::string csv_number(double v);
+
 // Writes sweep_csv(table) to `path` atomically.
 void write_sweep_csv(const SweepTable& table, const std::string& path);
 

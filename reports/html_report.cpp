@@ -11,6 +11,7 @@
 #include "io/atomic_file.h"
 #include "reports/csv_writer.h"
 #include "reports/error.h"
+#include "reports/html_text.h"
 #include "reports/image_compare_html.h"
 #include "reports/knob_verdicts.h"
 #include "reports/palette.h"
@@ -35,12 +36,6 @@ figure { margin: 1.5em 0; } figure img { width: 100%; border: 1px solid #ddd; }
 details summary { cursor: pointer; margin: 0.3em 0; } svg.timeline { max-width: 100%; height: auto; }
 )";
 
-std::string esc(const std::string& s) {
-  return escape_markup(s);
-}
-std::string link(const std::string& path) {
-  return esc(url_encode_path(path));
-}
 std::string ms(double v) {
   return fmt::format("{:.2f}", v);
 }

@@ -17,13 +17,6 @@ table.crops img { width: 128px; image-rendering: pixelated; } img.bar { vertical
 
 namespace {
 
-std::string esc(const std::string& s) {
-  return escape_markup(s);
-}
-std::string link(const std::string& path) {
-  return esc(url_encode_path(path));
-}
-
 constexpr const char* kCompareScript = R"(
 document.querySelectorAll('.compare').forEach(function (c) {
   var over = c.querySelector('img.over'), under = c.querySelector('img.under');

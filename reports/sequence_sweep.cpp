@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
+#include "reports/csv_writer.h"
 #include "reports/error.h"
 #include "reports/html_text.h"
 #include "reports/sweep_table.h"
@@ -26,12 +27,8 @@ bool any_sequence(const SweepTable& table) {
                      [](const ConfigResult& r) { return r.sequence.has_value(); });
 }
 
-std::string number(double v) {
-  return fmt::format("{}", v);
-}
-
-std::string optional_number(const std::optional<double>& v) {
-  return v ? number(*v) : "";
+std::string csv_number_or_empty(const std::optional<double>& v) {
+  return v ? csv_number(*v) : "";
 }
 
 // Every frame's time as a tick on one horizontal axis shared by the rows (0 to `scale_ms`),
@@ -136,17 +133,17 @@ std::vector<std::string> sequence_csv_cells(const SweepTable& table, const Confi
   if (!row.sequence) return std::vector<std::string>(sequence_csv_columns(table).size());
   const SequenceSummary& s = *row.sequence;
   return {s.name,
-          number(s.p50.ms),
-          number(s.p50.low),
-          number(s.p50.high),
-          number(s.p95.ms),
-          number(s.p95.low),
-          number(s.p95.high),
-          number(s.max.ms),
-          number(s.max.low),
-          number(s.max.high),
-          optional_number(s.temporal_mean_error),
-          optional_number(s.temporal_max_error),
+          csv_number(s.p50.ms),
+          csv_number(s.p50.low),
+          csv_number(s.p50.high),
+          csv_number(s.p95.ms),
+          csv_number(s.p95.low),
+          csv_number(s.p95.high),
+          csv_number(s.max.ms),
+          csv_number(s.max.low),
+          csv_number(s.max.high),
+          csv_number_or_empty(s.temporal_mean_error),
+          csv_number_or_empty(s.temporal_max_error),
           s.video};
 }
 

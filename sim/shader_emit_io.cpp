@@ -9,7 +9,7 @@ namespace {
 using sl::GlslDialect;
 using sl::GlslEmitter;
 
-constexpr const char* kLanes = "xyzw";
+constexpr const char* kLaneLetters = "xyzw";
 constexpr const char* kTextureLod = "GL_EXT_shader_texture_lod";
 
 std::string group_name(int group) {
@@ -19,7 +19,7 @@ std::string group_name(int group) {
 // `slot`'s lanes in its group, e.g. ".zw" for slots 2-3; none for a whole vec4.
 std::string group_lanes(int first_lane, int n) {
   std::string s;
-  if (n < 4) s.append(".").append(kLanes + first_lane, static_cast<size_t>(n));
+  if (n < 4) s.append(".").append(kLaneLetters + first_lane, static_cast<size_t>(n));
   return s;
 }
 
@@ -95,7 +95,7 @@ const char* attribute_name(VertexAttribute a) {
 }
 
 std::string varying_component(int slot) {
-  return group_name(slot / 4) + "." + kLanes[slot % 4];
+  return group_name(slot / 4) + "." + kLaneLetters[slot % 4];
 }
 
 std::string varying_lanes(int slot, int n) {

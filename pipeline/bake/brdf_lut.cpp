@@ -24,13 +24,6 @@ namespace {
 constexpr int kMaxLutSize = 8192;
 constexpr int kMaxSamples = 4096;
 
-void require(bool ok, const std::string& field, const std::string& rule, double value) {
-  if (!ok) {
-    throw BakeError("BrdfLutParams." + field + " must be " + rule + ", got " +
-                    std::to_string(value));
-  }
-}
-
 int level_count(int width, int height) {
   return static_cast<int>(std::bit_width(static_cast<unsigned>(std::max(width, height))));
 }
@@ -38,6 +31,9 @@ int level_count(int width, int height) {
 }  // namespace
 
 void BrdfLutParams::validate() const {
+  const auto require = [](bool ok, const char* field, const char* rule, double value) {
+    require_param(ok, "BrdfLutParams", field, rule, value);
+  };
   require(width >= 1 && width <= kMaxLutSize, "width", "in [1, 8192]", width);
   require(height >= 1 && height <= kMaxLutSize, "height", "in [1, 8192]", height);
   require(std::isfinite(m1) && m1 > 0.0f, "m1", "a positive roughness", m1);

@@ -13,4 +13,12 @@ class BakeError : public UserError {
   using UserError::UserError;
 };
 
+// Throws BakeError("<params>.<field> must be <rule>, got <value>") unless `ok`.
+inline void require_param(bool ok, const std::string& params, const std::string& field,
+                          const std::string& rule, double value) {
+  if (!ok) {
+    throw BakeError(params + "." + field + " must be " + rule + ", got " + std::to_string(value));
+  }
+}
+
 }  // namespace skinsim::bake

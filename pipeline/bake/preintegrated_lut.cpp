@@ -71,16 +71,12 @@ glm::vec3 diffuse(const std::array<RingQuadrature, 6>& rings, double n_dot_l) {
   return glm::vec3(numerator / denominator);
 }
 
-void require(bool ok, const std::string& field, const std::string& rule, double value) {
-  if (!ok) {
-    throw BakeError("PreintegratedLutParams." + field + " must be " + rule + ", got " +
-                    std::to_string(value));
-  }
-}
-
 }  // namespace
 
 void PreintegratedLutParams::validate() const {
+  const auto require = [](bool ok, const char* field, const char* rule, double value) {
+    require_param(ok, "PreintegratedLutParams", field, rule, value);
+  };
   require(width >= 1 && width <= 8192, "width", "in [1, 8192]", width);
   require(height >= 1 && height <= 8192, "height", "in [1, 8192]", height);
   require(std::isfinite(max_curvature_per_mm) && max_curvature_per_mm > 0.0f,

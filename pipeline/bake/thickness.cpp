@@ -10,16 +10,16 @@ namespace skinsim::bake {
 
 namespace {
 
-constexpr int kRays = 16;
+constexpr int kConeRays = 16;
 constexpr float kConeHalfAngle = 0.5f;  // radians: ~30 degrees around -N
 
 // Directions in the local frame (z = into the mesh): a Fibonacci spiral over the cone.
-std::array<glm::vec3, kRays> cone_directions() {
-  std::array<glm::vec3, kRays> d{};
+std::array<glm::vec3, kConeRays> cone_directions() {
+  std::array<glm::vec3, kConeRays> d{};
   const float golden = 2.39996323f;  // pi (3 - sqrt 5)
   const float cos_max = std::cos(kConeHalfAngle);
-  for (int i = 0; i < kRays; ++i) {
-    const float z = 1.0f - (1.0f - cos_max) * (static_cast<float>(i) + 0.5f) / kRays;
+  for (int i = 0; i < kConeRays; ++i) {
+    const float z = 1.0f - (1.0f - cos_max) * (static_cast<float>(i) + 0.5f) / kConeRays;
     const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
     const float phi = golden * static_cast<float>(i);
     d[i] = {r * std::cos(phi), r * std::sin(phi), z};
@@ -31,7 +31,7 @@ std::array<glm::vec3, kRays> cone_directions() {
 
 float thickness_at_mm(const RayScene& rays, const glm::vec3& p, const glm::vec3& n,
                       float units_per_mm) {
-  static const std::array<glm::vec3, kRays> kCone = cone_directions();
+  static const std::array<glm::vec3, kConeRays> kCone = cone_directions();
   if (!(glm::dot(n, n) > 0.5f)) return kMaxThicknessMm;
   const float max_units = kMaxThicknessMm * units_per_mm;
   const float start = 0.01f * units_per_mm;  // 10 um: past the point's own triangles
@@ -44,7 +44,7 @@ float thickness_at_mm(const RayScene& rays, const glm::vec3& p, const glm::vec3&
     const glm::vec3 dir = t * c.x + b * c.y + in * c.z;
     sum += std::min(rays.closest_hit(p, dir, start, max_units), max_units);
   }
-  return sum / kRays / units_per_mm;
+  return sum / kConeRays / units_per_mm;
 }
 
 std::vector<float> bake_thickness_mm(const RayScene& rays, const std::vector<glm::vec3>& positions,

@@ -14,16 +14,16 @@
 #include <vector>
 
 #include "pipeline/bake/skin_profile.h"
+#include "pipeline/reference/gaussian_diffusion.h"
 #include "util/float_lanes.h"
 #include "util/simd_dispatch.h"
 
 namespace skinsim::pipeline {
 
-namespace {
-
 // exp(-x) for x >= 0 by linear interpolation in a table (relative error < 1e-5; beyond
 // x = 32 the weight is below 1e-14 and taken as 0): the diffusion's kernel evaluations are
-// most of the reference's time.
+// most of the reference's time. Not in the anonymous namespace: GaussianDiffusion::Impl, which
+// has external linkage, holds one (GCC's -Wsubobject-linkage in a unity build).
 class ExpNegTable {
  public:
   ExpNegTable() : values_(kSize + 2) {
@@ -67,6 +67,8 @@ class ExpNegTable {
   static constexpr float kScale = kSize / kMax;
   std::vector<float> values_;
 };
+
+namespace {
 
 // Four floats from each of a and b in one AVX register: a's in the low half, b's in the high.
 [[gnu::target("avx")]] inline __m256 load_pair(const float* a, const float* b) {

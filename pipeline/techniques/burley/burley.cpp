@@ -14,8 +14,8 @@ namespace skinsim::pipeline {
 
 namespace {
 
-FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLights& lights,
-                   sim::Gpu& gpu) {
+FrameOutput render_burley(const GpuScene& gs, const PipelineConfig& cfg, const FrameLights& lights,
+                          sim::Gpu& gpu) {
   return one_kernel_frame(gs, cfg, lights, gpu, [&](const View& view) {
     const BurleyKernel kernel =
         burley_kernel(cfg.burley.samples, cfg.burley.distance_mm.value_or(burley_distance_fit()));
@@ -28,7 +28,7 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLig
   });
 }
 
-std::vector<sim::NamedProfile> programs() {
+std::vector<sim::NamedProfile> burley_programs() {
   shaders::BurleyFS::Uniforms taps;  // the profile counts the taps: the default count
   taps.count = PipelineConfig{}.burley.samples;
   std::vector<sim::NamedProfile> list = screen_diffusion_programs();
@@ -54,8 +54,8 @@ const TechniqueSpec& burley_technique() {
                                   "the six-Gaussian profile)",
                                   {&PipelineConfig::burley, &BurleyParams::distance_mm},
                                   {0.01, 20.0})},
-      .render = render,
-      .shaders = programs,
+      .render = render_burley,
+      .shaders = burley_programs,
       .host_ns_per_pixel = 2100,
   };
   return spec;

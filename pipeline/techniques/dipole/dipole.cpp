@@ -29,8 +29,8 @@ shaders::DipoleUniforms dipole_uniforms(int samples) {
   return u;
 }
 
-FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLights& lights,
-                   sim::Gpu& gpu) {
+FrameOutput render_dipole(const GpuScene& gs, const PipelineConfig& cfg, const FrameLights& lights,
+                          sim::Gpu& gpu) {
   return one_kernel_frame(gs, cfg, lights, gpu, [&](const View& view) {
     shaders::DipoleUniforms u = dipole_uniforms(cfg.dipole.samples);
     u.focal_uv = kernel_uniforms(view, gs.scene().units_per_mm).focal_uv;
@@ -39,7 +39,7 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLig
   });
 }
 
-std::vector<sim::NamedProfile> programs() {
+std::vector<sim::NamedProfile> dipole_programs() {
   // The profile counts the taps: the default count.
   const shaders::DipoleUniforms taps = dipole_uniforms(PipelineConfig{}.dipole.samples);
   std::vector<sim::NamedProfile> list = screen_diffusion_programs();
@@ -61,8 +61,8 @@ const TechniqueSpec& dipole_technique() {
                              "Dipole taps per pixel, the centre included (the article uses 30)",
                              {&PipelineConfig::dipole, &DipoleParams::samples}, 4,
                              kMaxDipoleSamples)},
-      .render = render,
-      .shaders = programs,
+      .render = render_dipole,
+      .shaders = dipole_programs,
       // Measured 9870 ns against burley's 3380 in the same loaded session (burley's spec:
       // 2100), so scaled to the others' conditions.
       .host_ns_per_pixel = 6100,

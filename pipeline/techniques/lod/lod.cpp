@@ -8,12 +8,12 @@ namespace skinsim::pipeline {
 
 namespace {
 
-FrameOutput render(const GpuScene& scene, const PipelineConfig& config, const FrameLights& lights,
-                   sim::Gpu& gpu) {
+FrameOutput render_lod(const GpuScene& scene, const PipelineConfig& config,
+                       const FrameLights& lights, sim::Gpu& gpu) {
   return render_mobile_frame(scene, config, lights, gpu, MobileMode::kForceLod);
 }
 
-std::vector<sim::NamedProfile> programs() {
+std::vector<sim::NamedProfile> lod_programs() {
   return specular_variants<shaders::SkinLodFS>();
 }
 
@@ -25,8 +25,8 @@ const TechniqueSpec& lod_technique() {
       .passes = "skin",
       .summary = "the mobile pipeline's single-pass distant-skin shader, at any distance",
       .knobs = {},
-      .render = render,
-      .shaders = programs,
+      .render = render_lod,
+      .shaders = lod_programs,
       .host_ns_per_pixel = 480,
   };
   return spec;

@@ -13,12 +13,12 @@ namespace skinsim::pipeline {
 
 namespace {
 
-FrameOutput render(const GpuScene& scene, const PipelineConfig& config, const FrameLights& lights,
-                   sim::Gpu& gpu) {
+FrameOutput render_mobile(const GpuScene& scene, const PipelineConfig& config,
+                          const FrameLights& lights, sim::Gpu& gpu) {
   return render_mobile_frame(scene, config, lights, gpu, MobileMode::kAuto);
 }
 
-std::vector<sim::NamedProfile> programs() {
+std::vector<sim::NamedProfile> mobile_programs() {
   using namespace pipeline::shaders;
   std::vector<sim::NamedProfile> s = {
       vertex_entry<PositionNormalVS>(), vertex_entry<DilatedPositionNormalVS>(),
@@ -72,8 +72,8 @@ const TechniqueSpec& mobile_technique() {
                         {&PipelineConfig::mobile, &MobileParams::lod_distance_m},
                         {0.0, 10000.0, true, false}),
           },
-      .render = render,
-      .shaders = programs,
+      .render = render_mobile,
+      .shaders = mobile_programs,
       .host_ns_per_pixel = 680,
   };
   return spec;

@@ -32,8 +32,8 @@ sim::Texture2D shadow_scatter_texture(float penumbra_mm) {
                         {sim::Filter::kBilinear, sim::Wrap::kClamp}, false);
 }
 
-FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLights& lights,
-                   sim::Gpu& gpu) {
+FrameOutput render_preintegrated(const GpuScene& gs, const PipelineConfig& cfg,
+                                 const FrameLights& lights, sim::Gpu& gpu) {
   FrameOutput out = start_frame(gs, cfg);
   const auto brdf_lut = brdf_lut_for(cfg);
   sim::RenderTarget lut_target = preintegrated_lut_target(cfg);
@@ -78,7 +78,7 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLig
   return out;
 }
 
-std::vector<sim::NamedProfile> programs() {
+std::vector<sim::NamedProfile> preintegrated_programs() {
   constexpr GammaMode kSquare = GammaMode::kSquare;
   constexpr SpecularModel kKsLut = SpecularModel::kKsLut;
   return {
@@ -115,8 +115,8 @@ const TechniqueSpec& preintegrated_technique() {
                           parse_curvature, curvature_name),
               shadow_scatter_knob(),
           },
-      .render = render,
-      .shaders = programs,
+      .render = render_preintegrated,
+      .shaders = preintegrated_programs,
       .host_ns_per_pixel = 850,
   };
   return spec;

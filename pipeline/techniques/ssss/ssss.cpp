@@ -10,8 +10,8 @@ namespace skinsim::pipeline {
 
 namespace {
 
-FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLights& lights,
-                   sim::Gpu& gpu) {
+FrameOutput render_ssss(const GpuScene& gs, const PipelineConfig& cfg, const FrameLights& lights,
+                        sim::Gpu& gpu) {
   FrameOutput out = start_frame(gs, cfg);
   sim::RenderTarget diffuse = screen_buffer("diffuse", cfg);
   sim::RenderTarget horizontal = screen_buffer("sss_h", cfg);
@@ -35,7 +35,7 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLig
   return out;
 }
 
-std::vector<sim::NamedProfile> programs() {
+std::vector<sim::NamedProfile> ssss_programs() {
   std::vector<sim::NamedProfile> list = screen_diffusion_programs();
   for (const sim::NamedProfile& kernel :
        {fragment_entry<shaders::SsssBlurFS>(), fragment_entry<shaders::SsssBlurOrthoFS>()}) {
@@ -52,8 +52,8 @@ const TechniqueSpec& ssss_technique() {
       .passes = "diffuse, sss_h, sss_v, skin",
       .summary = "Jimenez separable SSS (2015) at full resolution",
       .knobs = {},
-      .render = render,
-      .shaders = programs,
+      .render = render_ssss,
+      .shaders = ssss_programs,
       .host_ns_per_pixel = 3000,
   };
   return spec;

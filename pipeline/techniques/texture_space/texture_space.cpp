@@ -57,8 +57,8 @@ sim::PassCounters uv_irradiance_pass(const GpuScene& gs, const FrameLights& ligh
   return gpu.execute(pass);
 }
 
-FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLights& lights,
-                   sim::Gpu& gpu) {
+FrameOutput render_texture_space(const GpuScene& gs, const PipelineConfig& cfg,
+                                 const FrameLights& lights, sim::Gpu& gpu) {
   require_skin_uvs(gs, "texture-space");
   FrameOutput out = start_frame(gs, cfg);
   const int size = cfg.texture_space.size;
@@ -102,7 +102,7 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLig
   return out;
 }
 
-std::vector<sim::NamedProfile> programs() {
+std::vector<sim::NamedProfile> texture_space_programs() {
   return {vertex_entry<shaders::UvSpaceVS>(),
           fragment_entry<shaders::UvIrradianceFS>(),
           vertex_entry<shaders::BlurVS>(),
@@ -126,8 +126,8 @@ const TechniqueSpec& texture_space_technique() {
                              "Texture-space diffusion buffer size per axis",
                              {&PipelineConfig::texture_space, &TextureSpaceParams::size}, 64, 4096,
                              true)},
-      .render = render,
-      .shaders = programs,
+      .render = render_texture_space,
+      .shaders = texture_space_programs,
       // Its 1024^2 texture-space passes do not scale with the output: the average per
       // output pixel at 2048x1536 (9.3 s) rather than a slope.
       .host_ns_per_pixel = 3000,

@@ -77,8 +77,8 @@ shaders::UrpUniforms urp_uniforms(const GpuScene& gs, const PipelineConfig& cfg,
   return u;
 }
 
-FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLights& lights,
-                   sim::Gpu& gpu) {
+FrameOutput render_urp(const GpuScene& gs, const PipelineConfig& cfg, const FrameLights& lights,
+                       sim::Gpu& gpu) {
   FrameOutput out = start_frame(gs, cfg);
   std::optional<sim::RenderTarget> ao;
   if (cfg.urp.ssao && out.view.skin_visible) ao = ssao_passes(gs, cfg, out, gpu);
@@ -115,7 +115,7 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLig
   return out;
 }
 
-std::vector<sim::NamedProfile> programs() {
+std::vector<sim::NamedProfile> urp_programs() {
   std::vector<sim::NamedProfile> list = ssao_programs(PipelineConfig{}.urp.ssao_taps);
   list.push_back(fragment_entry<shaders::UrpFS<GammaMode::kSquare>>());
   list.push_back(mediump_fragment_entry<shaders::UrpFS<GammaMode::kSquare>>());
@@ -156,8 +156,8 @@ const TechniqueSpec& urp_technique() {
                       "Clear-coat specular layer over the skin (direct and image-based)",
                       {&PipelineConfig::urp, &UrpParams::clear_coat}),
       },
-      .render = render,
-      .shaders = programs,
+      .render = render_urp,
+      .shaders = urp_programs,
       // Measured 10100 ns against burley's 1620 in the same loaded session (burley's spec:
       // 2100), so scaled to the others' conditions. The AO taps' reach in pixels grows with
       // the resolution, so the slope is steeper than the per-pixel work alone.

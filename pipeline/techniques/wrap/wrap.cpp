@@ -11,8 +11,8 @@ namespace skinsim::pipeline {
 
 namespace {
 
-FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLights& lights,
-                   sim::Gpu& gpu) {
+FrameOutput render_wrap(const GpuScene& gs, const PipelineConfig& cfg, const FrameLights& lights,
+                        sim::Gpu& gpu) {
   FrameOutput out = start_frame(gs, cfg);
   const auto brdf_lut = brdf_lut_for(cfg);
   const auto shading = [&](const GpuMaterial& mat, sim::DrawCall& d) {
@@ -27,7 +27,7 @@ FrameOutput render(const GpuScene& gs, const PipelineConfig& cfg, const FrameLig
   return out;
 }
 
-std::vector<sim::NamedProfile> programs() {
+std::vector<sim::NamedProfile> wrap_programs() {
   return specular_variants<shaders::WrapFS>();
 }
 
@@ -41,8 +41,8 @@ const TechniqueSpec& wrap_technique() {
       .knobs = {real_knob("wrap", "--wrap",
                           "Light-wrap amount w: diffuse = max(0, (N.L + w) / (1 + w))",
                           {&PipelineConfig::wrap, &WrapParams::amount}, {0.0, 1.0})},
-      .render = render,
-      .shaders = programs,
+      .render = render_wrap,
+      .shaders = wrap_programs,
       .host_ns_per_pixel = 640,
   };
   return spec;
