@@ -91,11 +91,9 @@ SequenceRun play_sequence(const RunOptions& o, const driver::SceneSource& scene,
   r.sequence = driver::load_sequence(o.sequence, o.frames, o.fps);
   driver::check_sequence(r.sequence, config);
   const float aspect = static_cast<float>(config.width) / static_cast<float>(config.height);
+  driver::attach_animation(r.sequence, scene);
   std::optional<driver::AnimatedScene> animated;
-  if (r.sequence.animated) {
-    animated.emplace(scene, aspect, r.sequence);
-    driver::fit_to_animation(r.sequence, animated->animation());
-  }
+  if (r.sequence.animated) animated.emplace(scene, aspect, r.sequence);
   r.scene = std::make_unique<scene::Scene>(driver::load_scene(scene, aspect));
   r.gpu_scene = std::make_unique<pipeline::GpuScene>(*r.scene);
   std::filesystem::create_directories(out / kFramesDir);
