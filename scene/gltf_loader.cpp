@@ -217,8 +217,8 @@ Scene PosedGltf::pose(const NodeAnimation* animation, double time_s) {
         }
         material = default_material;
       }
-      if (auto m = gltf::convert_primitive(model, mesh, static_cast<int>(p), placed.world, material,
-                                           path, warn)) {
+      if (auto m = gltf::convert_primitive(model, mesh, static_cast<int>(p), placed.world,
+                                           placed.weights, material, path, warn)) {
         scene.meshes.push_back(std::move(*m));
       }
     }

@@ -3,8 +3,9 @@
 // What is read: the default scene's node tree (TRS or matrix transforms, applied so meshes
 // are in world space); triangle primitives (TRIANGLES, TRIANGLE_STRIP and TRIANGLE_FAN;
 // POINTS/LINES primitives are skipped with a warning) with POSITION, NORMAL, TEXCOORD_0,
-// TANGENT; materials (base colour factor/texture, normal texture + scale, metallic-
-// roughness factors/texture, KHR_materials_specular specularFactor as reflectivity,
+// TANGENT, morphed by their targets' weights (gltf_primitive.h); materials (base colour
+// factor/texture, normal texture + scale, metallic-roughness factors/texture,
+// KHR_materials_specular specularFactor as reflectivity,
 // extras.skinsim.kind; occlusionTexture and the specular extension's textures are named in
 // a warning and not read); the images those materials use, decoded to RGBA; the first
 // perspective camera in the node tree; the first KHR_lights_punctual directional light.

@@ -151,6 +151,14 @@ TEST(SequenceCli, BadGltfAnimationExitsTwoNamingTheField) {
   EXPECT_NE(sampler.output.find("animations[0].channels[0].sampler: index 5 out of range"),
             std::string::npos)
       << sampler.output;
+  f.json()["animations"][0]["channels"][0]["sampler"] = 0;
+  f.json()["meshes"][0]["weights"] = {1.0};
+  const Result weights =
+      run("run --scene " + f.write_gltf("weights") + " --sequence animation" + kSmall);
+  EXPECT_EQ(weights.exit_code, 2) << weights.output;
+  EXPECT_NE(weights.output.find("meshes[0].weights: 1 weights for 0 morph targets"),
+            std::string::npos)
+      << weights.output;
   const Result builtin = run("run --sequence animation" + kSmall);
   EXPECT_EQ(builtin.exit_code, 2) << builtin.output;
   EXPECT_NE(builtin.output.find("the built-in head has no animation"), std::string::npos)
