@@ -94,7 +94,9 @@ SequenceRun play_sequence(const RunOptions& o, const driver::SceneSource& scene,
   driver::attach_animation(r.sequence, scene);
   std::optional<driver::AnimatedScene> animated;
   if (r.sequence.animated) animated.emplace(scene, aspect, r.sequence);
-  r.scene = std::make_unique<scene::Scene>(driver::load_scene(scene, aspect));
+  // An animated file's first frame stands for it in the single-frame outputs (its scale).
+  r.scene = std::make_unique<scene::Scene>(animated ? animated->pose(r.sequence.time_s(0))
+                                                    : driver::load_scene(scene, aspect));
   r.gpu_scene = std::make_unique<pipeline::GpuScene>(*r.scene);
   std::filesystem::create_directories(out / kFramesDir);
   const auto start = std::chrono::steady_clock::now();

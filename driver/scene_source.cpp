@@ -5,6 +5,7 @@
 #include "io/read_file.h"
 #include "scene/error.h"
 #include "scene/gltf_input.h"
+#include "scene/gltf_loader.h"
 #include "scene/procedural_head.h"
 #include "util/fingerprint.h"
 

@@ -6,8 +6,11 @@
 #include <string>
 #include <vector>
 
-#include "scene/gltf_loader.h"
 #include "scene/scene.h"
+
+namespace skinsim::scene {
+struct LoadOptions;
+}
 
 namespace skinsim::driver {
 

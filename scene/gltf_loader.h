@@ -25,7 +25,6 @@
 #include <string>
 #include <vector>
 
-#include "scene/gltf_animation.h"
 #include "scene/scene.h"
 
 namespace tinygltf {
@@ -33,6 +32,8 @@ class Model;
 }
 
 namespace skinsim::scene {
+
+struct NodeAnimation;
 
 struct LoadOptions {
   // World units per millimetre; <= 0: glTF's metres when they give a head of plausible size,
