@@ -91,12 +91,12 @@ SequenceRun play_sequence(const RunOptions& o, const driver::SceneSource& scene,
   r.sequence = driver::load_sequence(o.sequence, o.frames, o.fps);
   driver::check_sequence(r.sequence, config);
   const float aspect = static_cast<float>(config.width) / static_cast<float>(config.height);
+  driver::attach_animation(r.sequence, scene);
   std::optional<driver::AnimatedScene> animated;
-  if (r.sequence.animated) {
-    animated.emplace(scene, aspect, r.sequence);
-    driver::fit_to_animation(r.sequence, animated->animation());
-  }
-  r.scene = std::make_unique<scene::Scene>(driver::load_scene(scene, aspect));
+  if (r.sequence.animated) animated.emplace(scene, aspect, r.sequence);
+  // An animated file's first frame stands for it in the single-frame outputs (its scale).
+  r.scene = std::make_unique<scene::Scene>(animated ? animated->pose(r.sequence.time_s(0))
+                                                    : driver::load_scene(scene, aspect));
   r.gpu_scene = std::make_unique<pipeline::GpuScene>(*r.scene);
   std::filesystem::create_directories(out / kFramesDir);
   const auto start = std::chrono::steady_clock::now();

@@ -20,6 +20,7 @@
 #include "app/commands.h"
 #include "driver/frame_job.h"
 #include "driver/sequence.h"
+#include "driver/sequence_animation.h"
 #include "driver/sweep_file.h"
 #include "driver/sweep_report.h"
 #include "driver/sweep_results.h"
@@ -231,10 +232,7 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
   std::optional<driver::Sequence> sequence;
   if (!o.sequence.empty()) {
     sequence = driver::load_sequence(o.sequence, o.frames, o.fps);
-    if (sequence->animated) {
-      throw driver::SweepError("--sequence " + o.sequence +
-                               ": a glTF animation plays in `skinsim run` only, not yet in sweeps");
-    }
+    driver::attach_animation(*sequence, spec.scene);
     for (const driver::SweepConfig& c : configs) driver::check_sequence(*sequence, c.config);
   }
 

@@ -26,15 +26,17 @@ scene::Scene load_scene(const SceneSource& source, float aspect) {
     if (!source.skin_materials.empty()) scene::classify_materials(s, source.skin_materials);
     return s;
   }
+  return scene::load_gltf(source.path, gltf_load_options(source, aspect));
+}
+
+scene::LoadOptions gltf_load_options(const SceneSource& source, float aspect) {
   scene::LoadOptions o;
   o.units_per_mm = source.units_per_mm;
   o.aspect = aspect;
   o.skin_materials = source.skin_materials;
   o.skin_albedo = source.skin_albedo;
   o.warn = source.warn;
-  o.animation = source.animation;
-  o.animation_time_s = source.animation_time_s;
-  return scene::load_gltf(source.path, o);
+  return o;
 }
 
 nlohmann::json scene_fingerprint(const SceneSource& scene) {

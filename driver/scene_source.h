@@ -9,7 +9,7 @@
 #include "scene/scene.h"
 
 namespace skinsim::scene {
-struct NodeAnimation;
+struct LoadOptions;
 }
 
 namespace skinsim::driver {
@@ -27,15 +27,14 @@ struct SceneSource {
   std::string skin_albedo;    // --skin-albedo (scene/skin_albedo.h); empty: the file's colours
   // Receives the loader's warnings (scene::LoadOptions::warn); empty: printed to stderr.
   std::function<void(const std::string&)> warn;
-  // Set: the glTF posed by this animation at animation_time_s (a sequence's frame).
-  const scene::NodeAnimation* animation = nullptr;
-  double animation_time_s = 0.0;
   bool builtin() const { return path.empty() || path == "builtin"; }
   std::string label() const { return builtin() ? "builtin:default-head" : path; }
 };
 
 // Loads or generates the scene; throws scene::SceneError naming the file on bad input.
 scene::Scene load_scene(const SceneSource& source, float aspect);
+// The glTF loader's options for a file `source` at a frame aspect.
+scene::LoadOptions gltf_load_options(const SceneSource& source, float aspect);
 
 // The scene a result depends on: the options (label, head triangles, texture size, skin
 // materials, units per mm, skin albedo and an albedo image's content) and, for a glTF file, its

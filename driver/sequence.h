@@ -16,12 +16,17 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "pipeline/config.h"
 #include "pipeline/gpu_scene.h"
 #include "util/user_error.h"
+
+namespace skinsim::scene {
+struct NodeAnimation;
+}
 
 namespace skinsim::driver {
 
@@ -50,9 +55,11 @@ struct Sequence {
   bool loops = false;
   std::vector<SequenceTrack> tracks;
   // `--sequence animation[:NAME]`: the scene's own glTF animation (sequence_animation.h),
-  // `animation` its name ("" = the file's first); frames 0 until fitted to its duration.
+  // `animation` its name ("" = the file's first); frames 0 until fitted to its duration and
+  // `animation_clip` empty until read (attach_animation).
   bool animated = false;
   std::string animation;
+  std::shared_ptr<const scene::NodeAnimation> animation_clip;
 
   double time_s(int frame) const { return frame / fps; }
   // How far along the path frame `frame` is, 0..1.

@@ -101,7 +101,8 @@ FrameMsStats frame_ms_stats(const std::vector<double>& frame_ms) {
 }
 
 SequenceReferences rendered_references(int threads) {
-  return [threads](const pipeline::GpuScene& scene, const pipeline::PipelineConfig& frame) {
+  return [threads](const pipeline::GpuScene& scene, const pipeline::PipelineConfig& frame,
+                   double /*time_s*/) {
     return reference_images(pipeline::render_reference(scene, frame, threads));
   };
 }
@@ -113,8 +114,7 @@ SequenceResult run_sequence(const pipeline::GpuScene& scene, const Sequence& seq
                             sim::PassMemo* shared_memo, const SceneAtTime& animated) {
   if (sequence.animated && !animated) {
     throw SequenceError(fmt::format(
-        "sequence '{}' plays the scene's glTF animation: only `skinsim run --sequence` plays "
-        "one",
+        "sequence '{}' plays the scene's glTF animation, but no animated scene was given",
         sequence.name));
   }
   SequenceResult r;
@@ -151,7 +151,7 @@ SequenceResult run_sequence(const pipeline::GpuScene& scene, const Sequence& seq
       }
     }
     if (references) {
-      const ReferenceImages ref = references(frame_scene, frame_config);
+      const ReferenceImages ref = references(frame_scene, frame_config, f.time_s);
       quality::Image image = to_image(frame.output.frame);
       f.quality = evaluate_quality(image, ref).metrics;
       // Temporal stability after the tLP measure of Chu et al. ("Learning temporal coherence

@@ -74,11 +74,11 @@ struct SequenceResult {
 // Called with each frame as it is finished, in order (to write its image, say).
 using SequenceFrameSink = std::function<void(int index, const FrameResult&)>;
 
-// Each frame's reference, for the frame's scene and configuration: rendered
+// Each frame's reference, for the frame's scene, configuration and time: rendered
 // (rendered_references), or a sweep's, kept in its refs/ so configurations that share the
-// reference knobs share it.
-using SequenceReferences = std::function<ReferenceImages(const pipeline::GpuScene& scene,
-                                                         const pipeline::PipelineConfig& frame)>;
+// reference knobs (and, in an animated sequence, the frame's time) share it.
+using SequenceReferences = std::function<ReferenceImages(
+    const pipeline::GpuScene& scene, const pipeline::PipelineConfig& frame, double time_s)>;
 SequenceReferences rendered_references(int threads);
 
 // The scene posed at a time (an animated glTF, sequence_animation.h); the reference it returns

@@ -6,6 +6,7 @@
 
 #include "driver/images.h"
 #include "driver/sequence_video.h"
+#include "scene/gltf_animation.h"
 
 namespace skinsim::driver {
 
@@ -56,18 +57,22 @@ nlohmann::json sequence_fingerprint(const Sequence& sequence) {
     tracks.push_back(
         {{"knob", t.knob}, {"relative", t.relative}, {"from", t.from}, {"to", t.to}, {"by", t.by}});
   }
-  return {{"name", sequence.name},
-          {"frames", sequence.frames},
-          {"fps", sequence.fps},
-          {"loops", sequence.loops},
-          {"tracks", tracks}};
+  nlohmann::json fingerprint = {{"name", sequence.name},
+                                {"frames", sequence.frames},
+                                {"fps", sequence.fps},
+                                {"loops", sequence.loops},
+                                {"tracks", tracks}};
+  // The file's content is in the scene's fingerprint; which of its animations plays is here.
+  if (sequence.animated) fingerprint["animation"] = sequence.animation_clip->name;
+  return fingerprint;
 }
 
 PlayedConfig play_sweep_config(const pipeline::GpuScene& scene, const Sequence& sequence,
                                const pipeline::PipelineConfig& resolved,
                                const gpu_model::DeviceProfile& device, int threads,
                                sim::PassMemo& memo, const SequenceReferences& references,
-                               const std::filesystem::path& dir, const std::string& id) {
+                               const std::filesystem::path& dir, const std::string& id,
+                               const SceneAtTime& animated) {
   const std::string frames_dir = "configs/" + id + "_frames";
   std::filesystem::remove_all(dir / frames_dir);  // an interrupted run's
   std::filesystem::create_directories(dir / frames_dir);
@@ -83,7 +88,7 @@ PlayedConfig play_sweep_config(const pipeline::GpuScene& scene, const Sequence& 
     costs.back().output.decisions = frame.output.decisions;
   };
   const SequenceResult result =
-      run_sequence(scene, sequence, resolved, device, threads, sink, references, &memo);
+      run_sequence(scene, sequence, resolved, device, threads, sink, references, &memo, animated);
   played.summary = summarise(sequence, result);
   const auto at_p95 = std::find_if(costs.begin(), costs.end(), [&](const FrameResult& f) {
     return f.timing.frame_ms == played.summary.p95.ms;

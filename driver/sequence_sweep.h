@@ -31,11 +31,13 @@ struct PlayedConfig {
 
 // Plays `sequence` for a resolved configuration `id`: its frames into `dir`/configs/<id>_frames/
 // and encoded to configs/<id>.webm (sequence_video.h; the frames are kept only when the video
-// could not be made).
+// could not be made). `animated`: the scene at each frame's time, for an animated sequence
+// (run_sequence).
 PlayedConfig play_sweep_config(const pipeline::GpuScene& scene, const Sequence& sequence,
                                const pipeline::PipelineConfig& resolved,
                                const gpu_model::DeviceProfile& device, int threads,
                                sim::PassMemo& memo, const SequenceReferences& references,
-                               const std::filesystem::path& dir, const std::string& id);
+                               const std::filesystem::path& dir, const std::string& id,
+                               const SceneAtTime& animated = {});
 
 }  // namespace skinsim::driver

@@ -15,6 +15,7 @@
 
 #include "driver/frame_job.h"
 #include "driver/images.h"
+#include "driver/sequence_animation.h"
 #include "driver/sequence_sweep.h"
 #include "driver/skin_diagnosis.h"
 #include "driver/sweep_config_result.h"
@@ -44,10 +45,12 @@ double seconds_since(Clock::time_point start) {
 }
 
 // A scene depends on the aspect ratio of the frame (camera framing), so each resolution gets
-// its own; GpuScene keeps a reference to its Scene.
+// its own; GpuScene keeps a reference to its Scene. In a sweep over a glTF animation, `scene` is
+// posed at the shown frame's time and `animated` poses every frame.
 struct SceneForSize {
   std::unique_ptr<scene::Scene> scene;
   std::unique_ptr<pipeline::GpuScene> gpu;
+  std::unique_ptr<AnimatedScene> animated;
 };
 
 // A configuration to compute, with everything resolved.
@@ -57,6 +60,7 @@ struct Job {
   pipeline::PipelineConfig resolved;  // resolution filled in
   nlohmann::json fingerprint;
   const pipeline::GpuScene* scene = nullptr;
+  AnimatedScene* animated = nullptr;  // an animated sequence's frames
   const ReferenceImages* reference = nullptr;
   std::string reference_image;  // relative path of its cached reference PNG
 };
@@ -159,14 +163,16 @@ std::uint64_t expected_host_cost(const pipeline::PipelineConfig& resolved) {
          pipeline::find_technique(resolved.technique).host_ns_per_pixel;
 }
 
-// A sequence's per-frame references, kept in refs/ like the sweep's own.
+// A sequence's per-frame references, kept in refs/ like the sweep's own, keyed by the frame's
+// pose too in an animated sequence.
 SequenceReferences sweep_references(const nlohmann::json& scene_fp, const fs::path& dir,
                                     const SweepRunOptions& o) {
-  return
-      [&scene_fp, dir, &o](const pipeline::GpuScene& scene, const pipeline::PipelineConfig& frame) {
-        return cached_reference(scene, frame, scene_fp, dir / "refs", o.threads,
-                                o.reference_store ? &*o.reference_store : nullptr);
-      };
+  return [&scene_fp, dir, &o](const pipeline::GpuScene& scene,
+                              const pipeline::PipelineConfig& frame, double time_s) {
+    return cached_reference(scene, frame, posed_scene_fingerprint(scene_fp, *o.sequence, time_s),
+                            dir / "refs", o.threads,
+                            o.reference_store ? &*o.reference_store : nullptr);
+  };
 }
 
 }  // namespace
@@ -278,25 +284,36 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
     if (cancelled(options)) break;
     const int w = job.resolved.width, h = job.resolved.height;
     SceneForSize& s = scenes[std::to_string(w) + "x" + std::to_string(h)];
+    // A sequence's configurations show, and are compared on, one frame (shown_frame).
+    const int shown_index = options.sequence ? shown_frame(*options.sequence) : 0;
+    const double shown_time_s = options.sequence ? options.sequence->time_s(shown_index) : 0.0;
     if (!s.gpu) {
-      s.scene = std::make_unique<scene::Scene>(
-          load_scene(spec.scene, static_cast<float>(w) / static_cast<float>(h)));
+      const float aspect = static_cast<float>(w) / static_cast<float>(h);
+      if (options.sequence && options.sequence->animated) {
+        s.animated = std::make_unique<AnimatedScene>(spec.scene, aspect, *options.sequence);
+        s.scene = std::make_unique<scene::Scene>(s.animated->pose(shown_time_s));
+      } else {
+        s.scene = std::make_unique<scene::Scene>(load_scene(spec.scene, aspect));
+      }
       s.gpu = std::make_unique<pipeline::GpuScene>(*s.scene);
     }
     job.scene = s.gpu.get();
-    // A sequence's configurations show, and are compared on, one frame (shown_frame).
+    job.animated = s.animated.get();
     const pipeline::PipelineConfig shown =
-        options.sequence ? sequence_frame_config(*options.sequence, shown_frame(*options.sequence),
-                                                 job.resolved, *s.gpu)
-                         : job.resolved;
-    const std::string stem = reference_stem(shown, scene_fp);
+        options.sequence
+            ? sequence_frame_config(*options.sequence, shown_index, job.resolved, *s.gpu)
+            : job.resolved;
+    const nlohmann::json shown_scene_fp =
+        options.sequence ? posed_scene_fingerprint(scene_fp, *options.sequence, shown_time_s)
+                         : scene_fp;
+    const std::string stem = reference_stem(shown, shown_scene_fp);
     job.reference_image = reference_image_path(stem);
     auto it = references.find(stem);
     if (it == references.end()) {
       ReferenceSource source = ReferenceSource::kKept;
       ReferenceImages images;
       arena.execute([&] {
-        images = cached_reference(*s.gpu, shown, scene_fp, dir / "refs", options.threads,
+        images = cached_reference(*s.gpu, shown, shown_scene_fp, dir / "refs", options.threads,
                                   options.reference_store ? &*options.reference_store : nullptr,
                                   &source, options.progress);
         images.flip_features = std::make_shared<const quality::FlipFeatures>(images.image);
@@ -363,7 +380,11 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
         if (options.sequence) {
           PlayedConfig played = play_sweep_config(
               *job.scene, *options.sequence, job.resolved, *job.device, arena.max_concurrency(),
-              memo, sweep_references(scene_fp, dir, options), dir, job.config->id);
+              memo, sweep_references(scene_fp, dir, options), dir, job.config->id,
+              job.animated ? SceneAtTime([a = job.animated](double t) -> const pipeline::GpuScene& {
+                return a->at(t);
+              })
+                           : SceneAtTime{});
           next->frame = std::move(played.cost_frame);
           next->image = std::move(played.shown_image);
           next->sequence = std::move(played.summary);

@@ -31,11 +31,37 @@ std::string csv_number_or_empty(const std::optional<double>& v) {
   return v ? csv_number(*v) : "";
 }
 
-// Every frame's time as a tick on one horizontal axis shared by the rows (0 to `scale_ms`),
-// the p50, p95 and worst frame marked, and the budget as a dashed red line.
-std::string distribution_svg(const SequenceSummary& s, double scale_ms, double budget_ms) {
+// The strips' common axis: 0 to a little past the slowest frame's slow end over the rows, and
+// past the budget too when it is within kBudgetReach of that. A budget farther out would
+// squeeze every frame into the strip's left end (a 33 ms budget over 2 ms frames), so the axis
+// then stops short of it and the budget is drawn off scale: beyond a break at the right end.
+struct StripAxis {
+  double scale_ms = 0.0;
+  double slowest_ms = 0.0;  // the slowest frame's slow end over the rows
+  bool budget_on_scale = true;
+};
+constexpr double kBudgetReach = 2.0;
+
+StripAxis strip_axis(const SweepTable& table) {
+  double slowest = 0.0;
+  for (const ConfigResult& r : table.rows) {
+    if (r.sequence) slowest = std::max(slowest, r.sequence->max.high);
+  }
+  if (table.budget_ms <= kBudgetReach * slowest) {
+    return {1.05 * std::max(slowest, table.budget_ms), slowest, true};
+  }
+  return {1.05 * slowest, slowest, false};
+}
+
+// Every frame's time as a tick on one horizontal axis shared by the rows (StripAxis), the
+// p50, p95 and worst frame marked, and the budget as a dashed red line (past a break when off
+// scale).
+std::string distribution_svg(const SequenceSummary& s, const StripAxis& axis, double budget_ms) {
   constexpr double kWidth = 420.0, kHeight = 26.0;
-  const auto x = [&](double ms) { return fmt::format("{:.1f}", ms / scale_ms * kWidth); };
+  // Off scale, the frames' axis leaves room at the right for the break and the budget.
+  constexpr double kOffScale = 22.0;
+  const double plot = axis.budget_on_scale ? kWidth : kWidth - kOffScale;
+  const auto x = [&](double ms) { return fmt::format("{:.1f}", ms / axis.scale_ms * plot); };
   std::string svg =
       fmt::format("<svg width=\"{}\" height=\"{}\" role=\"img\" aria-label=\"frame times of {}\">",
                   kWidth, kHeight, escape_markup(s.name));
@@ -52,9 +78,17 @@ std::string distribution_svg(const SequenceSummary& s, double scale_ms, double b
         "<circle cx=\"{3}\" cy=\"13\" r=\"3.5\" fill=\"{2}\"/>",
         x(stat->low), x(stat->high), colour, x(stat->ms));
   }
+  const std::string budget_x = axis.budget_on_scale ? x(budget_ms) : fmt::format("{}", kWidth - 4);
+  if (!axis.budget_on_scale) {  // an axis break: two slanted strokes between frames and budget
+    for (double bx : {plot + 5.0, plot + 9.0}) {
+      svg += fmt::format("<line x1=\"{:.1f}\" x2=\"{:.1f}\" y1=\"18\" y2=\"8\" stroke=\"#555\"/>",
+                         bx - 2, bx + 2);
+    }
+  }
   svg += fmt::format(
-      "<line x1=\"{0}\" x2=\"{0}\" y1=\"0\" y2=\"{1}\" stroke=\"#d00\" stroke-dasharray=\"3,2\"/>",
-      x(budget_ms), kHeight);
+      "<line x1=\"{0}\" x2=\"{0}\" y1=\"0\" y2=\"{1}\" stroke=\"#d00\" "
+      "stroke-dasharray=\"3,2\"><title>budget {2:.1f} ms</title></line>",
+      budget_x, kHeight, budget_ms);
   return svg + "</svg>";
 }
 
@@ -149,11 +183,7 @@ std::vector<std::string> sequence_csv_cells(const SweepTable& table, const Confi
 
 std::string sequence_sweep_section(const SweepTable& table) {
   if (!any_sequence(table)) return "";
-  double scale_ms = table.budget_ms;
-  for (const ConfigResult& r : table.rows) {
-    if (r.sequence) scale_ms = std::max(scale_ms, r.sequence->max.high);
-  }
-  scale_ms *= 1.05;
+  const StripAxis axis = strip_axis(table);
   const SequenceSummary& first =
       *std::find_if(table.rows.begin(), table.rows.end(), [](const ConfigResult& r) {
          return r.sequence.has_value();
@@ -166,11 +196,15 @@ std::string sequence_sweep_section(const SweepTable& table) {
       "frame image, error map and quality are those of frame {}, the same view for every "
       "configuration. Strips: each frame's time as a grey tick on a common axis from 0 to "
       "{:.1f} ms, dots at the p50 (blue), p95 (black) and worst frame (orange) with their "
-      "ranges below, the budget dashed red. Temporal error: |FLIP(frame t, frame t&minus;1) "
+      "ranges below, the budget dashed red{}. Temporal error: |FLIP(frame t, frame t&minus;1) "
       "&minus; FLIP(reference t, reference t&minus;1)| averaged over the steps "
       "(docs/sequences.md).</p>\n",
       escape_markup(first.name), escape_markup(first.name), first.frames, first.fps,
-      table.budget_ms, first.shown_frame, scale_ms);
+      table.budget_ms, first.shown_frame, axis.scale_ms,
+      axis.budget_on_scale ? ""
+                           : fmt::format(" at the right end, off the axis past the break (the "
+                                         "slowest frame's slow end is {:.0f}% of it)",
+                                         100.0 * axis.slowest_ms / table.budget_ms));
   h += "<table>\n<tr><th class=\"text\">configuration</th><th>frame times</th><th>p50 "
        "ms</th><th>p95 ms</th><th>worst ms</th><th>temporal error mean / worst</th><th "
        "class=\"text\">video</th></tr>\n";
@@ -178,7 +212,7 @@ std::string sequence_sweep_section(const SweepTable& table) {
     if (!r.sequence) continue;
     const SequenceSummary& s = *r.sequence;
     h += "<tr><td class=\"text\">" + escape_markup(r.id) + "</td><td>" +
-         distribution_svg(s, scale_ms, table.budget_ms) + "</td>" + stat_cell(s.p50) +
+         distribution_svg(s, axis, table.budget_ms) + "</td>" + stat_cell(s.p50) +
          stat_cell(s.p95) + stat_cell(s.max);
     h += s.temporal_mean_error ? fmt::format("<td>{:.4f} / {:.4f}</td>", *s.temporal_mean_error,
                                              *s.temporal_max_error)

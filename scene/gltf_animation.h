@@ -1,8 +1,8 @@
-// A glTF animation's node transforms (glTF 2.0 spec, 3.11 "Animations"): each channel moves one
-// node's translation, rotation or scale along keyframes with LINEAR (rotation: spherical
-// linear), STEP or CUBICSPLINE (Hermite, with the in- and out-tangents stored around each
-// value) interpolation. Before the first keyframe a channel holds its first value, after the
-// last its last. Morph-target weights channels are named in `skipped` and not played.
+// A glTF animation (glTF 2.0 spec, 3.11 "Animations"): each channel moves one node's
+// translation, rotation, scale or morph-target weights (one per target of the node's mesh,
+// spec 3.7.2.2) along keyframes with LINEAR (rotation: spherical linear), STEP or CUBICSPLINE
+// (Hermite, with the in- and out-tangents stored around each value) interpolation. Before the
+// first keyframe a channel holds its first value, after the last its last.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -17,7 +17,7 @@ class Model;
 
 namespace skinsim::scene {
 
-enum class AnimationPath { kTranslation, kRotation, kScale };
+enum class AnimationPath { kTranslation, kRotation, kScale, kWeights };
 enum class Interpolation { kLinear, kStep, kCubicSpline };
 
 struct AnimationChannel {
@@ -25,16 +25,18 @@ struct AnimationChannel {
   AnimationPath path = AnimationPath::kTranslation;
   Interpolation interpolation = Interpolation::kLinear;
   std::vector<float> times;  // seconds, strictly increasing
-  // Per keyframe 3 (translation, scale) or 4 (rotation x, y, z, w) numbers; CUBICSPLINE keeps
-  // in-tangent, value, out-tangent per keyframe, as stored.
+  // Per keyframe `width` numbers: 3 (translation, scale), 4 (rotation x, y, z, w) or one per
+  // morph target (weights); CUBICSPLINE keeps in-tangent, value, out-tangent per keyframe, as
+  // stored.
+  int width = 3;
   std::vector<float> values;
 };
 
 struct NodeAnimation {
   std::string name;
   std::vector<AnimationChannel> channels;
-  double duration_s = 0.0;           // the last keyframe over all channels
-  std::vector<std::string> skipped;  // channels not played, e.g. "channels[2]: weights"
+  double duration_s = 0.0;  // the last keyframe over all channels
+  // Whether a channel moves the node's transform (translation, rotation or scale).
   bool moves(int node) const;
 };
 
@@ -57,5 +59,8 @@ NodeAnimation load_animation(const std::string& path, const std::string& name);
 
 // `rest` (the node's own TRS) with every channel of `node` applied at `time_s`.
 NodeTrs sample_node(const NodeAnimation& animation, int node, double time_s, NodeTrs rest);
+// `rest` (the node's morph weights) with a weights channel of `node` applied at `time_s`.
+std::vector<float> sample_weights(const NodeAnimation& animation, int node, double time_s,
+                                  std::vector<float> rest);
 
 }  // namespace skinsim::scene

@@ -153,24 +153,43 @@ bool apply_file_light(const tinygltf::Model& model, const std::vector<gltf::Plac
 
 }  // namespace
 
-Scene load_gltf(const std::string& path, const LoadOptions& opts) {
+PosedGltf::PosedGltf(const std::string& path, const LoadOptions& opts) : path_(path), opts_(opts) {
   const Warn warn =
-      opts.warn ? opts.warn
-                : Warn([](const std::string& msg) { fmt::print(stderr, "warning: {}\n", msg); });
+      opts_.warn ? opts_.warn
+                 : Warn([](const std::string& msg) { fmt::print(stderr, "warning: {}\n", msg); });
+  opts_.warn = [this, warn](const std::string& msg) {
+    if (warned_.insert(msg).second) warn(msg);
+  };
   if (!(opts.aspect > 0.0f) ||
       !(opts.auto_camera_yfov_radians > 0.0f && opts.auto_camera_yfov_radians < 3.0f)) {
     throw SceneError(fmt::format(
         "{}: LoadOptions: aspect must be > 0 and auto_camera_yfov_radians in (0, 3)", path));
   }
-  tinygltf::Model model = gltf::parse_gltf_file(path);
-  check_required_extensions(model, path);
-  const int scene_index = pick_scene(model, path);
+  model_ = std::make_unique<tinygltf::Model>(gltf::parse_gltf_file(path));
+  check_required_extensions(*model_, path);
+  scene_index_ = pick_scene(*model_, path);
+  gltf::convert_materials(*model_, path, materials_, opts_.warn);
+}
+
+PosedGltf::~PosedGltf() = default;
+
+Scene load_gltf(const std::string& path, const LoadOptions& opts) {
+  return PosedGltf(path, opts).pose(nullptr, 0.0);
+}
+
+Scene PosedGltf::pose(const NodeAnimation* animation, double time_s) {
+  const tinygltf::Model& model = *model_;
+  const std::string& path = path_;
+  const LoadOptions& opts = opts_;
+  const Warn& warn = opts_.warn;
+  const int scene_index = scene_index_;
   const std::vector<gltf::PlacedNode> nodes =
-      gltf::flatten_scene(model, scene_index, path, opts.animation, opts.animation_time_s);
+      gltf::flatten_scene(model, scene_index, path, animation, time_s);
 
   Scene scene;
   scene.source = path;
-  gltf::convert_materials(model, path, scene, warn);
+  scene.materials = materials_.materials;
+  scene.images = materials_.images;
   int default_material = -1;  // glTF's default material (spec 3.9.6), added on first use
   for (const auto& placed : nodes) {
     const int mesh = model.nodes[static_cast<std::size_t>(placed.node)].mesh;
@@ -198,8 +217,8 @@ Scene load_gltf(const std::string& path, const LoadOptions& opts) {
         }
         material = default_material;
       }
-      if (auto m = gltf::convert_primitive(model, mesh, static_cast<int>(p), placed.world, material,
-                                           path, warn)) {
+      if (auto m = gltf::convert_primitive(model, mesh, static_cast<int>(p), placed.world,
+                                           placed.weights, material, path, warn)) {
         scene.meshes.push_back(std::move(*m));
       }
     }

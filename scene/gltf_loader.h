@@ -3,8 +3,9 @@
 // What is read: the default scene's node tree (TRS or matrix transforms, applied so meshes
 // are in world space); triangle primitives (TRIANGLES, TRIANGLE_STRIP and TRIANGLE_FAN;
 // POINTS/LINES primitives are skipped with a warning) with POSITION, NORMAL, TEXCOORD_0,
-// TANGENT; materials (base colour factor/texture, normal texture + scale, metallic-
-// roughness factors/texture, KHR_materials_specular specularFactor as reflectivity,
+// TANGENT, morphed by their targets' weights (gltf_primitive.h); materials (base colour
+// factor/texture, normal texture + scale, metallic-roughness factors/texture,
+// KHR_materials_specular specularFactor as reflectivity,
 // extras.skinsim.kind; occlusionTexture and the specular extension's textures are named in
 // a warning and not read); the images those materials use, decoded to RGBA; the first
 // perspective camera in the node tree; the first KHR_lights_punctual directional light.
@@ -19,13 +20,20 @@
 #pragma once
 
 #include <functional>
+#include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
-#include "scene/gltf_animation.h"
 #include "scene/scene.h"
 
+namespace tinygltf {
+class Model;
+}
+
 namespace skinsim::scene {
+
+struct NodeAnimation;
 
 struct LoadOptions {
   // World units per millimetre; <= 0: glTF's metres when they give a head of plausible size,
@@ -40,13 +48,32 @@ struct LoadOptions {
   std::vector<std::string> skin_materials;
   // The CLI's --skin-albedo (skin_albedo.h): empty keeps the file's base colours.
   std::string skin_albedo;
-  // Set: the scene posed by this animation at `animation_time_s` (gltf_animation.h).
-  const NodeAnimation* animation = nullptr;
-  double animation_time_s = 0.0;
   // Receives non-fatal problems (skipped primitives, ignored lights...). Empty: stderr.
   std::function<void(const std::string&)> warn;
 };
 
 Scene load_gltf(const std::string& path, const LoadOptions& opts);
+
+// A glTF file read once (parsed, its materials' images decoded) and posed any number of times:
+// each pose is the scene load_gltf makes, with the nodes an animation moves at a time
+// (gltf_animation.h), so a sequence does not parse and decode the file again for every frame.
+// A warning is passed on once, not again for every pose that raises it.
+class PosedGltf {
+ public:
+  PosedGltf(const std::string& path, const LoadOptions& opts);
+  PosedGltf(const PosedGltf&) = delete;  // its warn refers to warned_
+  PosedGltf& operator=(const PosedGltf&) = delete;
+  ~PosedGltf();
+  // Without `animation`, the file as it is (load_gltf).
+  Scene pose(const NodeAnimation* animation, double time_s);
+
+ private:
+  std::string path_;
+  LoadOptions opts_;
+  std::unique_ptr<tinygltf::Model> model_;
+  int scene_index_ = 0;
+  Scene materials_;  // the file's materials and images, copied into every pose
+  std::set<std::string> warned_;
+};
 
 }  // namespace skinsim::scene

@@ -10,6 +10,7 @@
 
 #include "scene/error.h"
 #include "scene/gltf_animation.h"
+#include "scene/gltf_primitive.h"
 
 namespace skinsim::scene::gltf {
 namespace {
@@ -76,6 +77,31 @@ glm::mat4 animated_matrix(const tinygltf::Node& n, int index, const NodeAnimatio
   return sample_node(animation, index, time_s, rest).matrix();
 }
 
+// PlacedNode::weights for node `index`.
+std::vector<float> node_weights(const tinygltf::Model& model, int index,
+                                const NodeAnimation* animation, double time_s,
+                                const std::string& file) {
+  const tinygltf::Node& n = model.nodes[static_cast<std::size_t>(index)];
+  // A mesh index out of range is the loader's to report (gltf_loader.cpp).
+  const bool has_mesh = n.mesh >= 0 && static_cast<std::size_t>(n.mesh) < model.meshes.size();
+  const std::size_t targets = has_mesh ? morph_target_count(model, n.mesh, file) : 0;
+  const auto given = [&](const std::vector<double>& weights, const std::string& field) {
+    if (weights.size() != targets) {
+      throw SceneError(fmt::format("{}: {}: {} weights for {} morph targets{}", file, field,
+                                   weights.size(), targets,
+                                   has_mesh ? fmt::format(" (meshes[{}])", n.mesh) : ""));
+    }
+    return std::vector<float>(weights.begin(), weights.end());
+  };
+  std::vector<float> weights(targets, 0.0f);
+  if (has_mesh && !model.meshes[static_cast<std::size_t>(n.mesh)].weights.empty()) {
+    weights = given(model.meshes[static_cast<std::size_t>(n.mesh)].weights,
+                    fmt::format("meshes[{}].weights", n.mesh));
+  }
+  if (!n.weights.empty()) weights = given(n.weights, fmt::format("nodes[{}].weights", index));
+  return animation ? sample_weights(*animation, index, time_s, std::move(weights)) : weights;
+}
+
 int checked_node(const tinygltf::Model& model, int node, const std::string& where,
                  const std::string& file) {
   if (node < 0 || static_cast<std::size_t>(node) >= model.nodes.size()) {
@@ -118,7 +144,7 @@ std::vector<PlacedNode> flatten_scene(const tinygltf::Model& model, int scene_in
         parent * (animation && animation->moves(node)
                       ? animated_matrix(model.nodes[node], node, *animation, time_s, file)
                       : local_matrix(model.nodes[node], node, file));
-    out.push_back({node, world});
+    out.push_back({node, world, node_weights(model, node, animation, time_s, file)});
     stack.push_back({node, world, 0});
   };
 

@@ -19,6 +19,9 @@ namespace skinsim::scene::gltf {
 struct PlacedNode {
   int node = -1;
   glm::mat4 world{1.0f};
+  // Its mesh's morph weights (spec 3.7.2.2): the animation's, else the node's, else the mesh's
+  // defaults, else zeros; one per morph target (none without a mesh or targets).
+  std::vector<float> weights;
 };
 
 // Most nodes a file may have. Each node with a mesh becomes a separate draw with fixed
@@ -31,7 +34,8 @@ inline constexpr std::size_t kMaxNodes = 4096;
 // reached twice (a cycle or a second parent) throws SceneError, as do out-of-range
 // indices, malformed TRS/matrix values and more than kMaxNodes nodes. Iterative, so deep trees
 // cannot overflow the stack. With `animation`, the nodes it moves take their transform at
-// `time_s` (gltf_animation.h); such a node must use TRS, not a matrix (spec 3.11).
+// `time_s` (gltf_animation.h); such a node must use TRS, not a matrix (spec 3.11). Weights
+// that do not match the mesh's morph targets in number throw SceneError naming the field.
 std::vector<PlacedNode> flatten_scene(const tinygltf::Model& model, int scene_index,
                                       const std::string& file,
                                       const NodeAnimation* animation = nullptr,

@@ -9,6 +9,7 @@
 #include "scene/error.h"
 #include "scene/gltf_accessor.h"
 #include "scene/mesh_attributes.h"
+#include "util/check.h"
 
 namespace skinsim::scene::gltf {
 namespace {
@@ -93,6 +94,46 @@ struct PrimitiveSource {
   }
 };
 
+// The primitive's morph targets' displacements summed with their weights, per vertex; empty
+// for an attribute no target displaces (or the mesh has no targets).
+struct Morph {
+  std::vector<glm::vec3> position, normal, tangent;
+};
+
+Morph read_morph(const PrimitiveSource& src, const std::vector<float>& weights, std::size_t n,
+                 const std::function<void(const std::string&)>& warn) {
+  Morph morph;
+  for (std::size_t t = 0; t < src.prim.targets.size(); ++t) {
+    for (const auto& [name, acc] : src.prim.targets[t]) {
+      std::vector<glm::vec3>* sum = name == "POSITION"  ? &morph.position
+                                    : name == "NORMAL"  ? &morph.normal
+                                    : name == "TANGENT" ? &morph.tangent
+                                                        : nullptr;
+      const std::string where = fmt::format("{}.targets[{}].{}", src.where, t, name);
+      if (!sum) {  // TEXCOORD_n and COLOR_n (spec 3.7.2.2): skinsim morphs the shape only
+        warn(fmt::format("{}: {}: not morphed (only POSITION, NORMAL and TANGENT are)", src.file,
+                         where));
+        continue;
+      }
+      const std::vector<float> d =
+          read_floats(src.model, acc, 3, AttributeFormat::kFloatOnly, src.file, where);
+      if (d.size() != 3 * n) {
+        throw SceneError(
+            fmt::format("{}: {}: {} elements, POSITION has {}", src.file, where, d.size() / 3, n));
+      }
+      if (sum->empty()) sum->assign(n, glm::vec3(0.0f));
+      for (std::size_t i = 0; i < n; ++i) {
+        const glm::vec3 displacement(d[3 * i], d[3 * i + 1], d[3 * i + 2]);
+        if (!finite3(displacement)) {
+          throw SceneError(fmt::format("{}: {}: element {} is not finite", src.file, where, i));
+        }
+        (*sum)[i] += weights[t] * displacement;
+      }
+    }
+  }
+  return morph;
+}
+
 // Why the primitive is skipped (points or lines, a transform a float cannot hold or a
 // singular one), or empty if it is drawn.
 std::string reason_to_skip(int mode, float det) {
@@ -158,8 +199,8 @@ void place_in_world(Mesh& m, const glm::mat4& world, float det, const PrimitiveS
 
 // World-space normals: NORMAL through the inverse transpose, smooth normals where it is
 // missing, zero or not finite.
-void fill_normals(Mesh& m, const glm::mat3& linear, const PrimitiveSource& src,
-                  const std::function<void(const std::string&)>& warn) {
+void fill_normals(Mesh& m, const glm::mat3& linear, const std::vector<glm::vec3>& morph,
+                  const PrimitiveSource& src, const std::function<void(const std::string&)>& warn) {
   const std::size_t n = m.positions.size();
   std::vector<glm::vec3> generated;  // smooth normals, computed only if needed
   const auto smooth = [&]() -> const std::vector<glm::vec3>& {
@@ -174,6 +215,7 @@ void fill_normals(Mesh& m, const glm::mat3& linear, const PrimitiveSource& src,
   const glm::mat3 normal_matrix = glm::transpose(glm::inverse(linear));
   m.normals =
       to_vectors<glm::vec3, 3>(src.read_matching(acc, 3, AttributeFormat::kFloatOnly, "NORMAL", n));
+  for (std::size_t i = 0; i < morph.size(); ++i) m.normals[i] += morph[i];
   std::size_t repaired = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const glm::vec3 w = normal_matrix * m.normals[i];
@@ -213,7 +255,8 @@ void fill_uvs(Mesh& m, const PrimitiveSource& src) {
 
 // World-space tangents: TANGENT transformed and made orthogonal to the normal (the
 // bitangent sign flipped by a mirroring transform), or computed from the UVs.
-void fill_tangents(Mesh& m, const glm::mat3& linear, float det, const PrimitiveSource& src) {
+void fill_tangents(Mesh& m, const glm::mat3& linear, float det, const std::vector<glm::vec3>& morph,
+                   const PrimitiveSource& src) {
   const std::size_t n = m.positions.size();
   const int acc = src.attribute("TANGENT");
   if (acc < 0) {
@@ -222,6 +265,7 @@ void fill_tangents(Mesh& m, const glm::mat3& linear, float det, const PrimitiveS
   }
   m.tangents = to_vectors<glm::vec4, 4>(
       src.read_matching(acc, 4, AttributeFormat::kFloatOnly, "TANGENT", n));
+  for (std::size_t i = 0; i < morph.size(); ++i) m.tangents[i] += glm::vec4(morph[i], 0.0f);
   const float flip = det < 0.0f ? -1.0f : 1.0f;
   for (std::size_t i = 0; i < n; ++i) {
     const glm::vec3& nrm = m.normals[i];
@@ -237,7 +281,8 @@ void fill_tangents(Mesh& m, const glm::mat3& linear, float det, const PrimitiveS
 }  // namespace
 
 std::optional<Mesh> convert_primitive(const tinygltf::Model& model, int mesh_index, int prim_index,
-                                      const glm::mat4& world, int material, const std::string& file,
+                                      const glm::mat4& world, const std::vector<float>& weights,
+                                      int material, const std::string& file,
                                       const std::function<void(const std::string&)>& warn) {
   const tinygltf::Mesh& src_mesh = model.meshes[static_cast<std::size_t>(mesh_index)];
   const PrimitiveSource src{model, src_mesh.primitives[static_cast<std::size_t>(prim_index)], file,
@@ -255,16 +300,33 @@ std::optional<Mesh> convert_primitive(const tinygltf::Model& model, int mesh_ind
   if (src_mesh.primitives.size() > 1) m.name += fmt::format("/{}", prim_index);
   m.material = material;
   m.positions = read_positions(src);
+  SKINSIM_CHECK_OP(weights.size(), ==, src.prim.targets.size());
+  const Morph morph = read_morph(src, weights, m.positions.size(), warn);
+  for (std::size_t i = 0; i < morph.position.size(); ++i) m.positions[i] += morph.position[i];
   m.indices = read_triangles(src, mode, m.positions.size());
   if (m.indices.empty()) {
     warn(fmt::format("{}: {}: no triangles; skipped", file, src.where));
     return std::nullopt;
   }
   place_in_world(m, world, det, src);
-  fill_normals(m, linear, src, warn);
+  fill_normals(m, linear, morph.normal, src, warn);
   fill_uvs(m, src);
-  fill_tangents(m, linear, det, src);
+  fill_tangents(m, linear, det, morph.tangent, src);
   return m;
+}
+
+std::size_t morph_target_count(const tinygltf::Model& model, int mesh, const std::string& file) {
+  const auto& primitives = model.meshes.at(static_cast<std::size_t>(mesh)).primitives;
+  const std::size_t count = primitives.empty() ? 0 : primitives[0].targets.size();
+  for (std::size_t p = 1; p < primitives.size(); ++p) {
+    if (primitives[p].targets.size() != count) {
+      throw SceneError(fmt::format(
+          "{}: meshes[{}].primitives[{}].targets: {} morph targets, primitives[0] has {} (all "
+          "primitives of a mesh need the same number)",
+          file, mesh, p, primitives[p].targets.size(), count));
+    }
+  }
+  return count;
 }
 
 }  // namespace skinsim::scene::gltf

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "tests/app/run_skinsim.h"
+#include "tests/app/slide_scene.h"
 #include "tests/scene/gltf_fixture.h"
 #include "tests/scoped_env.h"
 
@@ -15,6 +16,7 @@ namespace {
 
 using skinsim::test::Result;
 using skinsim::test::run;
+using skinsim::test::slide_scene;
 
 const std::string kSmall = " --resolution 64x48 --head-triangles 2000 --texture-size 64";
 
@@ -110,31 +112,6 @@ TEST(SequenceCli, PageShowsTheVideoOrSaysWhyNot) {
   EXPECT_NE(bare_html.find("No video: ffmpeg is not installed"), std::string::npos) << bare_html;
 }
 
-// A skin quad 2 m in front of a perspective camera, with one animation "slide" moving node
-// `animated` (0: the quad, 1: the camera) 0.6 m along +x over 1 s.
-std::string slide_scene(skinsim::scene::testing::GltfFixture& f, int animated) {
-  f.add_quad_mesh(true, true);
-  f.json()["nodes"][0]["translation"] = {-0.5, -0.5, -2.0};
-  f.json()["materials"] = {{{"name", "skin"}}};
-  f.json()["meshes"][0]["primitives"][0]["material"] = 0;
-  f.json()["cameras"] = {
-      {{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"znear", 0.1}, {"zfar", 10.0}}}}};
-  f.json()["nodes"].push_back({{"camera", 0}, {"translation", {0.0, 0.0, 0.0}}});
-  f.json()["scenes"][0]["nodes"].push_back(1);
-  const nlohmann::json rest = f.json()["nodes"][animated]["translation"];
-  const std::vector<float> start = rest.get<std::vector<float>>();
-  const int input = f.add_floats({0.0f, 1.0f}, "SCALAR");
-  const int output =
-      f.add_floats({start[0], start[1], start[2], start[0] + 0.6f, start[1], start[2]}, "VEC3");
-  f.json()["animations"] = {
-      {{"name", "slide"},
-       {"samplers", nlohmann::json::array({{{"input", input}, {"output", output}}})},
-       {"channels",
-        nlohmann::json::array(
-            {{{"sampler", 0}, {"target", {{"node", animated}, {"path", "translation"}}}}})}}};
-  return f.write_gltf("slide");
-}
-
 std::string read_bytes(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), {}};
@@ -174,6 +151,14 @@ TEST(SequenceCli, BadGltfAnimationExitsTwoNamingTheField) {
   EXPECT_NE(sampler.output.find("animations[0].channels[0].sampler: index 5 out of range"),
             std::string::npos)
       << sampler.output;
+  f.json()["animations"][0]["channels"][0]["sampler"] = 0;
+  f.json()["meshes"][0]["weights"] = {1.0};
+  const Result weights =
+      run("run --scene " + f.write_gltf("weights") + " --sequence animation" + kSmall);
+  EXPECT_EQ(weights.exit_code, 2) << weights.output;
+  EXPECT_NE(weights.output.find("meshes[0].weights: 1 weights for 0 morph targets"),
+            std::string::npos)
+      << weights.output;
   const Result builtin = run("run --sequence animation" + kSmall);
   EXPECT_EQ(builtin.exit_code, 2) << builtin.output;
   EXPECT_NE(builtin.output.find("the built-in head has no animation"), std::string::npos)

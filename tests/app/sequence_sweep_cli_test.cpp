@@ -1,6 +1,7 @@
 // `skinsim sweep --sequence`: every configuration plays the sequence; its row carries the
 // frame-time distribution (the row's frame_ms is the p95), the temporal stability and the
-// video (or the frames, without ffmpeg); resuming keys configurations by the sequence too.
+// video (or the frames, without ffmpeg); resuming keys configurations by the sequence too. A
+// sweep over a glTF animation keys each frame's reference by its pose.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -10,6 +11,7 @@
 #include <string>
 
 #include "tests/app/run_skinsim.h"
+#include "tests/app/slide_scene.h"
 #include "tests/scoped_env.h"
 
 namespace {
@@ -107,6 +109,40 @@ TEST(SequenceSweepCli, VideoWithFfmpegFramesWithout) {
             std::string::npos);
   std::filesystem::remove_all(with);
   std::filesystem::remove_all(without);
+}
+
+// The camera slides past the quad: every frame is another view, so each has its own reference
+// (five kept in refs/, none shared between poses), and a second sweep resumes the finished one.
+TEST(SequenceSweepCli, GltfAnimationKeysEachFramesReferenceByItsPose) {
+  skinsim::scene::testing::GltfFixture f("seq_sweep_anim");
+  const std::string scene = skinsim::test::slide_scene(f, 1);
+  const auto dir = f.dir() / "sweep";
+  const std::string args =
+      "sweep --no-charts --techniques mobile --luts 8x32 --scales 1 --resolutions 64x48 --scene " +
+      scene + " --sequence animation:slide --fps 4 --out " + dir.string();
+  const Result r = run(args);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("1 computed"), std::string::npos) << r.output;
+  const nlohmann::json row = nlohmann::json::parse(read(dir / "results.json")).at("rows").at(0);
+  const nlohmann::json& s = row.at("sequence");
+  EXPECT_EQ(s.at("name"), "animation:slide");
+  ASSERT_EQ(s.at("frames"), 5);  // 0 s to 1 s at 4 fps
+  EXPECT_EQ(row.at("frame_ms"), s.at("frame_ms_p95").at("ms"));
+  // The reference moves with the camera, so the frames' steps are measured against its own.
+  EXPECT_GE(s.at("temporal_max_error"), s.at("temporal_mean_error"));
+  int references = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "refs")) {
+    const std::string name = entry.path().filename().string();
+    references += name.ends_with(".png") && !name.ends_with("_skin.png");
+  }
+  EXPECT_EQ(references, 5) << "one reference per pose";
+  const std::string report = read(dir / "report.html");
+  EXPECT_NE(report.find("Frames in motion: animation:slide"), std::string::npos);
+  EXPECT_NE(report.find("<video src=\"" + s.at("video").get<std::string>()), std::string::npos);
+
+  const Result again = run(args);
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_NE(again.output.find("0 computed, 1 resumed"), std::string::npos) << again.output;
 }
 
 }  // namespace
