@@ -107,7 +107,7 @@ bool RayScene::occluded(const glm::vec3& origin, const glm::vec3& direction, flo
 }
 
 int RayScene::unoccluded(const glm::vec3& origin, std::span<const glm::vec3> directions,
-                         float t_near, float t_far) const {
+                         float t_near, float t_far, std::span<bool> open_rays) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;  // one origin, nearby directions
@@ -132,7 +132,10 @@ int RayScene::unoccluded(const glm::vec3& origin, std::span<const glm::vec3> dir
     }
     rtcOccluded16(valid.data(), impl_->scene, &context, &rays);
     for (int i = 0; i < kPacket; ++i) {
-      if (valid[i] && rays.tfar[i] >= 0.0f) ++open;  // Embree sets tfar to -inf on a hit
+      if (!valid[i]) continue;
+      const bool is_open = rays.tfar[i] >= 0.0f;  // Embree sets tfar to -inf on a hit
+      if (!open_rays.empty()) open_rays[first + i] = is_open;
+      open += is_open ? 1 : 0;
     }
   }
   return open;

@@ -1,5 +1,5 @@
 // Ray casting against triangle meshes with Embree (the library the brief names for it): the
-// reference renderer's shadow rays and the thickness bake.
+// reference renderer's shadow and ambient rays, and the thickness and occlusion bakes.
 #pragma once
 
 #include <cstdint>
@@ -45,9 +45,11 @@ class RayScene {
                 float t_far = std::numeric_limits<float>::infinity()) const;
   // How many of the rays from `origin` along `directions` (unit) no triangle blocks within
   // (t_near, t_far): the rays of a shadow or occlusion estimate, traced together as coherent
-  // packets. Each ray's answer is occluded()'s. Thread-safe.
+  // packets. Each ray's answer is occluded()'s; when `open` is given (one per direction) it
+  // receives them: true where the ray is not blocked. Thread-safe.
   int unoccluded(const glm::vec3& origin, std::span<const glm::vec3> directions, float t_near,
-                 float t_far = std::numeric_limits<float>::infinity()) const;
+                 float t_far = std::numeric_limits<float>::infinity(),
+                 std::span<bool> open = {}) const;
 
  private:
   struct Impl;

@@ -17,9 +17,11 @@
 #include "pipeline/bake/specular.h"
 #include "pipeline/brdf_lut_texture.h"
 #include "pipeline/frame_lights.h"
+#include "pipeline/reference/ambient_visibility.h"
 #include "pipeline/reference/dipole_diffusion.h"
 #include "pipeline/reference/gaussian_diffusion.h"
 #include "pipeline/reference/gbuffer_shaders.h"
+#include "pipeline/reference/pixel_noise.h"
 #include "pipeline/reference/shadow_origin.h"
 #include "pipeline/shaders/background.h"
 #include "pipeline/shaders/eye.h"
@@ -174,19 +176,6 @@ class DirectionalTable {
   std::vector<bake::DirectionalReflectance> entries_;
 };
 
-glm::vec3 sample_cube(const sim::TextureCube& cube, const glm::vec3& direction) {
-  const sim::CubeCoord c = sim::cube_coord(direction);
-  const sim::LevelView& l = cube.face(c.face).level(0);
-  const float fx = std::clamp(c.uv.x * l.width - 0.5f, 0.0f, l.width - 1.0f);
-  const float fy = std::clamp(c.uv.y * l.height - 0.5f, 0.0f, l.height - 1.0f);
-  const int x0 = static_cast<int>(fx), y0 = static_cast<int>(fy);
-  const int x1 = std::min(x0 + 1, l.width - 1), y1 = std::min(y0 + 1, l.height - 1);
-  const float ax = fx - x0, ay = fy - y0;
-  const glm::vec4 top = glm::mix(l.at(x0, y0), l.at(x1, y0), ax);
-  const glm::vec4 bottom = glm::mix(l.at(x0, y1), l.at(x1, y1), ax);
-  return glm::vec3(glm::mix(top, bottom, ay));
-}
-
 // Fraction of a disc light of angular radius kLightRadiusRad around `l` visible from p:
 // kShadowRays rays over the disc (a Fibonacci spiral, rotated per pixel by interleaved
 // gradient noise, Jimenez 2014, so that the penumbra's steps become fine noise).
@@ -199,11 +188,7 @@ float visibility(const bake::RayScene& rays, const glm::vec3& p, const glm::vec3
   const glm::vec3 helper = std::abs(l.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
   const glm::vec3 t = glm::normalize(glm::cross(helper, l));
   const glm::vec3 b = glm::cross(l, t);
-  const float noise = std::fmod(52.9829189f * std::fmod(0.06711056f * static_cast<float>(x) +
-                                                            0.00583715f * static_cast<float>(y),
-                                                        1.0f),
-                                1.0f);
-  const float rotation = 6.2831853f * noise;
+  const float rotation = 6.2831853f * reference::interleaved_gradient_noise(x, y);
   std::array<glm::vec3, kShadowRays> directions;
   for (int i = 0; i < kShadowRays; ++i) {
     const float r = kLightRadiusRad * std::sqrt((static_cast<float>(i) + 0.5f) / kShadowRays);
@@ -260,11 +245,12 @@ void for_blocks(int w, int h, int threads, const std::function<void(int, int, in
   });
 }
 
-// Light reaching the skin: irradiance per pixel, and each light's visibility per pixel
-// (pixel-major, lights.size() per pixel).
+// Light reaching the skin: irradiance per pixel, each light's visibility per pixel
+// (pixel-major, lights.size() per pixel) and the environment's (ambient_visibility.h).
 struct SkinLight {
   std::vector<glm::vec3> irradiance;
   std::vector<float> visible;
+  std::vector<glm::vec3> environment_visible;
 };
 
 SkinLight light_skin(const GpuScene& gs, const View& view, const GBuffer& g,
@@ -274,7 +260,9 @@ SkinLight light_skin(const GpuScene& gs, const View& view, const GBuffer& g,
   // Shadow rays start this far off the surface (past the triangles they start on).
   const float ray_offset = 0.05f * gs.scene().units_per_mm;
   SkinLight out{std::vector<glm::vec3>(static_cast<size_t>(w) * h, glm::vec3(0.0f)),
-                std::vector<float>(static_cast<size_t>(w) * h * lights.size(), 0.0f)};
+                std::vector<float>(static_cast<size_t>(w) * h * lights.size(), 0.0f),
+                std::vector<glm::vec3>(static_cast<size_t>(w) * h, glm::vec3(1.0f))};
+  const reference::AmbientRays ambient_rays(gs);
   for_rows(h, threads, [&](int y) {
     for (int x = 0; x < w; ++x) {
       if (g.position.at(x, y).w != reference::kKindSkin) continue;
@@ -284,9 +272,11 @@ SkinLight light_skin(const GpuScene& gs, const View& view, const GBuffer& g,
       // The light's physics, whatever the knobs: visibility is always ray cast and light
       // always crosses thin parts (the shadows and transmission knobs switch the
       // pipelines' approximations of these, measured against this).
-      glm::vec3 e = rl.ambient;
       const glm::vec3 origin =
           reference::shadow_ray_origin(gs, view.eye, p, ray_offset) + vertex_n * ray_offset;
+      const reference::AmbientVisibility open = ambient_rays.at(origin, vertex_n, x, y, ray_offset);
+      out.environment_visible[static_cast<size_t>(y) * w + x] = open.environment;
+      glm::vec3 e = rl.ambient * open.ambient;
       for (std::size_t i = 0; i < lights.size(); ++i) {
         const scene::DirectionalLight& light = lights[i];
         const float n_dot_l = glm::dot(n, light.direction);
@@ -332,6 +322,7 @@ class ReferenceShader {
         g_(g),
         lights_(rl.lights),
         visible_(light.visible),
+        environment_visible_(light.environment_visible),
         lut_params_(brdf_lut_params(config)),
         directional_(lut_params_) {}
 
@@ -359,7 +350,8 @@ class ReferenceShader {
                   visible_[(static_cast<size_t>(y) * w + x) * lights_.size() + i];
     }
     const glm::vec3 env =
-        sample_cube(gs_.environment_diffuse(), glm::vec3(g_.vertex_normal.at(x, y)));
+        reference::sample_cube(gs_.environment_diffuse(), glm::vec3(g_.vertex_normal.at(x, y))) *
+        environment_visible_[static_cast<size_t>(y) * w + x];
     const glm::vec3 color = diffuse + specular + env * fresnel * reflectivity;
     out.frame.at(x, y) =
         glm::vec4(srgb_encode(color.r), srgb_encode(color.g), srgb_encode(color.b), 1.0f);
@@ -371,6 +363,7 @@ class ReferenceShader {
   const GBuffer& g_;
   const std::vector<scene::DirectionalLight>& lights_;
   const std::vector<float>& visible_;
+  const std::vector<glm::vec3>& environment_visible_;
   const bake::BrdfLutParams lut_params_;
   const DirectionalTable directional_;
 };

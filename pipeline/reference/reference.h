@@ -5,7 +5,9 @@
 //     the key and back lights (lighting.h) with exact visibility: shadow rays cast with
 //     Embree against every mesh towards a disc light 1 degree in radius (soft edges), and
 //     light transmitted through thin parts from the baked thickness and the profile's
-//     transmittance (as shaders/lights.h), whatever the shadows / transmission knobs;
+//     transmittance (as shaders/lights.h), whatever the shadows / transmission knobs; the
+//     ambient and the environment's reflection dimmed by what of them the character hides
+//     (ambient_visibility.h);
 //   - subsurface diffusion with the six-Gaussian skin profile (d'Eon & Luebke), or with
 //     Jensen et al.'s dipole (reference_profile, dipole_diffusion.h), as a 2D convolution
 //     whose kernel is evaluated on the world-space distance between surface points (so it

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "pipeline/bake/ray_scene.h"
@@ -60,6 +61,13 @@ TEST(RayScene, PacketsAnswerAsSingleRays) {
           single += rays.occluded(origin, d, 0.01f, reach) ? 0 : 1;
         ASSERT_EQ(rays.unoccluded(origin, directions, 0.01f, reach), single)
             << "point " << p << ", " << count << " rays, reach " << reach;
+        // Each ray's own answer, as the reference's ambient rays read them.
+        const auto each = std::make_unique<bool[]>(directions.size());
+        rays.unoccluded(origin, directions, 0.01f, reach, {each.get(), directions.size()});
+        for (std::size_t k = 0; k < directions.size(); ++k) {
+          ASSERT_EQ(each[k], !rays.occluded(origin, directions[k], 0.01f, reach))
+              << "point " << p << ", ray " << k << " of " << count << ", reach " << reach;
+        }
         open += single;
         blocked += count - single;
       }
