@@ -58,7 +58,7 @@ struct RunOptions {
 // `--truth`: the frame and the reference judged by the path-traced truth beside the
 // reference's figures (driver/truth_judge.h), for result.json's "truth".
 nlohmann::json judge_with_truth(const driver::Truth& truth, const driver::FrameJobResult& r) {
-  const quality::Mask* skin = r.reference ? &r.reference->skin : nullptr;
+  const image::Mask* skin = r.reference ? &r.reference->skin : nullptr;
   nlohmann::json out = truth.about;
   out["noise_floor"] = driver::truth_noise_floor(truth, skin);
   out["frame"] = driver::judge_against_truth(driver::to_image(r.frame.output.frame), truth, skin);
@@ -260,13 +260,13 @@ int run(const RunOptions& o) {
   json["scene_scale"] = driver::scene_scale_json(gpu_scene.scene());
   if (sequence) json["sequence"] = driver::sequence_json(sequence->sequence, sequence->result);
   if (frame_job.quality) {
-    quality::save_png(frame_job.reference->image, out / driver::kRunReferenceImage);
+    image::save_png(frame_job.reference->image, out / driver::kRunReferenceImage);
     const std::string mask = driver::reference_mask_path(driver::kRunReferenceImage);
-    quality::save_mask_png(frame_job.reference->skin, out / mask);
+    image::save_mask_png(frame_job.reference->skin, out / mask);
     json["reference"] = frame_job.reference_marker;
     print_reference_source(frame_job, job, o.out);
     const driver::FrameQuality& q = *frame_job.quality;
-    quality::save_png(q.error_map, out / "error_flip.png");
+    image::save_png(q.error_map, out / "error_flip.png");
     written.insert(written.end(), {driver::kRunReferenceImage, mask, "error_flip.png"});
     nlohmann::json metrics = nlohmann::json::object();
     for (const auto& [name, value] : q.metrics) metrics[name] = quality::metric_to_json(value);

@@ -6,7 +6,7 @@ namespace skinsim::driver {
 
 namespace {
 
-reports::FrameComparison summarise(const quality::FlipResult& flip, const quality::Mask* mask) {
+reports::FrameComparison summarise(const quality::FlipResult& flip, const image::Mask* mask) {
   const quality::FlipStatistics s = quality::flip_statistics(flip.map, mask);
   reports::FrameComparison c;
   c.flip_mean = s.mean;
@@ -18,14 +18,14 @@ reports::FrameComparison summarise(const quality::FlipResult& flip, const qualit
 
 }  // namespace
 
-reports::FrameComparison compare_frames(const quality::Image& test, const quality::Image& against,
-                                        const quality::Mask* mask) {
+reports::FrameComparison compare_frames(const image::Image& test, const image::Image& against,
+                                        const image::Mask* mask) {
   return summarise(quality::flip(test, against, mask), mask);
 }
 
-reports::FrameComparison compare_frames(const quality::Image& test,
+reports::FrameComparison compare_frames(const image::Image& test,
                                         const quality::FlipFeatures& against,
-                                        const quality::Mask* mask) {
+                                        const image::Mask* mask) {
   return summarise(quality::flip(test, against, mask), mask);
 }
 

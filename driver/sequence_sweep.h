@@ -9,7 +9,7 @@
 #include <string>
 
 #include "driver/sequence_run.h"
-#include "quality/image.h"
+#include "image/image.h"
 #include "reports/sequence_sweep.h"
 
 namespace skinsim::driver {
@@ -23,8 +23,8 @@ int shown_frame(const Sequence& sequence);
 nlohmann::json sequence_fingerprint(const Sequence& sequence);
 
 struct PlayedConfig {
-  FrameResult cost_frame;      // the frame at the p95 rank: counters and timing, no images
-  quality::Image shown_image;  // shown_frame's image
+  FrameResult cost_frame;    // the frame at the p95 rank: counters and timing, no images
+  image::Image shown_image;  // shown_frame's image
   reports::SequenceSummary summary;
   std::string video_note;  // why there is no video, if there is none
 };

@@ -65,10 +65,10 @@ std::vector<reports::SettingChange> setting_changes(
 // A's frame against B's, FLIP over A's reference skin mask where the sweep kept one.
 reports::ImageDiff diff_row_frames(const fs::path& a, const ConfigResult& ra, const fs::path& b,
                                    const ConfigResult& rb, const fs::path& out_dir) {
-  std::optional<quality::Mask> skin;
+  std::optional<image::Mask> skin;
   if (!ra.reference_image.empty()) {
     const fs::path mask = a / reference_mask_path(ra.reference_image);
-    if (fs::exists(mask)) skin = quality::load_mask_png(mask);
+    if (fs::exists(mask)) skin = image::load_mask_png(mask);
   }
   reports::ImageDiff diff = diff_frames(
       a / ra.frame_image, b / rb.frame_image, skin ? &*skin : nullptr,

@@ -23,10 +23,10 @@
 #include "driver/sweep_thumbnails.h"
 #include "gpu_model/device_profile.h"
 #include "gpu_model/profile_loader.h"
+#include "image/image.h"
 #include "io/atomic_file.h"
 #include "io/read_file.h"
 #include "pipeline/frame.h"
-#include "quality/image.h"
 #include "sim/pass_memo.h"
 #include "util/build_identity.h"
 #include "util/fingerprint.h"
@@ -111,7 +111,7 @@ std::string non_finite_figure(const reports::ConfigResult& row) {
 // Measures a rendered configuration and writes its files; the JSON goes last, so a
 // configuration counts as finished only once all its files are in place. Throws SweepError when
 // a figure is not a finite number.
-void finish(const fs::path& dir, const Job& job, const FrameResult& frame, quality::Image image,
+void finish(const fs::path& dir, const Job& job, const FrameResult& frame, image::Image image,
             const std::optional<reports::SequenceSummary>& sequence) {
   const std::string& id = job.config->id;
   FrameQuality measured = evaluate_quality(image, *job.reference);
@@ -147,7 +147,7 @@ struct Finishing {
   Clock::time_point start;  // of its frame
   Clock::time_point done;   // of its files
   FrameResult frame;        // its counters and timing; its render targets are let go
-  quality::Image image;     // its frame, converted
+  image::Image image;       // its frame, converted
   std::optional<reports::SequenceSummary> sequence;  // of a sweep over a sequence
   std::string failure;  // why it could not be measured, if it could not
 };

@@ -5,7 +5,7 @@
 
 #include <filesystem>
 
-#include "quality/image.h"
+#include "image/image.h"
 #include "reports/sweep_table.h"
 
 namespace skinsim::driver {
@@ -23,7 +23,7 @@ void write_thumbnails(const reports::SweepTable& table, const std::filesystem::p
 // PNGs of 2048x1536 decoded after the last configuration, otherwise). Takes the image to
 // round it in place: a frame's copy would be 36 MiB more at the sweep's peak. Returns the PNG's
 // xxh3_fingerprint (util/fingerprint.h), of the bytes written.
-std::string write_image_and_thumbnail(quality::Image image, const std::filesystem::path& sweep_dir,
+std::string write_image_and_thumbnail(image::Image image, const std::filesystem::path& sweep_dir,
                                       const std::string& relative);
 
 }  // namespace skinsim::driver

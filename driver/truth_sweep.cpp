@@ -18,16 +18,16 @@ namespace fs = std::filesystem;
 namespace {
 
 struct RowImages {
-  quality::Image frame;
-  std::optional<quality::Mask> skin;  // the reference's, when it was rendered
-  const quality::Mask* mask() const { return skin && skin->count() > 0 ? &*skin : nullptr; }
+  image::Image frame;
+  std::optional<image::Mask> skin;  // the reference's, when it was rendered
+  const image::Mask* mask() const { return skin && skin->count() > 0 ? &*skin : nullptr; }
 };
 
 RowImages load_row(const reports::ConfigResult& row, const std::string& out_dir) {
   RowImages r;
-  r.frame = quality::load_png(fs::path(out_dir) / row.frame_image);
+  r.frame = image::load_png(fs::path(out_dir) / row.frame_image);
   if (!row.reference_image.empty()) {
-    r.skin = quality::load_mask_png(fs::path(out_dir) / reference_mask_path(row.reference_image));
+    r.skin = image::load_mask_png(fs::path(out_dir) / reference_mask_path(row.reference_image));
   }
   return r;
 }
@@ -80,7 +80,7 @@ nlohmann::json judge_sweep_with_truth(reports::SweepTable& table, const std::str
       // The report shows it beside the frames (sweep_report_truth.h), as they are seen.
       const std::string image = fmt::format("{}/g{}.png", kTruthImageDir, groups.size());
       fs::create_directories(fs::path(out_dir) / kTruthImageDir);
-      quality::save_png(it->second.images.image, fs::path(out_dir) / image);
+      image::save_png(it->second.images.image, fs::path(out_dir) / image);
       groups[row.group] = {{"group", row.group},
                            {"truth", it->second.about},
                            {"image", image},

@@ -10,8 +10,8 @@
 #include <filesystem>
 
 #include "driver/reference_cache.h"
-#include "quality/image.h"
-#include "tests/quality/test_image.h"
+#include "image/image.h"
+#include "tests/image/test_image.h"
 
 namespace skinsim::driver {
 namespace {
@@ -28,18 +28,18 @@ TEST(SweepCrops, WindowsShowTheDifferenceFromTheBestToo) {
   fs::remove_all(dir);
   fs::create_directories(dir / "refs");
   fs::create_directories(dir / "configs");
-  const quality::Image reference = quality::testing::pattern_image(256, 192);
-  quality::save_png(reference, dir / "refs/ref.png");
-  quality::save_mask_png(quality::Mask::filled(256, 192, 255),
-                         dir / reference_mask_path("refs/ref.png"));
+  const image::Image reference = image::testing::pattern_image(256, 192);
+  image::save_png(reference, dir / "refs/ref.png");
+  image::save_mask_png(image::Mask::filled(256, 192, 255),
+                       dir / reference_mask_path("refs/ref.png"));
   reports::SweepTable table;
   for (const char* id : {"chosen", "best"}) {
     reports::ConfigResult r;
     r.id = id;
     r.frame_image = std::string("configs/") + id + ".png";
     r.reference_image = "refs/ref.png";
-    quality::save_png(quality::testing::add_noise(reference, id[0] == 'c' ? 0.3f : 0.05f, id[0]),
-                      dir / r.frame_image);
+    image::save_png(image::testing::add_noise(reference, id[0] == 'c' ? 0.3f : 0.05f, id[0]),
+                    dir / r.frame_image);
     table.rows.push_back(r);
   }
   reports::Recommendation rec;

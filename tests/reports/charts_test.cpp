@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "quality/image.h"
+#include "image/image.h"
 #include "reports/display_check.h"
 #include "reports/error.h"
 #include "reports/sequence_charts.h"
@@ -38,7 +38,7 @@ class ChartsTest : public ::testing::Test {
 // The PNG has the requested size and more than one colour; the SVG is non-empty vector text.
 void expect_real_chart(const ChartFiles& files, const ChartOptions& options) {
   ASSERT_TRUE(fs::exists(files.png)) << files.png;
-  const quality::Image image = quality::load_png(files.png);
+  const image::Image image = image::load_png(files.png);
   EXPECT_EQ(image.width, options.width);
   EXPECT_EQ(image.height, options.height);
   const bool varies = std::any_of(image.rgb.begin(), image.rgb.end(),
