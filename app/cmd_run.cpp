@@ -248,9 +248,9 @@ int run(const RunOptions& o) {
     written.push_back("brdf_lut.png");
   }
 
-  const std::vector<reports::PassCost> passes = driver::pass_costs(result.timing);
+  const std::vector<results::PassCost> passes = driver::pass_costs(result.timing);
   std::vector<std::string> pass_names;
-  for (const reports::PassCost& p : passes) pass_names.push_back(p.name);
+  for (const results::PassCost& p : passes) pass_names.push_back(p.name);
   io::write_file_atomically((out / "timeline.svg").string(),
                             reports::timeline_svg(passes, pass_names));
   written.push_back("timeline.svg");

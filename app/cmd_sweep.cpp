@@ -128,7 +128,7 @@ driver::SweepSpec build_spec(const SweepOptions& o, const CLI::App& cmd) {
 
 // What each knob did, in one sentence per knob and group, then each group's recommendation
 // with its range and runner-up (the report's first two sections).
-void print_recommendations(const reports::SweepTable& table) {
+void print_recommendations(const results::SweepTable& table) {
   const std::string metric = reports::recommend_metric(table.rows);
   std::optional<std::string> group;
   for (const reports::KnobVerdict& v : reports::knob_verdicts(table, metric)) {
@@ -195,8 +195,8 @@ int finish_shard(const driver::SweepShard& shard, const driver::SweepRunSummary&
 // table's quality columns; returns results.json's "truth".
 nlohmann::json judge_with_truth(const SweepOptions& o, const driver::SweepSpec& spec,
                                 const std::vector<driver::SweepConfig>& configs,
-                                const std::string& data_dir, reports::SweepTable& table) {
-  const auto truth_of = [&](const reports::ConfigResult& row, int width, int height) {
+                                const std::string& data_dir, results::SweepTable& table) {
+  const auto truth_of = [&](const results::ConfigResult& row, int width, int height) {
     if (o.truth != driver::kCachedTruth)
       return driver::truth_file("--truth", o.truth, width, height);
     const auto config =
@@ -312,7 +312,7 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
                "configurations\n",
                summary.foreign_ignored, o.out);
   }
-  reports::SweepTable table =
+  results::SweepTable table =
       driver::assemble_sweep_table(spec, configs, summary.fingerprints, o.out);
   std::vector<std::string> written = {"results.json", "results.csv", "configs/"};
   if (summary.cancelled) {

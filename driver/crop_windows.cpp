@@ -123,18 +123,18 @@ image::Image amplified_difference(const image::Image& a, const image::Image& b) 
   return quality::false_colour(d);
 }
 
-std::vector<reports::CropWindow> write_crop_windows(const std::vector<Landmark>& landmarks,
+std::vector<results::CropWindow> write_crop_windows(const std::vector<Landmark>& landmarks,
                                                     const std::vector<NamedMap>& searches,
                                                     const std::vector<NamedImage>& images,
                                                     const fs::path& dir, const std::string& stem,
                                                     const std::vector<std::string>& not_found) {
-  std::vector<reports::CropWindow> windows;
+  std::vector<results::CropWindow> windows;
   if (images.empty()) return windows;
   const image::Image& first = *images.front().second;
   const int size = std::min(kWindow, std::min(first.width, first.height) / 2) / kZoom * kZoom;
   if (size < kZoom) return windows;
   const auto add = [&](const std::string& why, const Window& window, const Window& zoom) {
-    reports::CropWindow crop_window{why,    window.x,  window.y, window.size, zoom.x,
+    results::CropWindow crop_window{why,    window.x,  window.y, window.size, zoom.x,
                                     zoom.y, zoom.size, kZoom,    {},          {}};
     for (std::size_t k = 0; k < images.size(); ++k) {
       const std::string name = fmt::format("{}_w{}_{}", stem, windows.size(), k);
@@ -151,7 +151,7 @@ std::vector<reports::CropWindow> write_crop_windows(const std::vector<Landmark>&
         centred(l.x, l.y, size / kZoom, window.x, window.y, window.x + size, window.y + size));
   }
   for (const std::string& why : not_found) {
-    reports::CropWindow sentence;
+    results::CropWindow sentence;
     sentence.why = why;
     windows.push_back(std::move(sentence));
   }

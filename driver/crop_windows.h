@@ -12,7 +12,7 @@
 
 #include "driver/crop_landmarks.h"
 #include "image/image.h"
-#include "reports/sweep_table.h"
+#include "results/sweep_table.h"
 
 namespace skinsim::driver {
 
@@ -40,7 +40,7 @@ using NamedImage = std::pair<std::string, const image::Image*>;
 // and magnified, written to dir/<stem>_w<window>_<image>.png and _x4.png. The windows' paths
 // are relative to `dir`. After the landmarks' windows, one without images for each sentence of
 // `not_found` (landmarks looked for and not found), so the report says so where they would be.
-std::vector<reports::CropWindow> write_crop_windows(const std::vector<Landmark>& landmarks,
+std::vector<results::CropWindow> write_crop_windows(const std::vector<Landmark>& landmarks,
                                                     const std::vector<NamedMap>& searches,
                                                     const std::vector<NamedImage>& images,
                                                     const std::filesystem::path& dir,

@@ -5,15 +5,15 @@
 
 #include "image/image.h"
 #include "quality/metrics.h"
-#include "reports/sweep_table.h"
+#include "results/sweep_table.h"
 
 namespace skinsim::driver {
 
 // `test` against `against` (same size); `against` is left for the caller to name.
-reports::FrameComparison compare_frames(const image::Image& test, const image::Image& against,
+results::FrameComparison compare_frames(const image::Image& test, const image::Image& against,
                                         const image::Mask* mask);
 // The same against a frame prepared once for many comparisons (identical results).
-reports::FrameComparison compare_frames(const image::Image& test,
+results::FrameComparison compare_frames(const image::Image& test,
                                         const quality::FlipFeatures& against,
                                         const image::Mask* mask);
 

@@ -21,7 +21,7 @@ namespace {
 
 std::vector<SequencePass> merged_passes(const gpu_model::FrameTiming& timing) {
   std::vector<SequencePass> merged;
-  for (const reports::PassCost& p : pass_costs(timing)) {
+  for (const results::PassCost& p : pass_costs(timing)) {
     auto same = std::find_if(merged.begin(), merged.end(),
                              [&p](const SequencePass& m) { return m.name == p.name; });
     if (same == merged.end()) {

@@ -22,19 +22,19 @@
 namespace skinsim::driver {
 
 namespace fs = std::filesystem;
-using reports::ConfigResult;
-using reports::FrameComparison;
+using results::ConfigResult;
+using results::FrameComparison;
 
 namespace {
 
 // Device and resolution, then every swept knob the reference depends on (light, framing).
 std::string group_label(const SweepSpec& spec, const ConfigResult& row) {
-  std::vector<std::string> parts = {reports::knob_value(row, "device"),
-                                    reports::knob_value(row, "resolution")};
+  std::vector<std::string> parts = {results::knob_value(row, "device"),
+                                    results::knob_value(row, "resolution")};
   for (const SweepAxis& axis : spec.axes) {
     if (axis.knob == "device" || axis.knob == "resolution") continue;
     if (!pipeline::find_knob(axis.knob).reference) continue;
-    const std::string value = reports::knob_value(row, axis.knob);
+    const std::string value = results::knob_value(row, axis.knob);
     if (!value.empty()) parts.push_back(axis.knob + " " + value);
   }
   return fmt::format("{}", fmt::join(parts, ", "));
@@ -151,7 +151,7 @@ std::string comparison_cache_path(const std::string& id, const std::string& othe
   return "configs/compare/" + id + "_vs_" + other + ".json";
 }
 
-void add_comparisons(const SweepSpec& spec, reports::SweepTable& table, const fs::path& sweep_dir,
+void add_comparisons(const SweepSpec& spec, results::SweepTable& table, const fs::path& sweep_dir,
                      const std::string& metric) {
   std::vector<ConfigResult>& rows = table.rows;
   std::map<std::string, std::vector<std::size_t>> groups;
@@ -169,7 +169,7 @@ void add_comparisons(const SweepSpec& spec, reports::SweepTable& table, const fs
     if (!best) continue;
     std::map<std::string, std::vector<std::size_t>> by_technique;
     for (const std::size_t i : members) {
-      by_technique[reports::knob_value(rows[i], "technique")].push_back(i);
+      by_technique[results::knob_value(rows[i], "technique")].push_back(i);
     }
     for (const auto& [technique, own] : by_technique) {
       const std::optional<std::size_t> finest = best_of(rows, own, metric);

@@ -13,18 +13,18 @@ namespace skinsim::driver {
 
 namespace fs = std::filesystem;
 
-std::vector<reports::ComparisonPanel> write_comparison_panels(
-    const reports::SweepTable& table, const std::vector<reports::Recommendation>& recommendations,
+std::vector<results::ComparisonPanel> write_comparison_panels(
+    const results::SweepTable& table, const std::vector<reports::Recommendation>& recommendations,
     const fs::path& sweep_dir, bool over_skin,
     const std::map<std::string, std::string>& truth_images) {
-  std::vector<reports::ComparisonPanel> panels;
+  std::vector<results::ComparisonPanel> panels;
   const std::string bar_path = "compare/colour_bar.png";
   fs::create_directories(sweep_dir / "compare");
   for (std::size_t g = 0; g < recommendations.size(); ++g) {
     const reports::Recommendation& rec = recommendations[g];
     if (!rec.chosen || !rec.best) continue;
-    const reports::ConfigResult& chosen = table.rows[*rec.chosen];
-    const reports::ConfigResult& best = table.rows[*rec.best];
+    const results::ConfigResult& chosen = table.rows[*rec.chosen];
+    const results::ConfigResult& best = table.rows[*rec.best];
     if (chosen.frame_image.empty() || chosen.reference_image.empty()) continue;
     const image::Image reference = image::load_png(sweep_dir / chosen.reference_image);
     const image::Image chosen_frame = image::load_png(sweep_dir / chosen.frame_image);
@@ -34,7 +34,7 @@ std::vector<reports::ComparisonPanel> write_comparison_panels(
       skin = image::load_mask_png(sweep_dir / reference_mask_path(chosen.reference_image));
     const image::Mask* mask = skin ? &*skin : nullptr;
 
-    reports::ComparisonPanel panel;
+    results::ComparisonPanel panel;
     panel.group = rec.group;
     panel.chosen = chosen.id;
     panel.best = best.id;

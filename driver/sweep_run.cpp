@@ -98,7 +98,7 @@ Stored stored_state(const fs::path& dir, const Job& job, std::string& damaged) {
 
 // Why a row cannot be stored, or "": a NaN or infinite figure would be written as JSON null,
 // fail to read back, and so be recomputed on every resume without a word.
-std::string non_finite_figure(const reports::ConfigResult& row) {
+std::string non_finite_figure(const results::ConfigResult& row) {
   std::vector<std::pair<std::string, double>> figures = {
       {"frame_ms", row.frame_ms}, {"fps", row.fps}, {"dram_bytes", row.dram_bytes}};
   for (const auto& [name, value] : row.quality) figures.emplace_back("quality." + name, value);
@@ -112,7 +112,7 @@ std::string non_finite_figure(const reports::ConfigResult& row) {
 // configuration counts as finished only once all its files are in place. Throws SweepError when
 // a figure is not a finite number.
 void finish(const fs::path& dir, const Job& job, const FrameResult& frame, image::Image image,
-            const std::optional<reports::SequenceSummary>& sequence) {
+            const std::optional<results::SequenceSummary>& sequence) {
   const std::string& id = job.config->id;
   FrameQuality measured = evaluate_quality(image, *job.reference);
   // Each PNG's deflate stream is encoded by one thread: the two at once, each with its
@@ -133,7 +133,7 @@ void finish(const fs::path& dir, const Job& job, const FrameResult& frame, image
   // config_row reads the metrics; the error map went into its PNG above.
   stored.row = config_row(*job.config, frame, measured, config_frame_path(id),
                           config_error_path(id), job.reference_image);
-  if (sequence) reports::apply_sequence_summary(stored.row, *sequence);
+  if (sequence) results::apply_sequence_summary(stored.row, *sequence);
   if (const std::string bad = non_finite_figure(stored.row); !bad.empty()) throw SweepError(bad);
   stored.heatmap = pass_heatmap(frame, kHeatmapPass, id);
   add_sensitivity(frame, *job.device, stored);
@@ -148,7 +148,7 @@ struct Finishing {
   Clock::time_point done;   // of its files
   FrameResult frame;        // its counters and timing; its render targets are let go
   image::Image image;       // its frame, converted
-  std::optional<reports::SequenceSummary> sequence;  // of a sweep over a sequence
+  std::optional<results::SequenceSummary> sequence;  // of a sweep over a sequence
   std::string failure;  // why it could not be measured, if it could not
 };
 

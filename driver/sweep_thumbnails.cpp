@@ -33,9 +33,9 @@ void write_thumbnail(const image::Image& saved, const fs::path& sweep_dir,
 
 }  // namespace
 
-void write_thumbnails(const reports::SweepTable& table, const fs::path& sweep_dir) {
+void write_thumbnails(const results::SweepTable& table, const fs::path& sweep_dir) {
   std::set<std::string> images;
-  for (const reports::ConfigResult& r : table.rows) {
+  for (const results::ConfigResult& r : table.rows) {
     for (const std::string* image : {&r.reference_image, &r.frame_image, &r.error_image}) {
       if (!image->empty()) images.insert(*image);
     }

@@ -6,7 +6,7 @@
 #include <filesystem>
 
 #include "image/image.h"
-#include "reports/sweep_table.h"
+#include "results/sweep_table.h"
 
 namespace skinsim::driver {
 
@@ -15,7 +15,7 @@ inline constexpr int kThumbnailWidth = 320;  // pixels; the page shows them 160-
 // Writes reports::thumbnail_path(image) for every image the table names that has none yet, or
 // a thumbnail older than the image. Images that do not exist are skipped (the report then has
 // no thumbnail for them and links nothing that is missing).
-void write_thumbnails(const reports::SweepTable& table, const std::filesystem::path& sweep_dir);
+void write_thumbnails(const results::SweepTable& table, const std::filesystem::path& sweep_dir);
 
 // Writes `image` as the PNG `relative` (a path inside sweep_dir), then its thumbnail, made from
 // the pixels in memory instead of the file read back: the thumbnail write_thumbnails would make

@@ -12,6 +12,7 @@ import sys
 LAYERS = [
     "util",
     "io",
+    "results",
     "shading",
     "sim",
     "image",

@@ -127,7 +127,7 @@ TEST(RunCompare, OneKnobNamedWhatMovedAndTheFramesVerdictWithCrops) {
   EXPECT_TRUE(run.image->flip.visible) << run.image->flip.visible_px;  // 256 px, above 30
   EXPECT_EQ(run.image->a_image, "../knob_a/frame.png");
   ASSERT_FALSE(run.image->windows.empty());
-  const reports::CropWindow& w = run.image->windows[0];
+  const results::CropWindow& w = run.image->windows[0];
   EXPECT_TRUE(w.x <= 8 && w.x + w.size >= 24) << w.x;  // the window holds the square
   for (const auto& [what, path] : w.images) EXPECT_TRUE(fs::exists(out / path)) << path;
   EXPECT_TRUE(fs::exists(out / run.image->difference_image));

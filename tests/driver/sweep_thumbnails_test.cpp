@@ -30,7 +30,7 @@ TEST(SweepThumbnails, MadeWithTheImageAsFromItsPng) {
   const std::string from_memory = io::read_regular_file(thumb, "thumbnail");
   const auto written = fs::last_write_time(thumb);
 
-  reports::SweepTable table;
+  results::SweepTable table;
   table.rows.emplace_back();
   table.rows.back().frame_image = image;
   write_thumbnails(table, dir);
