@@ -31,7 +31,6 @@
 #include "io/run_directory.h"
 #include "pipeline/brdf_lut_texture.h"
 #include "pipeline/technique.h"
-#include "quality/json_value.h"
 #include "reports/timeline_svg.h"
 
 namespace skinsim::app {
@@ -255,48 +254,42 @@ int run(const RunOptions& o) {
                             reports::timeline_svg(passes, pass_names));
   written.push_back("timeline.svg");
 
-  nlohmann::json json = driver::frame_result_json(result, o.scene.label());
-  json["device"] = device.name;
-  json["scene_scale"] = driver::scene_scale_json(gpu_scene.scene());
-  if (sequence) json["sequence"] = driver::sequence_json(sequence->sequence, sequence->result);
+  driver::RunRecord record;
+  record.device = device.name;
+  record.scene = &gpu_scene.scene();
+  if (sequence) record.sequence = driver::sequence_json(sequence->sequence, sequence->result);
   if (frame_job.quality) {
     image::save_png(frame_job.reference->image, out / driver::kRunReferenceImage);
     const std::string mask = driver::reference_mask_path(driver::kRunReferenceImage);
     image::save_mask_png(frame_job.reference->skin, out / mask);
-    json["reference"] = frame_job.reference_marker;
+    record.reference = frame_job.reference_marker;
     print_reference_source(frame_job, job, o.out);
     const driver::FrameQuality& q = *frame_job.quality;
     image::save_png(q.error_map, out / "error_flip.png");
     written.insert(written.end(), {driver::kRunReferenceImage, mask, "error_flip.png"});
-    nlohmann::json metrics = nlohmann::json::object();
-    for (const auto& [name, value] : q.metrics) metrics[name] = quality::metric_to_json(value);
+    record.quality = &q;
+    record.no_skin = frame_job.no_skin;
     if (q.has_skin_metrics()) {
       fmt::print("quality vs reference: skin PSNR {:.2f} dB, SSIM {:.4f}, FLIP {:.4f}\n",
                  q.metrics.at("psnr_skin"), q.metrics.at("ssim_skin"), q.metrics.at("flip_skin"));
     } else {  // the frame is still measured; only the skin metrics do not exist
-      metrics["skin_metrics_unavailable"] = frame_job.no_skin;
       fmt::print(
           "quality vs reference: skin metrics not available; frame PSNR {:.2f} dB, SSIM "
           "{:.4f}, FLIP {:.4f}\n",
           q.metrics.at("psnr_frame"), q.metrics.at("ssim_frame"), q.metrics.at("flip_frame"));
     }
-    json["quality"] = metrics;
   }
   if (o.sensitivity) {
     const auto recount = [&](const gpu_model::DeviceProfile& varied) {
       return driver::run_frame(gpu_scene, result.config, varied, o.device.threads).output.passes;
     };
-    const auto rows = gpu_model::sensitivity(result.output.passes, device, recount);
-    json["sensitivity"] = gpu_model::to_json(rows);
-    fmt::print("\n{}", gpu_model::format_sensitivity_table(rows));
+    record.sensitivity = gpu_model::sensitivity(result.output.passes, device, recount);
+    fmt::print("\n{}", gpu_model::format_sensitivity_table(*record.sensitivity));
   }
-  if (truth) json["truth"] = judge_with_truth(*truth, frame_job);
-  json["warnings"] = warnings;
-  // Paths and names come from the user as raw bytes; JSON must be UTF-8, so invalid bytes are
-  // written as U+FFFD rather than throwing after the frame has been rendered.
-  io::write_file_atomically(
-      (out / "result.json").string(),
-      json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+  if (truth) record.truth = judge_with_truth(*truth, frame_job);
+  record.warnings = warnings;
+  const nlohmann::json json = driver::run_result_json(result, o.scene.label(), record);
+  driver::write_result_json(json, out / "result.json");
 
   std::vector<std::string> knobs;
   for (const std::string& knob : pipeline::summary_knobs(result.config)) {
