@@ -31,7 +31,6 @@
 #include "io/run_directory.h"
 #include "pipeline/brdf_lut_texture.h"
 #include "pipeline/technique.h"
-#include "quality/json_value.h"
 #include "reports/timeline_svg.h"
 
 namespace skinsim::app {
@@ -58,7 +57,7 @@ struct RunOptions {
 // `--truth`: the frame and the reference judged by the path-traced truth beside the
 // reference's figures (driver/truth_judge.h), for result.json's "truth".
 nlohmann::json judge_with_truth(const driver::Truth& truth, const driver::FrameJobResult& r) {
-  const quality::Mask* skin = r.reference ? &r.reference->skin : nullptr;
+  const image::Mask* skin = r.reference ? &r.reference->skin : nullptr;
   nlohmann::json out = truth.about;
   out["noise_floor"] = driver::truth_noise_floor(truth, skin);
   out["frame"] = driver::judge_against_truth(driver::to_image(r.frame.output.frame), truth, skin);
@@ -188,14 +187,11 @@ void print_reference_source(const driver::FrameJobResult& r, const driver::Frame
   }
 }
 
-int run(const RunOptions& o) {
-  const gpu_model::DeviceProfile device = load_device(o.device);
-  const pipeline::PipelineConfig config = driver::resolve_config(o.config, device);
-  // Checked before any work, so a bad --out fails fast; swapped in only if the run succeeds.
-  io::RunDirectory run_directory(o.out);
-
-  // Printed as they arise and kept for result.json's "warnings".
-  std::vector<std::string> warnings;
+// The frame's job: the options' scene, knobs and reference; the scene's warnings are printed as
+// they arise and kept for result.json's "warnings".
+driver::FrameJob frame_job_for(const RunOptions& o, const gpu_model::DeviceProfile& device,
+                               const pipeline::PipelineConfig& config,
+                               std::vector<std::string>& warnings) {
   driver::FrameJob job;
   job.device = &device;
   job.config = config;
@@ -208,35 +204,55 @@ int run(const RunOptions& o) {
   job.reference = o.reference;
   job.previous_run = o.out;  // the run this one replaces: its reference may be this one's
   job.reference_store = driver::ReferenceStore::from_environment();
-  // A truth file is read before the frame's work, so a wrong one fails at once.
+  return job;
+}
+
+// A truth file (--truth FILE), read before the frame's work so that a wrong one fails at once;
+// a cached truth is found once the scene is built (cached_truth_for).
+std::optional<driver::Truth> truth_from_file(const RunOptions& o,
+                                             const pipeline::PipelineConfig& config) {
   if (!o.truth.empty()) driver::require_truth("--truth", o.truth);
   driver::require_cached_for_choice(o.truth, o.truth_choice);
-  std::optional<driver::Truth> truth;
-  if (!o.truth.empty() && o.truth != driver::kCachedTruth) {
-    truth = driver::truth_file("--truth", o.truth, config.width, config.height);
-  }
-  const std::filesystem::path& out = run_directory.staging();
-  // One frame, or a sequence whose worst frame stands for it in the single-frame outputs.
+  if (o.truth.empty() || o.truth == driver::kCachedTruth) return std::nullopt;
+  return driver::truth_file("--truth", o.truth, config.width, config.height);
+}
+
+// What the run rendered: one frame, or a sequence whose worst frame stands for it in the
+// single-frame outputs.
+struct Rendered {
   driver::FrameJobResult frame_job;
   std::optional<SequenceRun> sequence;
-  if (o.sequence.empty()) {
-    frame_job = driver::run_frame_job(job);
-  } else {
-    sequence = play_sequence(o, job.scene, config, device, out, warnings);
-  }
-  const driver::FrameResult& result = sequence ? sequence->result.worst : frame_job.frame;
-  const pipeline::GpuScene& gpu_scene = sequence ? *sequence->gpu_scene : *frame_job.gpu_scene;
-  if (o.truth == driver::kCachedTruth) {
-    truth = driver::cached_truth(
-        gpu_scene, config, o.truth_choice, o.device.threads,
-        [](const std::string& note) { fmt::print(stderr, "skinsim run: note: {}\n", note); });
-  }
 
+  const driver::FrameResult& result() const {
+    return sequence ? sequence->result.worst : frame_job.frame;
+  }
+  const pipeline::GpuScene& gpu_scene() const {
+    return sequence ? *sequence->gpu_scene : *frame_job.gpu_scene;
+  }
+};
+
+Rendered render(const RunOptions& o, const driver::FrameJob& job,
+                const pipeline::PipelineConfig& config, const gpu_model::DeviceProfile& device,
+                const std::filesystem::path& out, std::vector<std::string>& warnings) {
+  Rendered r;
+  if (o.sequence.empty()) {
+    r.frame_job = driver::run_frame_job(job);
+  } else {
+    r.sequence = play_sequence(o, job.scene, config, device, out, warnings);
+  }
+  return r;
+}
+
+// frame.png, a sequence's frames, charts and page, the frame's intermediates, the BRDF LUT it
+// read and its timeline; returns the names written, in that order.
+std::vector<std::string> write_frame_files(const Rendered& r, const std::filesystem::path& out) {
+  const driver::FrameResult& result = r.result();
   std::vector<std::string> written = {"frame.png"};
-  if (sequence) {
+  if (r.sequence) {
     written.push_back(std::string(kFramesDir) + "/*.png");
-    written.insert(written.end(), sequence->charts.written.begin(), sequence->charts.written.end());
-    written.insert(written.end(), sequence->page.written.begin(), sequence->page.written.end());
+    written.insert(written.end(), r.sequence->charts.written.begin(),
+                   r.sequence->charts.written.end());
+    written.insert(written.end(), r.sequence->page.written.begin(), r.sequence->page.written.end());
   }
   driver::write_png(result.output.frame, out / "frame.png");
   for (const pipeline::NamedTarget& t : result.output.intermediates) {
@@ -247,57 +263,46 @@ int run(const RunOptions& o) {
     pipeline::BrdfLutTexture::shared(result.config)->write_png((out / "brdf_lut.png").string());
     written.push_back("brdf_lut.png");
   }
-
-  const std::vector<reports::PassCost> passes = driver::pass_costs(result.timing);
+  const std::vector<results::PassCost> passes = driver::pass_costs(result.timing);
   std::vector<std::string> pass_names;
-  for (const reports::PassCost& p : passes) pass_names.push_back(p.name);
+  for (const results::PassCost& p : passes) pass_names.push_back(p.name);
   io::write_file_atomically((out / "timeline.svg").string(),
                             reports::timeline_svg(passes, pass_names));
   written.push_back("timeline.svg");
+  return written;
+}
 
-  nlohmann::json json = driver::frame_result_json(result, o.scene.label());
-  json["device"] = device.name;
-  json["scene_scale"] = driver::scene_scale_json(gpu_scene.scene());
-  if (sequence) json["sequence"] = driver::sequence_json(sequence->sequence, sequence->result);
-  if (frame_job.quality) {
-    quality::save_png(frame_job.reference->image, out / driver::kRunReferenceImage);
-    const std::string mask = driver::reference_mask_path(driver::kRunReferenceImage);
-    quality::save_mask_png(frame_job.reference->skin, out / mask);
-    json["reference"] = frame_job.reference_marker;
-    print_reference_source(frame_job, job, o.out);
-    const driver::FrameQuality& q = *frame_job.quality;
-    quality::save_png(q.error_map, out / "error_flip.png");
-    written.insert(written.end(), {driver::kRunReferenceImage, mask, "error_flip.png"});
-    nlohmann::json metrics = nlohmann::json::object();
-    for (const auto& [name, value] : q.metrics) metrics[name] = quality::metric_to_json(value);
-    if (q.has_skin_metrics()) {
-      fmt::print("quality vs reference: skin PSNR {:.2f} dB, SSIM {:.4f}, FLIP {:.4f}\n",
-                 q.metrics.at("psnr_skin"), q.metrics.at("ssim_skin"), q.metrics.at("flip_skin"));
-    } else {  // the frame is still measured; only the skin metrics do not exist
-      metrics["skin_metrics_unavailable"] = frame_job.no_skin;
-      fmt::print(
-          "quality vs reference: skin metrics not available; frame PSNR {:.2f} dB, SSIM "
-          "{:.4f}, FLIP {:.4f}\n",
-          q.metrics.at("psnr_frame"), q.metrics.at("ssim_frame"), q.metrics.at("flip_frame"));
-    }
-    json["quality"] = metrics;
+// The reference, its skin mask and the FLIP error map, for a frame measured against its
+// reference; the figures go on stdout and into the record.
+void write_quality_files(const driver::FrameJobResult& frame_job, const driver::FrameJob& job,
+                         const RunOptions& o, const std::filesystem::path& out,
+                         driver::RunRecord& record, std::vector<std::string>& written) {
+  image::save_png(frame_job.reference->image, out / driver::kRunReferenceImage);
+  const std::string mask = driver::reference_mask_path(driver::kRunReferenceImage);
+  image::save_mask_png(frame_job.reference->skin, out / mask);
+  record.reference = frame_job.reference_marker;
+  print_reference_source(frame_job, job, o.out);
+  const driver::FrameQuality& q = *frame_job.quality;
+  image::save_png(q.error_map, out / "error_flip.png");
+  written.insert(written.end(), {driver::kRunReferenceImage, mask, "error_flip.png"});
+  record.quality = &q;
+  record.no_skin = frame_job.no_skin;
+  if (q.has_skin_metrics()) {
+    fmt::print("quality vs reference: skin PSNR {:.2f} dB, SSIM {:.4f}, FLIP {:.4f}\n",
+               q.metrics.at("psnr_skin"), q.metrics.at("ssim_skin"), q.metrics.at("flip_skin"));
+  } else {  // the frame is still measured; only the skin metrics do not exist
+    fmt::print(
+        "quality vs reference: skin metrics not available; frame PSNR {:.2f} dB, SSIM "
+        "{:.4f}, FLIP {:.4f}\n",
+        q.metrics.at("psnr_frame"), q.metrics.at("ssim_frame"), q.metrics.at("flip_frame"));
   }
-  if (o.sensitivity) {
-    const auto recount = [&](const gpu_model::DeviceProfile& varied) {
-      return driver::run_frame(gpu_scene, result.config, varied, o.device.threads).output.passes;
-    };
-    const auto rows = gpu_model::sensitivity(result.output.passes, device, recount);
-    json["sensitivity"] = gpu_model::to_json(rows);
-    fmt::print("\n{}", gpu_model::format_sensitivity_table(rows));
-  }
-  if (truth) json["truth"] = judge_with_truth(*truth, frame_job);
-  json["warnings"] = warnings;
-  // Paths and names come from the user as raw bytes; JSON must be UTF-8, so invalid bytes are
-  // written as U+FFFD rather than throwing after the frame has been rendered.
-  io::write_file_atomically(
-      (out / "result.json").string(),
-      json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+}
 
+// The run's line, the scene's scale, the frame's cost table and its range over the profile's
+// uncertain figures.
+void print_frame_summary(const RunOptions& o, const gpu_model::DeviceProfile& device,
+                         const pipeline::PipelineConfig& config, const driver::FrameResult& result,
+                         const nlohmann::json& json) {
   std::vector<std::string> knobs;
   for (const std::string& knob : pipeline::summary_knobs(result.config)) {
     if (!pipeline::knob_applies(result.config, knob)) continue;
@@ -320,10 +325,48 @@ int run(const RunOptions& o) {
                                result.range.left_out)
                  : "");
   fmt::print("{}", gpu_model::frame_table_legend());
+}
+
+int run(const RunOptions& o) {
+  const gpu_model::DeviceProfile device = load_device(o.device);
+  const pipeline::PipelineConfig config = driver::resolve_config(o.config, device);
+  // Checked before any work, so a bad --out fails fast; swapped in only if the run succeeds.
+  io::RunDirectory run_directory(o.out);
+  const std::filesystem::path& out = run_directory.staging();
+
+  driver::RunRecord record;
+  const driver::FrameJob job = frame_job_for(o, device, config, record.warnings);
+  std::optional<driver::Truth> truth = truth_from_file(o, config);
+  const Rendered r = render(o, job, config, device, out, record.warnings);
+  const driver::FrameResult& result = r.result();
+  if (o.truth == driver::kCachedTruth) {
+    truth = driver::cached_truth(
+        r.gpu_scene(), config, o.truth_choice, o.device.threads,
+        [](const std::string& note) { fmt::print(stderr, "skinsim run: note: {}\n", note); });
+  }
+
+  std::vector<std::string> written = write_frame_files(r, out);
+  record.device = device.name;
+  record.scene = &r.gpu_scene().scene();
+  if (r.sequence) record.sequence = driver::sequence_json(r.sequence->sequence, r.sequence->result);
+  if (r.frame_job.quality) write_quality_files(r.frame_job, job, o, out, record, written);
+  if (o.sensitivity) {
+    const auto recount = [&](const gpu_model::DeviceProfile& varied) {
+      return driver::run_frame(r.gpu_scene(), result.config, varied, o.device.threads)
+          .output.passes;
+    };
+    record.sensitivity = gpu_model::sensitivity(result.output.passes, device, recount);
+    fmt::print("\n{}", gpu_model::format_sensitivity_table(*record.sensitivity));
+  }
+  if (truth) record.truth = judge_with_truth(*truth, r.frame_job);
+  const nlohmann::json json = driver::run_result_json(result, o.scene.label(), record);
+  driver::write_result_json(json, out / "result.json");
+
+  print_frame_summary(o, device, config, result, json);
   written.push_back("result.json");
   run_directory.commit();
   fmt::print("wrote {}/{{{}}}\n", o.out, fmt::join(written, ", "));
-  if (sequence && sequence->charts.display_attempt_pending) {
+  if (r.sequence && r.sequence->charts.display_attempt_pending) {
     // Every file is written and closed; only the exit handlers are skipped, which would tear
     // down libX11 under the attempt still waiting for the display (display_check.h).
     std::fflush(nullptr);

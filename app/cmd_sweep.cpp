@@ -129,7 +129,7 @@ driver::SweepSpec build_spec(const SweepOptions& o, const CLI::App& cmd) {
 
 // What each knob did, in one sentence per knob and group, then each group's recommendation
 // with its range and runner-up (the report's first two sections).
-void print_recommendations(const reports::SweepTable& table) {
+void print_recommendations(const results::SweepTable& table) {
   const std::string metric = reports::recommend_metric(table.rows);
   std::optional<std::string> group;
   for (const reports::KnobVerdict& v : reports::knob_verdicts(table, metric)) {
@@ -196,8 +196,8 @@ int finish_shard(const driver::SweepShard& shard, const driver::SweepRunSummary&
 // table's quality columns; returns results.json's "truth".
 nlohmann::json judge_with_truth(const SweepOptions& o, const driver::SweepSpec& spec,
                                 const std::vector<driver::SweepConfig>& configs,
-                                const std::string& data_dir, reports::SweepTable& table) {
-  const auto truth_of = [&](const reports::ConfigResult& row, int width, int height) {
+                                const std::string& data_dir, results::SweepTable& table) {
+  const auto truth_of = [&](const results::ConfigResult& row, int width, int height) {
     if (o.truth != driver::kCachedTruth)
       return driver::truth_file("--truth", o.truth, width, height);
     const auto config =
@@ -223,19 +223,34 @@ void add_truth_to_results(const std::string& out, const nlohmann::json& truth) {
   io::write_file_atomically(path.string(), results.dump(2) + "\n");
 }
 
-int run(const SweepOptions& o, const CLI::App& cmd) {
+// What the sweep is, checked before any work or directory: its spec, its configurations and
+// the sequence each plays (none for single frames).
+struct SweepPlan {
+  driver::SweepSpec spec;
+  std::vector<driver::SweepConfig> configs;
+  std::optional<driver::Sequence> sequence;
+};
+
+SweepPlan plan_sweep(const SweepOptions& o, const CLI::App& cmd) {
   require_out_dir(o.out);
   if (!o.truth.empty()) driver::require_truth("--truth", o.truth);  // before hours of sweep
   driver::require_cached_for_choice(o.truth, o.truth_choice);
-  const driver::SweepSpec spec = build_spec(o, cmd);
-  const std::vector<driver::SweepConfig> configs = driver::expand_sweep(spec, o.max_configs);
-  std::optional<driver::Sequence> sequence;
+  SweepPlan plan;
+  plan.spec = build_spec(o, cmd);
+  plan.configs = driver::expand_sweep(plan.spec, o.max_configs);
   if (!o.sequence.empty()) {
-    sequence = driver::load_sequence(o.sequence, o.frames, o.fps);
-    driver::attach_animation(*sequence, spec.scene);
-    for (const driver::SweepConfig& c : configs) driver::check_sequence(*sequence, c.config);
+    plan.sequence = driver::load_sequence(o.sequence, o.frames, o.fps);
+    driver::attach_animation(*plan.sequence, plan.spec.scene);
+    for (const driver::SweepConfig& c : plan.configs) {
+      driver::check_sequence(*plan.sequence, c.config);
+    }
   }
+  return plan;
+}
 
+// How the driver runs it: where, with what, and which shard of it.
+driver::SweepRunOptions run_options_for(const SweepOptions& o, const CLI::App& cmd,
+                                        const SweepPlan& plan) {
   driver::SweepRunOptions run_options;
   run_options.out_dir = o.out;
   run_options.data_dir = o.data_dir.empty() ? default_data_dir() : o.data_dir;
@@ -243,7 +258,7 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
   run_options.cancel = &g_cancel;
   run_options.compute = !o.merge;
   run_options.reference_store = driver::ReferenceStore::from_environment();
-  run_options.sequence = sequence ? &*sequence : nullptr;
+  run_options.sequence = plan.sequence ? &*plan.sequence : nullptr;
   // Given, even empty: `--shard ""` (an unset $K in a script) must not run the whole sweep.
   if (cmd.get_option("--shard")->count()) {
     run_options.shard = driver::parse_shard(o.shard, "--shard");
@@ -252,6 +267,13 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
     throw driver::SweepError(
         fmt::format("--merge: {} is not a sweep directory (run the shards into it first)", o.out));
   }
+  return run_options;
+}
+
+// The configurations computed (or resumed) into the claimed directory, interruptible by
+// SIGINT/SIGTERM.
+driver::SweepRunSummary compute_configurations(const SweepOptions& o, const SweepPlan& plan,
+                                               const driver::SweepRunOptions& run_options) {
   // Checked again now that the spec is valid, and only now created: a sweep writes into its
   // directory in place (resuming), so it must be this kind's, never a run's or a user's.
   io::claim_output_directory(o.out, "sweep");
@@ -261,14 +283,19 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
   g_cancel.store(false);
   std::signal(SIGINT, on_interrupt);
   std::signal(SIGTERM, on_interrupt);
-  const driver::SweepRunSummary summary = driver::run_sweep(spec, configs, run_options);
+  driver::SweepRunSummary summary = driver::run_sweep(plan.spec, plan.configs, run_options);
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);
   // The configurations' scenes, references, frames and pass memo are freed, but glibc keeps
   // their pages in its arenas, where the report's work on other threads does not reuse them:
   // its comparisons, panels and charts would add their own on top. Hand them back first.
   malloc_trim(0);
-  if (run_options.shard) return finish_shard(*run_options.shard, summary, o.out);
+  return summary;
+}
+
+// What the configurations' run did: missing, computed, resumed, failed, replaced.
+void print_sweep_summary(const SweepOptions& o, const SweepPlan& plan,
+                         const driver::SweepRunSummary& summary) {
   if (!summary.left_by_shards.empty()) {
     fmt::print(stderr, "skinsim sweep: {} configurations {}:\n", summary.left_by_shards.size(),
                o.merge ? "are missing" : "have no result yet; computing them here");
@@ -276,17 +303,16 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
       fmt::print(stderr, "  {}{}\n", m.id, m.reason.empty() ? "" : ": " + m.reason);
     }
   }
-
   std::size_t combinations = 1;  // saturating: a folded sweep's product can exceed 2^64
-  for (const driver::SweepAxis& axis : spec.axes) {
+  for (const driver::SweepAxis& axis : plan.spec.axes) {
     if (__builtin_mul_overflow(combinations, axis.values.size(), &combinations)) {
       combinations = SIZE_MAX;
     }
   }
-  const std::size_t skipped = combinations - configs.size();
+  const std::size_t skipped = combinations - plan.configs.size();
   fmt::print(
       "skinsim sweep: {} configurations on {}: {} computed, {} resumed{}{}{} in {:.1f} s{}\n",
-      summary.total, spec.scene.label(), summary.computed.size(), summary.resumed,
+      summary.total, plan.spec.scene.label(), summary.computed.size(), summary.resumed,
       summary.failed.empty() ? "" : fmt::format(", {} failed", summary.failed.size()),
       summary.not_run ? fmt::format(", {} not run", summary.not_run) : "",
       o.merge && !summary.left_by_shards.empty()
@@ -310,8 +336,32 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
                "configurations\n",
                summary.foreign_ignored, o.out);
   }
-  reports::SweepTable table =
-      driver::assemble_sweep_table(spec, configs, summary.fingerprints, o.out);
+}
+
+// 0, or 1 when a configuration failed, a merge lacks some, or required charts were not drawn.
+int sweep_exit_code(const SweepOptions& o, const driver::SweepRunSummary& summary,
+                    const results::SweepTable& table, const driver::SweepReportOutcome& report) {
+  if (!summary.failed.empty()) {
+    fmt::print(stderr, "skinsim sweep: {} of {} configurations failed (reasons above)\n",
+               summary.failed.size(), summary.total);
+    return 1;
+  }
+  if (o.merge && !summary.left_by_shards.empty()) {
+    fmt::print(stderr,
+               "skinsim sweep: the report shows {} of {} configurations; re-run the shards "
+               "named above (they resume), then --merge again\n",
+               table.rows.size(), summary.total);
+    return 1;
+  }
+  return o.charts && o.require_charts && !report.charts_drawn ? 1 : 0;
+}
+
+// results.json, results.csv, the truth's verdicts and report.html from the finished
+// configurations, and the recommendations on stdout.
+int write_tables_and_report(const SweepOptions& o, const SweepPlan& plan,
+                            const driver::SweepRunSummary& summary, const std::string& data_dir) {
+  results::SweepTable table =
+      driver::assemble_sweep_table(plan.spec, plan.configs, summary.fingerprints, o.out);
   std::vector<std::string> written = {"results.json", "results.csv", "configs/"};
   if (summary.cancelled) {
     driver::finish_sweep_data(table, o.out);
@@ -322,11 +372,8 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
         table.rows.size(), summary.total, o.out, fmt::join(written, ", "));
     return interrupted_exit();
   }
-
   nlohmann::json truth;
-  if (!o.truth.empty()) {
-    truth = judge_with_truth(o, spec, configs, run_options.data_dir, table);
-  }
+  if (!o.truth.empty()) truth = judge_with_truth(o, plan.spec, plan.configs, data_dir, table);
   const driver::ReportTruth report_truth{driver::truth_report_section(table, truth),
                                          driver::truth_report_images(truth)};
   const driver::SweepReportOutcome report =
@@ -335,7 +382,7 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
     written.push_back(report.charts_drawn ? "report.html + charts" : "report.html (no charts)");
   }
   if (!report.note.empty()) fmt::print(stderr, "skinsim sweep: note: {}\n", report.note);
-  if (sequence)
+  if (plan.sequence)
     fmt::print("recommendations hold each configuration's p95 frame time to the budget\n");
   print_recommendations(table);
   if (!truth.is_null()) {
@@ -343,20 +390,7 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
     for (const std::string& line : driver::truth_sweep_lines(truth)) fmt::print("{}\n", line);
   }
   fmt::print("wrote {}/{{{}}}\n", o.out, fmt::join(written, ", "));
-  int code = 0;
-  if (!summary.failed.empty()) {
-    fmt::print(stderr, "skinsim sweep: {} of {} configurations failed (reasons above)\n",
-               summary.failed.size(), summary.total);
-    code = 1;
-  } else if (o.merge && !summary.left_by_shards.empty()) {
-    fmt::print(stderr,
-               "skinsim sweep: the report shows {} of {} configurations; re-run the shards "
-               "named above (they resume), then --merge again\n",
-               table.rows.size(), summary.total);
-    code = 1;
-  } else if (o.charts && o.require_charts && !report.charts_drawn) {
-    code = 1;
-  }
+  const int code = sweep_exit_code(o, summary, table, report);
   if (report.display_attempt_pending) {
     // Every file is written and closed; only the exit handlers are skipped, which would tear
     // down libX11 under the attempt still waiting for the display (display_check.h).
@@ -364,6 +398,15 @@ int run(const SweepOptions& o, const CLI::App& cmd) {
     std::_Exit(code);
   }
   return code;
+}
+
+int run(const SweepOptions& o, const CLI::App& cmd) {
+  const SweepPlan plan = plan_sweep(o, cmd);
+  const driver::SweepRunOptions run_options = run_options_for(o, cmd, plan);
+  const driver::SweepRunSummary summary = compute_configurations(o, plan, run_options);
+  if (run_options.shard) return finish_shard(*run_options.shard, summary, o.out);
+  print_sweep_summary(o, plan, summary);
+  return write_tables_and_report(o, plan, summary, run_options.data_dir);
 }
 
 void axis_option(CLI::App& cmd, SweepOptions& o, const std::string& flag, const std::string& knob,

@@ -39,8 +39,8 @@ struct TruthOptions {
 
 // What --compare reads from a `skinsim run` directory.
 struct RunImages {
-  quality::Image frame, reference;
-  quality::Mask skin;
+  image::Image frame, reference;
+  image::Mask skin;
 };
 
 RunImages load_run(const std::filesystem::path& dir, int width, int height) {
@@ -50,9 +50,9 @@ RunImages load_run(const std::filesystem::path& dir, int width, int height) {
     throw UserError("--compare " + dir.string() + ": no " + reference.filename().string() +
                     " (a `skinsim run` directory with its reference)");
   }
-  r.frame = quality::load_png(dir / "frame.png");
-  r.reference = quality::load_png(reference);
-  r.skin = quality::load_mask_png(driver::reference_mask_path(reference.string()));
+  r.frame = image::load_png(dir / "frame.png");
+  r.reference = image::load_png(reference);
+  r.skin = image::load_mask_png(driver::reference_mask_path(reference.string()));
   if (r.frame.width != width || r.frame.height != height) {
     throw UserError(fmt::format(
         "--compare {}: the run is {}x{}, the truth {}x{} (give truth the run's --resolution)",
@@ -115,16 +115,16 @@ int run_truth(const TruthOptions& o) {
       {"samples", o.settings.samples},
       {"seed", o.seed}};
   result["seconds"] = driver::render_truth(render, out / "scene", o.seed, out / "truth.exr", log);
-  const quality::Image truth =
+  const image::Image truth =
       driver::display_image(driver::read_linear_image(out / "truth.exr", log));
-  quality::save_png(truth, out / "truth.png");
+  image::save_png(truth, out / "truth.png");
 
-  const quality::Mask* skin = run ? &run->skin : nullptr;
+  const image::Mask* skin = run ? &run->skin : nullptr;
   if (o.noise_floor) {
     const int seed2 = o.seed + 1;
     const std::string name = fmt::format("truth_seed{}.exr", seed2);
     driver::render_truth(render, out / "scene", seed2, out / name, log);
-    const quality::Image other = driver::display_image(driver::read_linear_image(out / name, log));
+    const image::Image other = driver::display_image(driver::read_linear_image(out / name, log));
     result["noise_floor"] = driver::truth_metrics(other, truth, skin);
     result["noise_floor"]["seed"] = seed2;
     // Two truths differ by twice one truth's noise variance, so an image without noise that

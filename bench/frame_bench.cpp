@@ -15,9 +15,9 @@
 #include "driver/scene_source.h"
 #include "driver/sweep_thumbnails.h"
 #include "gpu_model/profile_loader.h"
+#include "image/image.h"
 #include "pipeline/bake/brdf_lut.h"
 #include "pipeline/reference/reference.h"
-#include "quality/image.h"
 #include "quality/metrics.h"
 
 namespace {
@@ -102,8 +102,8 @@ BENCHMARK(BM_FlipAgainstPrepared)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)
 // finish): PSNR, SSIM and FLIP against the reference, prepared once; the frame's and its FLIP
 // map's PNGs with their thumbnails; and, after the sweep, each frame decoded again for its
 // comparison with its group's best.
-const quality::Image& scale_eighth_frame() {
-  static const quality::Image frame = [] {
+const image::Image& scale_eighth_frame() {
+  static const image::Image frame = [] {
     Fixture& f = fixture();
     pipeline::PipelineConfig config = f.config;
     config.mobile.scale = 0.125f;
@@ -124,7 +124,7 @@ const driver::ReferenceImages& prepared_reference() {
 }
 
 void BM_FrameQuality(benchmark::State& state) {
-  const quality::Image& frame = scale_eighth_frame();
+  const image::Image& frame = scale_eighth_frame();
   const driver::ReferenceImages& reference = prepared_reference();
   tbb::task_arena arena(static_cast<int>(state.range(0)));
   for (auto _ : state) {
@@ -143,7 +143,7 @@ std::filesystem::path bench_directory() {
 }
 
 void BM_FramePngAndThumbnail(benchmark::State& state) {
-  const quality::Image& frame = scale_eighth_frame();
+  const image::Image& frame = scale_eighth_frame();
   tbb::task_arena arena(1);
   for (auto _ : state) {
     arena.execute(
@@ -154,10 +154,10 @@ BENCHMARK(BM_FramePngAndThumbnail)->Unit(benchmark::kMillisecond)->UseRealTime()
 
 void BM_FramePngDecode(benchmark::State& state) {
   const std::filesystem::path png = bench_directory() / "decoded.png";
-  quality::save_png(scale_eighth_frame(), png);
+  image::save_png(scale_eighth_frame(), png);
   tbb::task_arena arena(1);
   for (auto _ : state) {
-    arena.execute([&] { benchmark::DoNotOptimize(quality::load_png(png).rgb.data()); });
+    arena.execute([&] { benchmark::DoNotOptimize(image::load_png(png).rgb.data()); });
   }
 }
 BENCHMARK(BM_FramePngDecode)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -16,7 +16,7 @@ struct Box {
   int x0, y0, x1, y1;  // inclusive
 };
 
-std::optional<Box> skin_box(const quality::Mask& skin) {
+std::optional<Box> skin_box(const image::Mask& skin) {
   std::optional<Box> box;
   for (int y = 0; y < skin.height; ++y) {
     for (int x = 0; x < skin.width; ++x) {
@@ -33,7 +33,7 @@ std::optional<Box> skin_box(const quality::Mask& skin) {
 // Labels 4-connected regions of non-skin pixels; returns the centroid of the largest one that
 // does not touch the frame border (a hole in the skin: an eye, or an open mouth), if it covers
 // at least 1/2000 of the skin's box.
-std::optional<Landmark> eye(const quality::Mask& skin, const Box& box) {
+std::optional<Landmark> eye(const image::Mask& skin, const Box& box) {
   const int w = skin.width, h = skin.height;
   std::vector<std::int32_t> label(static_cast<std::size_t>(w) * h, -1);
   std::vector<int> stack;
@@ -76,7 +76,7 @@ std::optional<Landmark> eye(const quality::Mask& skin, const Box& box) {
 // Skin pixels whose (2r+1)^2 neighbourhood is all skin, from a summed-area table of the mask.
 class InteriorTest {
  public:
-  InteriorTest(const quality::Mask& skin, int r) : w_(skin.width), h_(skin.height), r_(r) {
+  InteriorTest(const image::Mask& skin, int r) : w_(skin.width), h_(skin.height), r_(r) {
     sat_.assign(static_cast<std::size_t>(w_ + 1) * (h_ + 1), 0);
     for (int y = 0; y < h_; ++y) {
       for (int x = 0; x < w_; ++x) {
@@ -113,7 +113,7 @@ float redness(const glm::vec3& c) {
 // across: lips are the most saturated red on a face; on skin of one colour, the mouth's crease
 // reddened by diffusion. Only when it is redder than the region's median skin by kLipRedness:
 // a face lit without any red shows none.
-std::optional<Landmark> lips(const quality::Image& ref, const Box& box, const InteriorTest& in,
+std::optional<Landmark> lips(const image::Image& ref, const Box& box, const InteriorTest& in,
                              std::vector<std::string>& not_found) {
   std::optional<Landmark> best;
   float best_red = 0.0f;
@@ -148,8 +148,8 @@ std::optional<Landmark> lips(const quality::Image& ref, const Box& box, const In
 
 // The largest luminance step across interior skin, measured between pixels `step` apart in x
 // and in y: the key light's terminator or a cast shadow's edge.
-std::optional<Landmark> shadow_edge(const quality::Image& ref, const Box& box,
-                                    const InteriorTest& in, int step) {
+std::optional<Landmark> shadow_edge(const image::Image& ref, const Box& box, const InteriorTest& in,
+                                    int step) {
   std::optional<Landmark> best;
   float best_step = 0.0f;
   for (int y = box.y0 + step; y <= box.y1 - step; ++y) {
@@ -169,7 +169,7 @@ std::optional<Landmark> shadow_edge(const quality::Image& ref, const Box& box,
 
 // The skin's left edge at the height of the box's middle: where the rim light and the
 // silhouette's aliasing show.
-std::optional<Landmark> silhouette(const quality::Mask& skin, const Box& box) {
+std::optional<Landmark> silhouette(const image::Mask& skin, const Box& box) {
   const int y = (box.y0 + box.y1) / 2;
   for (int x = 0; x < skin.width; ++x) {
     if (skin.values[static_cast<std::size_t>(y) * skin.width + x]) {
@@ -181,7 +181,7 @@ std::optional<Landmark> silhouette(const quality::Mask& skin, const Box& box) {
 
 }  // namespace
 
-std::vector<Landmark> find_landmarks(const quality::Image& reference, const quality::Mask& skin,
+std::vector<Landmark> find_landmarks(const image::Image& reference, const image::Mask& skin,
                                      std::vector<std::string>* not_found) {
   std::vector<Landmark> out;
   std::vector<std::string> missing;

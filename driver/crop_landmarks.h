@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "quality/image.h"
+#include "image/image.h"
 
 namespace skinsim::driver {
 
@@ -26,7 +26,7 @@ inline constexpr float kLipRedness = 0.05f;
 // show it (e.g. a scan whose eyes are skin-material has no hole in the mask); `not_found`
 // (if given) receives a sentence for the lips when they were looked for and not found.
 // Deterministic: ties go to the first pixel in row order.
-std::vector<Landmark> find_landmarks(const quality::Image& reference, const quality::Mask& skin,
+std::vector<Landmark> find_landmarks(const image::Image& reference, const image::Mask& skin,
                                      std::vector<std::string>* not_found = nullptr);
 
 }  // namespace skinsim::driver

@@ -27,7 +27,7 @@ bool overlaps(const Window& a, const Window& b) {
 
 // The size x size window with the largest error sum (a summed-area table), not overlapping
 // `avoid`; ties go to the first in row order, so the choice is deterministic.
-std::optional<Window> worst_window(const quality::ScalarMap& error, int size,
+std::optional<Window> worst_window(const image::ScalarMap& error, int size,
                                    const std::optional<Window>& avoid) {
   const int w = error.width, h = error.height;
   std::vector<double> sat(static_cast<std::size_t>(w + 1) * (h + 1), 0.0);
@@ -57,7 +57,7 @@ std::optional<Window> worst_window(const quality::ScalarMap& error, int size,
 }
 
 // The magnified window: size/zoom around the window's largest error, inside the window.
-Window zoom_window(const quality::ScalarMap& error, const Window& window) {
+Window zoom_window(const image::ScalarMap& error, const Window& window) {
   int px = window.x, py = window.y;
   float largest = -1.0f;
   for (int y = window.y; y < window.y + window.size; ++y) {
@@ -80,8 +80,8 @@ Window centred(int x, int y, int size, int x0, int y0, int x1, int y1) {
   return {std::clamp(x - size / 2, x0, x1 - size), std::clamp(y - size / 2, y0, y1 - size), size};
 }
 
-quality::Image crop(const quality::Image& image, const Window& w, int magnify) {
-  quality::Image out;
+image::Image crop(const image::Image& image, const Window& w, int magnify) {
+  image::Image out;
   out.width = out.height = w.size * magnify;
   out.rgb.resize(out.pixel_count());
   for (int y = 0; y < out.height; ++y) {
@@ -94,18 +94,18 @@ quality::Image crop(const quality::Image& image, const Window& w, int magnify) {
 }  // namespace
 
 void write_colour_bar(const fs::path& path) {
-  quality::Image bar = quality::Image::filled(256, 16, glm::vec3(0.0f));
+  image::Image bar = image::Image::filled(256, 16, glm::vec3(0.0f));
   for (int y = 0; y < bar.height; ++y) {
     for (int x = 0; x < bar.width; ++x) {
       bar.at(x, y) = quality::color_map(quality::ColorMap::kMagma, x / 255.0f);
     }
   }
-  quality::save_png(bar, path);
+  image::save_png(bar, path);
 }
 
-quality::ScalarMap flip_error_map(const quality::Image& test, const quality::Image& against,
-                                  const quality::Mask* mask) {
-  quality::ScalarMap map = quality::flip(test, against).map;
+image::ScalarMap flip_error_map(const image::Image& test, const image::Image& against,
+                                const image::Mask* mask) {
+  image::ScalarMap map = quality::flip(test, against).map;
   if (mask) {  // windows are looked for where the metric looks: on skin
     for (std::size_t i = 0; i < map.values.size(); ++i) {
       if (mask->values[i] == 0) map.values[i] = 0.0f;
@@ -114,8 +114,8 @@ quality::ScalarMap flip_error_map(const quality::Image& test, const quality::Ima
   return map;
 }
 
-quality::Image amplified_difference(const quality::Image& a, const quality::Image& b) {
-  quality::ScalarMap d{a.width, a.height, std::vector<float>(a.pixel_count())};
+image::Image amplified_difference(const image::Image& a, const image::Image& b) {
+  image::ScalarMap d{a.width, a.height, std::vector<float>(a.pixel_count())};
   for (std::size_t i = 0; i < d.values.size(); ++i) {
     const glm::vec3 diff = glm::abs(a.rgb[i] - b.rgb[i]);
     d.values[i] = static_cast<float>((diff.r + diff.g + diff.b) / 3.0 * kDifferenceGain);
@@ -123,23 +123,23 @@ quality::Image amplified_difference(const quality::Image& a, const quality::Imag
   return quality::false_colour(d);
 }
 
-std::vector<reports::CropWindow> write_crop_windows(const std::vector<Landmark>& landmarks,
+std::vector<results::CropWindow> write_crop_windows(const std::vector<Landmark>& landmarks,
                                                     const std::vector<NamedMap>& searches,
                                                     const std::vector<NamedImage>& images,
                                                     const fs::path& dir, const std::string& stem,
                                                     const std::vector<std::string>& not_found) {
-  std::vector<reports::CropWindow> windows;
+  std::vector<results::CropWindow> windows;
   if (images.empty()) return windows;
-  const quality::Image& first = *images.front().second;
+  const image::Image& first = *images.front().second;
   const int size = std::min(kWindow, std::min(first.width, first.height) / 2) / kZoom * kZoom;
   if (size < kZoom) return windows;
   const auto add = [&](const std::string& why, const Window& window, const Window& zoom) {
-    reports::CropWindow crop_window{why,    window.x,  window.y, window.size, zoom.x,
+    results::CropWindow crop_window{why,    window.x,  window.y, window.size, zoom.x,
                                     zoom.y, zoom.size, kZoom,    {},          {}};
     for (std::size_t k = 0; k < images.size(); ++k) {
       const std::string name = fmt::format("{}_w{}_{}", stem, windows.size(), k);
-      quality::save_png(crop(*images[k].second, window, 1), dir / (name + ".png"));
-      quality::save_png(crop(*images[k].second, zoom, kZoom), dir / (name + "_x4.png"));
+      image::save_png(crop(*images[k].second, window, 1), dir / (name + ".png"));
+      image::save_png(crop(*images[k].second, zoom, kZoom), dir / (name + "_x4.png"));
       crop_window.images.emplace_back(images[k].first, name + ".png");
       crop_window.zoomed.emplace_back(images[k].first, name + "_x4.png");
     }
@@ -151,7 +151,7 @@ std::vector<reports::CropWindow> write_crop_windows(const std::vector<Landmark>&
         centred(l.x, l.y, size / kZoom, window.x, window.y, window.x + size, window.y + size));
   }
   for (const std::string& why : not_found) {
-    reports::CropWindow sentence;
+    results::CropWindow sentence;
     sentence.why = why;
     windows.push_back(std::move(sentence));
   }

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "driver/crop_landmarks.h"
-#include "quality/image.h"
-#include "reports/sweep_table.h"
+#include "image/image.h"
+#include "results/sweep_table.h"
 
 namespace skinsim::driver {
 
@@ -22,25 +22,25 @@ namespace skinsim::driver {
 inline constexpr double kDifferenceGain = 8.0;
 
 // FLIP error of `test` against `against`, zero outside `mask` (if any): where to look.
-quality::ScalarMap flip_error_map(const quality::Image& test, const quality::Image& against,
-                                  const quality::Mask* mask);
+image::ScalarMap flip_error_map(const image::Image& test, const image::Image& against,
+                                const image::Mask* mask);
 
 // |a - b| x kDifferenceGain on the magma scale.
-quality::Image amplified_difference(const quality::Image& a, const quality::Image& b);
+image::Image amplified_difference(const image::Image& a, const image::Image& b);
 
 // Writes the difference images' colour scale (256x16, black to brightest) to `path`.
 void write_colour_bar(const std::filesystem::path& path);
 
 // A named error map to search for a window, and a named image to cut out of it.
-using NamedMap = std::pair<std::string, quality::ScalarMap>;
-using NamedImage = std::pair<std::string, const quality::Image*>;
+using NamedMap = std::pair<std::string, image::ScalarMap>;
+using NamedImage = std::pair<std::string, const image::Image*>;
 
 // One window centred on each landmark (crop_landmarks.h), then one per search (each avoiding
 // the previous search's; none where the error is zero); every image cut out of each at 1:1
 // and magnified, written to dir/<stem>_w<window>_<image>.png and _x4.png. The windows' paths
 // are relative to `dir`. After the landmarks' windows, one without images for each sentence of
 // `not_found` (landmarks looked for and not found), so the report says so where they would be.
-std::vector<reports::CropWindow> write_crop_windows(const std::vector<Landmark>& landmarks,
+std::vector<results::CropWindow> write_crop_windows(const std::vector<Landmark>& landmarks,
                                                     const std::vector<NamedMap>& searches,
                                                     const std::vector<NamedImage>& images,
                                                     const std::filesystem::path& dir,

@@ -6,9 +6,9 @@ namespace skinsim::driver {
 
 namespace {
 
-reports::FrameComparison summarise(const quality::FlipResult& flip, const quality::Mask* mask) {
+results::FrameComparison summarise(const quality::FlipResult& flip, const image::Mask* mask) {
   const quality::FlipStatistics s = quality::flip_statistics(flip.map, mask);
-  reports::FrameComparison c;
+  results::FrameComparison c;
   c.flip_mean = s.mean;
   c.flip_p99 = s.p99;
   c.visible_px = static_cast<double>(s.visible_pixels);
@@ -18,14 +18,14 @@ reports::FrameComparison summarise(const quality::FlipResult& flip, const qualit
 
 }  // namespace
 
-reports::FrameComparison compare_frames(const quality::Image& test, const quality::Image& against,
-                                        const quality::Mask* mask) {
+results::FrameComparison compare_frames(const image::Image& test, const image::Image& against,
+                                        const image::Mask* mask) {
   return summarise(quality::flip(test, against, mask), mask);
 }
 
-reports::FrameComparison compare_frames(const quality::Image& test,
+results::FrameComparison compare_frames(const image::Image& test,
                                         const quality::FlipFeatures& against,
-                                        const quality::Mask* mask) {
+                                        const image::Mask* mask) {
   return summarise(quality::flip(test, against, mask), mask);
 }
 

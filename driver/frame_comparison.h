@@ -3,18 +3,18 @@
 // (quality::FlipStatistics::visible). The sweep's comparisons and `skinsim compare` share it.
 #pragma once
 
-#include "quality/image.h"
+#include "image/image.h"
 #include "quality/metrics.h"
-#include "reports/sweep_table.h"
+#include "results/sweep_table.h"
 
 namespace skinsim::driver {
 
 // `test` against `against` (same size); `against` is left for the caller to name.
-reports::FrameComparison compare_frames(const quality::Image& test, const quality::Image& against,
-                                        const quality::Mask* mask);
+results::FrameComparison compare_frames(const image::Image& test, const image::Image& against,
+                                        const image::Mask* mask);
 // The same against a frame prepared once for many comparisons (identical results).
-reports::FrameComparison compare_frames(const quality::Image& test,
+results::FrameComparison compare_frames(const image::Image& test,
                                         const quality::FlipFeatures& against,
-                                        const quality::Mask* mask);
+                                        const image::Mask* mask);
 
 }  // namespace skinsim::driver

@@ -1,5 +1,7 @@
 #include "driver/frame_passes.h"
 
+#include "results/pass_rows.h"
+
 namespace skinsim::driver {
 
 namespace {
@@ -16,8 +18,8 @@ std::map<std::string, double> dram_by_cause(const gpu_model::DramBytes& d) {
 
 }  // namespace
 
-std::vector<reports::PassCost> pass_costs(const gpu_model::FrameTiming& timing) {
-  std::vector<reports::PassCost> passes;
+std::vector<results::PassCost> pass_costs(const gpu_model::FrameTiming& timing) {
+  std::vector<results::PassCost> passes;
   for (std::size_t i = 0; i < timing.passes.size(); ++i) {
     const gpu_model::PassTiming& p = timing.passes[i];
     const gpu_model::PassSlot& s = timing.schedule[i];
@@ -27,7 +29,7 @@ std::vector<reports::PassCost> pass_costs(const gpu_model::FrameTiming& timing) 
   }
   if (timing.dram_wait_ms > 0.0) {
     // On the 3D lane after the last render: the frame ends when its last byte has moved.
-    passes.push_back({gpu_model::kDramWaitRow,
+    passes.push_back({results::kDramWaitRow,
                       timing.dram_wait_ms,
                       gpu_model::unit_name(gpu_model::Unit::kBandwidth),
                       {},

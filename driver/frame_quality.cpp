@@ -12,26 +12,26 @@ ReferenceImages reference_images(const pipeline::ReferenceFrame& reference) {
   ReferenceImages r;
   // Quantise to 8 bits as a display would: the frames compared against it are RGBA8.
   r.image = to_image(reference.frame);
-  quality::round_to_saved_png(r.image);
+  image::round_to_saved_png(r.image);
   r.skin.width = reference.frame.width;
   r.skin.height = reference.frame.height;
   r.skin.values = reference.skin_mask;
   return r;
 }
 
-FrameQuality evaluate_quality(const quality::Image& test, const ReferenceImages& reference) {
+FrameQuality evaluate_quality(const image::Image& test, const ReferenceImages& reference) {
   if (test.width != reference.image.width || test.height != reference.image.height) {
     throw std::invalid_argument("frame and reference sizes differ");
   }
   FrameQuality q;
   q.metrics["psnr_frame"] = quality::psnr(test, reference.image);
   // One SSIM map serves the frame's and the skin's mean.
-  quality::ScalarMap ssim_map;
+  image::ScalarMap ssim_map;
   q.metrics["ssim_frame"] = quality::ssim(test, reference.image, nullptr, &ssim_map);
   // With no skin pixel in the reference the skin metrics do not exist (the caller says why):
   // the frame metrics and the FLIP map still do.
   const bool has_skin = reference.skin.count() > 0;
-  const quality::Mask* skin_mask = has_skin ? &reference.skin : nullptr;
+  const image::Mask* skin_mask = has_skin ? &reference.skin : nullptr;
   const quality::FlipResult flip = reference.flip_features
                                        ? quality::flip(test, *reference.flip_features, skin_mask)
                                        : quality::flip(test, reference.image, skin_mask);

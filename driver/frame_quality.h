@@ -6,8 +6,8 @@
 #include <memory>
 #include <string>
 
+#include "image/image.h"
 #include "pipeline/reference/reference.h"
-#include "quality/image.h"
 #include "quality/metrics.h"
 
 namespace skinsim::driver {
@@ -18,15 +18,15 @@ struct FrameQuality {
   // (has_skin_metrics). visible_*: pixels whose FLIP error is above
   // quality::flip_visibility_threshold(), as a percentage of the region and as a count.
   std::map<std::string, double> metrics;
-  quality::Image error_map;  // FLIP error, magma colour map
+  image::Image error_map;  // FLIP error, magma colour map
   bool has_skin_metrics() const { return metrics.count("flip_skin") > 0; }
 };
 
 // The reference as an 8-bit display image and its skin mask, computed once and shared by
 // every configuration compared against it.
 struct ReferenceImages {
-  quality::Image image;
-  quality::Mask skin;
+  image::Image image;
+  image::Mask skin;
   // The reference's FLIP features, when many frames are compared with it (a sweep): the
   // comparisons then filter only the frames. Without them each comparison streams both.
   std::shared_ptr<const quality::FlipFeatures> flip_features;
@@ -34,6 +34,6 @@ struct ReferenceImages {
 ReferenceImages reference_images(const pipeline::ReferenceFrame& reference);
 
 // `test`: the frame as an image (to_image of its render target).
-FrameQuality evaluate_quality(const quality::Image& test, const ReferenceImages& reference);
+FrameQuality evaluate_quality(const image::Image& test, const ReferenceImages& reference);
 
 }  // namespace skinsim::driver

@@ -12,10 +12,10 @@
 namespace skinsim::driver {
 
 reports::ImageDiff diff_frames(const std::filesystem::path& a, const std::filesystem::path& b,
-                               const quality::Mask* mask, const std::string& over,
+                               const image::Mask* mask, const std::string& over,
                                const std::filesystem::path& out_dir, const std::string& stem) {
-  const quality::Image frame_a = quality::load_png(a);
-  const quality::Image frame_b = quality::load_png(b);
+  const image::Image frame_a = image::load_png(a);
+  const image::Image frame_b = image::load_png(b);
   reports::ImageDiff diff;
   diff.over = over;
   if (frame_a.width != frame_b.width || frame_a.height != frame_b.height) {
@@ -36,10 +36,10 @@ reports::ImageDiff diff_frames(const std::filesystem::path& a, const std::filesy
   diff.flip.against = std::string(1, 'A');
   if (out_dir.empty()) return diff;
 
-  const quality::Image difference = amplified_difference(frame_b, frame_a);
+  const image::Image difference = amplified_difference(frame_b, frame_a);
   diff.difference_image = stem + "_difference.png";
-  quality::save_png(difference, out_dir / diff.difference_image);
-  const quality::ScalarMap error = flip_error_map(frame_b, frame_a, mask);
+  image::save_png(difference, out_dir / diff.difference_image);
+  const image::ScalarMap error = flip_error_map(frame_b, frame_a, mask);
   // The fixed places (an eye, the lips, ...) need the skin: a sweep's reference mask.
   std::vector<std::string> not_found;
   const std::vector<Landmark> landmarks =
@@ -55,8 +55,8 @@ reports::ImageDiff diff_frames(const std::filesystem::path& a, const std::filesy
 }
 
 reports::ImageChange diff_pixels(const std::filesystem::path& a, const std::filesystem::path& b) {
-  const quality::Image image_a = quality::load_png(a);
-  const quality::Image image_b = quality::load_png(b);
+  const image::Image image_a = image::load_png(a);
+  const image::Image image_b = image::load_png(b);
   reports::ImageChange change;
   if (image_a.width != image_b.width || image_a.height != image_b.height) {
     change.size_mismatch =

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <string>
 
-#include "quality/image.h"
+#include "image/image.h"
 #include "reports/comparison.h"
 
 namespace skinsim::driver {
@@ -17,7 +17,7 @@ namespace skinsim::driver {
 // the diff's paths are relative to `out_dir`, except a_image/b_image, which are left for the
 // caller to link.
 reports::ImageDiff diff_frames(const std::filesystem::path& a, const std::filesystem::path& b,
-                               const quality::Mask* mask, const std::string& over,
+                               const image::Mask* mask, const std::string& over,
                                const std::filesystem::path& out_dir, const std::string& stem);
 
 // Which pixels of two images differ, and by how much at most (no verdict); names and links are

@@ -4,8 +4,8 @@
 
 namespace skinsim::driver {
 
-quality::Image to_image(const sim::RenderTarget& target, float scale) {
-  quality::Image img;
+image::Image to_image(const sim::RenderTarget& target, float scale) {
+  image::Image img;
   img.width = target.width;
   img.height = target.height;
   img.rgb.resize(target.pixels.size());
@@ -16,7 +16,7 @@ quality::Image to_image(const sim::RenderTarget& target, float scale) {
 }
 
 void write_png(const sim::RenderTarget& target, const std::filesystem::path& path, float scale) {
-  quality::save_png(to_image(target, scale), path);
+  image::save_png(to_image(target, scale), path);
 }
 
 }  // namespace skinsim::driver

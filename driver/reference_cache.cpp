@@ -4,11 +4,11 @@
 
 #include <exception>
 
+#include "image/image.h"
+#include "image/png_encode.h"
 #include "io/atomic_file.h"
 #include "io/json_input.h"
 #include "pipeline/knob.h"
-#include "quality/image.h"
-#include "quality/png_encode.h"
 #include "util/build_identity.h"
 #include "util/fingerprint.h"
 
@@ -88,8 +88,8 @@ KeptReference load_kept_reference(const nlohmann::json& stored, const nlohmann::
   }
   ReferenceImages images;
   try {
-    images.image = quality::load_png(image);
-    images.skin = quality::load_mask_png(mask);
+    images.image = image::load_png(image);
+    images.skin = image::load_mask_png(mask);
   } catch (const std::exception& e) {
     return discarded(e.what());
   }
@@ -119,8 +119,8 @@ KeptReference load_marked_reference(const fs::path& marker, const nlohmann::json
 nlohmann::json save_marked_reference(const nlohmann::json& marker, const ReferenceImages& images,
                                      const fs::path& marker_file, const fs::path& image,
                                      const fs::path& mask) {
-  io::replace_file_entry(image, quality::encode_png(images.image, image.string()).bytes());
-  io::replace_file_entry(mask, quality::encode_mask_png(images.skin, mask.string()).bytes());
+  io::replace_file_entry(image, image::encode_png(images.image, image.string()).bytes());
+  io::replace_file_entry(mask, image::encode_mask_png(images.skin, mask.string()).bytes());
   nlohmann::json kept = kept_reference_marker(marker, images);
   io::replace_file_entry(marker_file, kept.dump(2) + "\n");
   return kept;

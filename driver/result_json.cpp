@@ -1,7 +1,9 @@
 #include "driver/result_json.h"
 
 #include "gpu_model/timing_json.h"
+#include "io/atomic_file.h"
 #include "pipeline/config.h"
+#include "quality/json_value.h"
 #include "scene/scene_scale.h"
 
 namespace skinsim::driver {
@@ -144,6 +146,38 @@ json frame_result_json(const FrameResult& r, const std::string& scene_label) {
           {"counters", counters},
           {"timing", timing},
           {"energy", gpu_model::energy_to_json(r.timing)}};
+}
+
+namespace {
+
+// "quality": each metric (non-finite ones as strings, quality/json_value.h), and why the skin
+// metrics are missing when the reference shows no skin.
+json quality_json(const FrameQuality& q, const std::string& no_skin) {
+  json metrics = json::object();
+  for (const auto& [name, value] : q.metrics) metrics[name] = quality::metric_to_json(value);
+  if (!q.has_skin_metrics()) metrics["skin_metrics_unavailable"] = no_skin;
+  return metrics;
+}
+
+}  // namespace
+
+json run_result_json(const FrameResult& result, const std::string& scene_label,
+                     const RunRecord& record) {
+  json j = frame_result_json(result, scene_label);
+  j["device"] = record.device;
+  if (record.scene != nullptr) j["scene_scale"] = scene_scale_json(*record.scene);
+  if (record.sequence) j["sequence"] = *record.sequence;
+  if (record.reference) j["reference"] = *record.reference;
+  if (record.quality != nullptr) j["quality"] = quality_json(*record.quality, record.no_skin);
+  if (record.sensitivity) j["sensitivity"] = gpu_model::to_json(*record.sensitivity);
+  if (record.truth) j["truth"] = *record.truth;
+  j["warnings"] = record.warnings;
+  return j;
+}
+
+void write_result_json(const json& j, const std::filesystem::path& path) {
+  io::write_file_atomically(path.string(),
+                            j.dump(2, ' ', false, json::error_handler_t::replace) + "\n");
 }
 
 }  // namespace skinsim::driver

@@ -5,6 +5,7 @@
 #include "gpu_model/timing.h"
 #include "reports/display_check.h"
 #include "reports/sequence_charts.h"
+#include "results/pass_rows.h"
 
 namespace skinsim::driver {
 
@@ -34,7 +35,7 @@ SequenceChartsOutcome write_sequence_charts(const Sequence& sequence, const Sequ
     }
   }
   std::stable_partition(s.pass_names.begin(), s.pass_names.end(),
-                        [](const std::string& name) { return name != gpu_model::kDramWaitRow; });
+                        [](const std::string& name) { return name != results::kDramWaitRow; });
   s.pass_ms.assign(s.pass_names.size(), std::vector<double>(result.frames.size(), 0.0));
   for (std::size_t i = 0; i < result.frames.size(); ++i) {
     const SequenceFrame& f = result.frames[i];

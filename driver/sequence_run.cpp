@@ -21,7 +21,7 @@ namespace {
 
 std::vector<SequencePass> merged_passes(const gpu_model::FrameTiming& timing) {
   std::vector<SequencePass> merged;
-  for (const reports::PassCost& p : pass_costs(timing)) {
+  for (const results::PassCost& p : pass_costs(timing)) {
     auto same = std::find_if(merged.begin(), merged.end(),
                              [&p](const SequencePass& m) { return m.name == p.name; });
     if (same == merged.end()) {
@@ -119,7 +119,7 @@ SequenceResult run_sequence(const pipeline::GpuScene& scene, const Sequence& seq
   }
   SequenceResult r;
   // The previous frame and its reference, for the temporal step.
-  std::optional<quality::Image> previous_frame, previous_reference;
+  std::optional<image::Image> previous_frame, previous_reference;
   std::optional<sim::PassMemo> own_memo;
   if (!shared_memo) own_memo.emplace(kPassMemoBytes);
   sim::PassMemo& memo = shared_memo ? *shared_memo : *own_memo;
@@ -152,7 +152,7 @@ SequenceResult run_sequence(const pipeline::GpuScene& scene, const Sequence& seq
     }
     if (references) {
       const ReferenceImages ref = references(frame_scene, frame_config, f.time_s);
-      quality::Image image = to_image(frame.output.frame);
+      image::Image image = to_image(frame.output.frame);
       f.quality = evaluate_quality(image, ref).metrics;
       // Temporal stability after the tLP measure of Chu et al. ("Learning temporal coherence
       // via self-supervision for GAN-based video generation", ACM TOG 2020): the perceptual

@@ -13,7 +13,7 @@ namespace skinsim::driver {
 namespace {
 
 // The frame-time statistics over the frames' modelled ms and over their fast and slow ends.
-reports::SequenceSummary summarise(const Sequence& sequence, const SequenceResult& r) {
+results::SequenceSummary summarise(const Sequence& sequence, const SequenceResult& r) {
   std::vector<double> base, low, high;
   for (const SequenceFrame& f : r.frames) {
     base.push_back(f.range.base);
@@ -21,7 +21,7 @@ reports::SequenceSummary summarise(const Sequence& sequence, const SequenceResul
     high.push_back(f.range.high);
   }
   const FrameMsStats b = frame_ms_stats(base), l = frame_ms_stats(low), h = frame_ms_stats(high);
-  reports::SequenceSummary s;
+  results::SequenceSummary s;
   s.name = sequence.name;
   s.frames = sequence.frames;
   s.fps = sequence.fps;

@@ -1,5 +1,5 @@
 // One configuration of a sweep over a sequence (`skinsim sweep --sequence`,
-// reports/sequence_sweep.h): the sequence played with the sweep's pass memo and its per-frame
+// results/sequence_summary.h): the sequence played with the sweep's pass memo and its per-frame
 // references kept in refs/ (shared by the configurations with the same reference knobs), the
 // frames written and encoded to a video, and what the configuration's row needs.
 #pragma once
@@ -9,8 +9,8 @@
 #include <string>
 
 #include "driver/sequence_run.h"
-#include "quality/image.h"
-#include "reports/sequence_sweep.h"
+#include "image/image.h"
+#include "results/sequence_summary.h"
 
 namespace skinsim::driver {
 
@@ -23,9 +23,9 @@ int shown_frame(const Sequence& sequence);
 nlohmann::json sequence_fingerprint(const Sequence& sequence);
 
 struct PlayedConfig {
-  FrameResult cost_frame;      // the frame at the p95 rank: counters and timing, no images
-  quality::Image shown_image;  // shown_frame's image
-  reports::SequenceSummary summary;
+  FrameResult cost_frame;    // the frame at the p95 rank: counters and timing, no images
+  image::Image shown_image;  // shown_frame's image
+  results::SequenceSummary summary;
   std::string video_note;  // why there is no video, if there is none
 };
 

@@ -17,7 +17,7 @@
 namespace skinsim::driver {
 
 namespace fs = std::filesystem;
-using reports::ConfigResult;
+using results::ConfigResult;
 
 namespace {
 
@@ -31,7 +31,7 @@ NamedValues row_values(const ConfigResult& row) {
                    {"energy.frame_mj", row.energy_mj},
                    {"energy.low_mj", row.energy_mj_low},
                    {"energy.high_mj", row.energy_mj_high}};
-  for (const reports::PassCost& p : reports::merged_passes(row)) {
+  for (const results::PassCost& p : results::merged_passes(row)) {
     v["timing.passes." + p.name + ".ms"] = p.ms;
   }
   for (const auto& [metric, value] : row.quality) v["quality." + metric] = value;
@@ -41,7 +41,7 @@ NamedValues row_values(const ConfigResult& row) {
 // The sweep-wide settings, then every knob whose value differs between matched
 // configurations (a knob both sweeps held fixed, at different values), once each.
 std::vector<reports::SettingChange> setting_changes(
-    const reports::SweepTable& a, const reports::SweepTable& b,
+    const results::SweepTable& a, const results::SweepTable& b,
     const std::vector<std::pair<const ConfigResult*, const ConfigResult*>>& common) {
   std::vector<reports::SettingChange> changes;
   std::set<std::tuple<std::string, std::string, std::string>> seen;
@@ -57,7 +57,7 @@ std::vector<reports::SettingChange> setting_changes(
     for (const auto& [k, v] : ra->knobs) knobs.insert(k);
     for (const auto& [k, v] : rb->knobs) knobs.insert(k);
     for (const std::string& k : knobs)
-      add(k, reports::knob_value(*ra, k), reports::knob_value(*rb, k));
+      add(k, results::knob_value(*ra, k), results::knob_value(*rb, k));
   }
   return changes;
 }
@@ -65,10 +65,10 @@ std::vector<reports::SettingChange> setting_changes(
 // A's frame against B's, FLIP over A's reference skin mask where the sweep kept one.
 reports::ImageDiff diff_row_frames(const fs::path& a, const ConfigResult& ra, const fs::path& b,
                                    const ConfigResult& rb, const fs::path& out_dir) {
-  std::optional<quality::Mask> skin;
+  std::optional<image::Mask> skin;
   if (!ra.reference_image.empty()) {
     const fs::path mask = a / reference_mask_path(ra.reference_image);
-    if (fs::exists(mask)) skin = quality::load_mask_png(mask);
+    if (fs::exists(mask)) skin = image::load_mask_png(mask);
   }
   reports::ImageDiff diff = diff_frames(
       a / ra.frame_image, b / rb.frame_image, skin ? &*skin : nullptr,
@@ -82,8 +82,8 @@ reports::ImageDiff diff_row_frames(const fs::path& a, const ConfigResult& ra, co
 
 reports::Comparison compare_sweeps(const fs::path& a, const fs::path& b,
                                    const reports::Tolerances& tolerances, const fs::path& out_dir) {
-  const reports::SweepTable ta = reports::read_sweep_json((a / "results.json").string());
-  const reports::SweepTable tb = reports::read_sweep_json((b / "results.json").string());
+  const results::SweepTable ta = results::read_sweep_json((a / "results.json").string());
+  const results::SweepTable tb = results::read_sweep_json((b / "results.json").string());
   reports::Comparison c;
   c.kind = "sweep";
   std::map<std::string, const ConfigResult*> in_b;

@@ -12,29 +12,29 @@
 
 #include "driver/frame_comparison.h"
 #include "driver/sweep_reference.h"
+#include "image/image.h"
 #include "io/atomic_file.h"
 #include "io/json_input.h"
 #include "pipeline/knob.h"
-#include "quality/image.h"
 #include "util/build_identity.h"
 #include "util/fingerprint.h"
 
 namespace skinsim::driver {
 
 namespace fs = std::filesystem;
-using reports::ConfigResult;
-using reports::FrameComparison;
+using results::ConfigResult;
+using results::FrameComparison;
 
 namespace {
 
 // Device and resolution, then every swept knob the reference depends on (light, framing).
 std::string group_label(const SweepSpec& spec, const ConfigResult& row) {
-  std::vector<std::string> parts = {reports::knob_value(row, "device"),
-                                    reports::knob_value(row, "resolution")};
+  std::vector<std::string> parts = {results::knob_value(row, "device"),
+                                    results::knob_value(row, "resolution")};
   for (const SweepAxis& axis : spec.axes) {
     if (axis.knob == "device" || axis.knob == "resolution") continue;
     if (!pipeline::find_knob(axis.knob).reference) continue;
-    const std::string value = reports::knob_value(row, axis.knob);
+    const std::string value = results::knob_value(row, axis.knob);
     if (!value.empty()) parts.push_back(axis.knob + " " + value);
   }
   return fmt::format("{}", fmt::join(parts, ", "));
@@ -71,10 +71,10 @@ class ComparisonImages {
   // A frame's FLIP features: what every comparison against it needs.
   const quality::FlipFeatures& frame(const std::string& relative) {
     return get(frames_, relative,
-               [](const fs::path& p) { return quality::FlipFeatures(quality::load_png(p)); });
+               [](const fs::path& p) { return quality::FlipFeatures(image::load_png(p)); });
   }
-  const quality::Mask& mask(const std::string& relative) {
-    return get(masks_, relative, [](const fs::path& p) { return quality::load_mask_png(p); });
+  const image::Mask& mask(const std::string& relative) {
+    return get(masks_, relative, [](const fs::path& p) { return image::load_mask_png(p); });
   }
 
  private:
@@ -102,14 +102,14 @@ class ComparisonImages {
   const fs::path dir_;
   std::mutex mutex_;
   std::map<std::string, Entry<quality::FlipFeatures>> frames_;
-  std::map<std::string, Entry<quality::Mask>> masks_;
+  std::map<std::string, Entry<image::Mask>> masks_;
 };
 
 // `row`'s frame (decoded by `test` when not cached) against `other`'s, as FLIP over the
 // reference's skin (or the whole frame).
 FrameComparison compare(const fs::path& dir, const ConfigResult& row,
-                        const std::function<const quality::Image&()>& test,
-                        const ConfigResult& other, bool over_skin, ComparisonImages& images) {
+                        const std::function<const image::Image&()>& test, const ConfigResult& other,
+                        bool over_skin, ComparisonImages& images) {
   FrameComparison c;
   c.against = other.id;
   if (row.id == other.id) return c;
@@ -151,7 +151,7 @@ std::string comparison_cache_path(const std::string& id, const std::string& othe
   return "configs/compare/" + id + "_vs_" + other + ".json";
 }
 
-void add_comparisons(const SweepSpec& spec, reports::SweepTable& table, const fs::path& sweep_dir,
+void add_comparisons(const SweepSpec& spec, results::SweepTable& table, const fs::path& sweep_dir,
                      const std::string& metric) {
   std::vector<ConfigResult>& rows = table.rows;
   std::map<std::string, std::vector<std::size_t>> groups;
@@ -169,7 +169,7 @@ void add_comparisons(const SweepSpec& spec, reports::SweepTable& table, const fs
     if (!best) continue;
     std::map<std::string, std::vector<std::size_t>> by_technique;
     for (const std::size_t i : members) {
-      by_technique[reports::knob_value(rows[i], "technique")].push_back(i);
+      by_technique[results::knob_value(rows[i], "technique")].push_back(i);
     }
     for (const auto& [technique, own] : by_technique) {
       const std::optional<std::size_t> finest = best_of(rows, own, metric);
@@ -185,9 +185,9 @@ void add_comparisons(const SweepSpec& spec, reports::SweepTable& table, const fs
   tbb::parallel_for(std::size_t{0}, tasks.size(), [&](std::size_t t) {
     const Task& task = tasks[t];
     ConfigResult& row = rows[task.row];
-    std::optional<quality::Image> own;  // decoded once, and only if a comparison is not cached
-    const std::function<const quality::Image&()> own_frame = [&]() -> const quality::Image& {
-      if (!own) own = quality::load_png(sweep_dir / row.frame_image);
+    std::optional<image::Image> own;  // decoded once, and only if a comparison is not cached
+    const std::function<const image::Image&()> own_frame = [&]() -> const image::Image& {
+      if (!own) own = image::load_png(sweep_dir / row.frame_image);
       return *own;
     };
     const auto compare_with = [&](std::size_t other) {

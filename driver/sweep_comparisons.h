@@ -9,14 +9,14 @@
 #include <filesystem>
 
 #include "driver/sweep_spec.h"
-#include "reports/sweep_table.h"
+#include "results/sweep_table.h"
 
 namespace skinsim::driver {
 
 // Sets every row's group ("ipad4, 2048x1536", plus the swept light and framing knobs that
 // shape the reference), vs_finest and vs_best. `metric` picks the best rows (lower is better;
 // reports::recommend_metric). Rows whose images are missing keep no comparison.
-void add_comparisons(const SweepSpec& spec, reports::SweepTable& table,
+void add_comparisons(const SweepSpec& spec, results::SweepTable& table,
                      const std::filesystem::path& sweep_dir, const std::string& metric);
 
 // configs/compare/<id>_vs_<other>.json, relative to the sweep directory.

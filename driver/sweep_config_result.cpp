@@ -22,11 +22,11 @@ constexpr int kFormatVersion = 5;
 
 }  // namespace
 
-reports::ConfigResult config_row(const SweepConfig& config, const FrameResult& frame,
+results::ConfigResult config_row(const SweepConfig& config, const FrameResult& frame,
                                  const FrameQuality& quality, const std::string& frame_image,
                                  const std::string& error_image,
                                  const std::string& reference_image) {
-  reports::ConfigResult row;
+  results::ConfigResult row;
   row.id = config.id;
   row.label = config.label;
   for (const auto& [knob, value] : all_knobs(config, frame.config.width, frame.config.height)) {
@@ -48,7 +48,7 @@ reports::ConfigResult config_row(const SweepConfig& config, const FrameResult& f
   for (const sim::PassCounters& pass : frame.output.passes) {
     for (const sim::DrawCounters& d : pass.draws) {
       if (d.fragments_shaded == 0) continue;
-      const auto same = [&](const reports::ProgramCost& c) {
+      const auto same = [&](const results::ProgramCost& c) {
         return c.pass == pass.name && c.program == d.fragment_program;
       };
       auto it = std::find_if(row.programs.begin(), row.programs.end(), same);
@@ -74,13 +74,13 @@ reports::ConfigResult config_row(const SweepConfig& config, const FrameResult& f
   return row;
 }
 
-std::optional<reports::TileHeatmap> pass_heatmap(const FrameResult& frame, const std::string& pass,
+std::optional<results::TileHeatmap> pass_heatmap(const FrameResult& frame, const std::string& pass,
                                                  const std::string& config_id) {
   for (std::size_t i = 0; i < frame.timing.passes.size(); ++i) {
     const gpu_model::PassTiming& timing = frame.timing.passes[i];
     if (timing.name != pass) continue;
     const sim::PassCounters& counters = frame.output.passes.at(i);
-    reports::TileHeatmap map;
+    results::TileHeatmap map;
     map.tiles_x = counters.tiles_x;
     map.tiles_y = counters.tiles_y;
     map.tile_size = counters.tile_size;
@@ -143,11 +143,11 @@ std::optional<StoredConfig> read_stored_config(const std::filesystem::path& path
   try {
     StoredConfig s;
     s.fingerprint = j.at("fingerprint");
-    s.row = j.at("row").get<reports::ConfigResult>();
-    s.sensitivity = j.at("sensitivity").get<std::vector<reports::SensitivityRow>>();
+    s.row = j.at("row").get<results::ConfigResult>();
+    s.sensitivity = j.at("sensitivity").get<std::vector<results::SensitivityRow>>();
     s.assumptions = j.at("assumptions").get<std::vector<std::string>>();
     s.files = j.at("files").get<std::map<std::string, std::string>>();
-    if (j.contains("heatmap")) s.heatmap = j["heatmap"].get<reports::TileHeatmap>();
+    if (j.contains("heatmap")) s.heatmap = j["heatmap"].get<results::TileHeatmap>();
     return s;
   } catch (const std::exception&) {
     return std::nullopt;  // incomplete or from another version: compute it again

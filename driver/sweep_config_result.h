@@ -15,15 +15,15 @@
 #include "driver/frame_quality.h"
 #include "driver/sweep_spec.h"
 #include "gpu_model/device_profile.h"
-#include "reports/sweep_table.h"
+#include "results/sweep_table.h"
 
 namespace skinsim::driver {
 
 struct StoredConfig {
   nlohmann::json fingerprint;
-  reports::ConfigResult row;
-  std::optional<reports::TileHeatmap> heatmap;  // of the pass named kHeatmapPass, if it ran
-  std::vector<reports::SensitivityRow> sensitivity;
+  results::ConfigResult row;
+  std::optional<results::TileHeatmap> heatmap;  // of the pass named kHeatmapPass, if it ran
+  std::vector<results::SensitivityRow> sensitivity;
   std::vector<std::string> assumptions;  // uncertain device figures, one sentence each
   // Its images (relative to the sweep directory) and a digest of each as written
   // (xxh3_fingerprint, util/fingerprint.h), so a resumed sweep or a merge tells a damaged one
@@ -38,13 +38,13 @@ inline constexpr const char* kHeatmapPass = "skin";
 // cause, the quality metrics and whether it differs visibly from the reference; image paths
 // relative to the sweep directory. The comparisons with other rows come later
 // (sweep_comparisons.h).
-reports::ConfigResult config_row(const SweepConfig& config, const FrameResult& frame,
+results::ConfigResult config_row(const SweepConfig& config, const FrameResult& frame,
                                  const FrameQuality& quality, const std::string& frame_image,
                                  const std::string& error_image,
                                  const std::string& reference_image);
 
 // Per-tile ms and bottleneck of the pass named `pass` (nullopt if the frame has none).
-std::optional<reports::TileHeatmap> pass_heatmap(const FrameResult& frame, const std::string& pass,
+std::optional<results::TileHeatmap> pass_heatmap(const FrameResult& frame, const std::string& pass,
                                                  const std::string& config_id);
 
 // How the frame time moves over each uncertain device figure's range (cost model only: the

@@ -7,34 +7,34 @@
 
 #include "driver/crop_windows.h"
 #include "driver/sweep_reference.h"
-#include "quality/image.h"
+#include "image/image.h"
 
 namespace skinsim::driver {
 
 namespace fs = std::filesystem;
 
-std::vector<reports::ComparisonPanel> write_comparison_panels(
-    const reports::SweepTable& table, const std::vector<reports::Recommendation>& recommendations,
+std::vector<results::ComparisonPanel> write_comparison_panels(
+    const results::SweepTable& table, const std::vector<reports::Recommendation>& recommendations,
     const fs::path& sweep_dir, bool over_skin,
     const std::map<std::string, std::string>& truth_images) {
-  std::vector<reports::ComparisonPanel> panels;
+  std::vector<results::ComparisonPanel> panels;
   const std::string bar_path = "compare/colour_bar.png";
   fs::create_directories(sweep_dir / "compare");
   for (std::size_t g = 0; g < recommendations.size(); ++g) {
     const reports::Recommendation& rec = recommendations[g];
     if (!rec.chosen || !rec.best) continue;
-    const reports::ConfigResult& chosen = table.rows[*rec.chosen];
-    const reports::ConfigResult& best = table.rows[*rec.best];
+    const results::ConfigResult& chosen = table.rows[*rec.chosen];
+    const results::ConfigResult& best = table.rows[*rec.best];
     if (chosen.frame_image.empty() || chosen.reference_image.empty()) continue;
-    const quality::Image reference = quality::load_png(sweep_dir / chosen.reference_image);
-    const quality::Image chosen_frame = quality::load_png(sweep_dir / chosen.frame_image);
-    const quality::Image best_frame = quality::load_png(sweep_dir / best.frame_image);
-    std::optional<quality::Mask> skin;
+    const image::Image reference = image::load_png(sweep_dir / chosen.reference_image);
+    const image::Image chosen_frame = image::load_png(sweep_dir / chosen.frame_image);
+    const image::Image best_frame = image::load_png(sweep_dir / best.frame_image);
+    std::optional<image::Mask> skin;
     if (over_skin)
-      skin = quality::load_mask_png(sweep_dir / reference_mask_path(chosen.reference_image));
-    const quality::Mask* mask = skin ? &*skin : nullptr;
+      skin = image::load_mask_png(sweep_dir / reference_mask_path(chosen.reference_image));
+    const image::Mask* mask = skin ? &*skin : nullptr;
 
-    reports::ComparisonPanel panel;
+    results::ComparisonPanel panel;
     panel.group = rec.group;
     panel.chosen = chosen.id;
     panel.best = best.id;
@@ -43,9 +43,9 @@ std::vector<reports::ComparisonPanel> write_comparison_panels(
     panel.best_image = best.frame_image;
     panel.difference_gain = kDifferenceGain;
     panel.colour_bar = bar_path;
-    std::optional<quality::Image> truth;
+    std::optional<image::Image> truth;
     if (const auto t = truth_images.find(rec.group); t != truth_images.end()) {
-      truth = quality::load_png(sweep_dir / t->second);
+      truth = image::load_png(sweep_dir / t->second);
     }
 
     std::vector<NamedMap> searches;
@@ -57,8 +57,8 @@ std::vector<reports::ComparisonPanel> write_comparison_panels(
     }
     // Each window shows both differences, so a window found against the best shows the
     // difference it was found in, not only the one against the reference.
-    const quality::Image difference = amplified_difference(chosen_frame, reference);
-    const quality::Image from_best = amplified_difference(chosen_frame, best_frame);
+    const image::Image difference = amplified_difference(chosen_frame, reference);
+    const image::Image from_best = amplified_difference(chosen_frame, best_frame);
     std::vector<NamedImage> images = {
         {"reference", &reference},
         {"best: " + best.id, &best_frame},
@@ -71,7 +71,7 @@ std::vector<reports::ComparisonPanel> write_comparison_panels(
     }
     // The truth beside the reference, and the recommended frame's difference from it beside
     // the one from the reference.
-    std::optional<quality::Image> from_truth;
+    std::optional<image::Image> from_truth;
     if (truth) {
       from_truth = amplified_difference(chosen_frame, *truth);
       images.insert(images.begin() + 1, {"truth (path-traced)", &*truth});

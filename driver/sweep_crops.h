@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "reports/recommendation.h"
-#include "reports/sweep_table.h"
+#include "results/sweep_table.h"
 
 namespace skinsim::driver {
 
@@ -19,8 +19,8 @@ namespace skinsim::driver {
 // `over_skin`: windows are found in the FLIP error over the reference's skin mask.
 // `truth_images`: per group, its truth image in the sweep directory (`sweep --truth`): the
 // crops then show it and the recommended frame's difference from it too.
-std::vector<reports::ComparisonPanel> write_comparison_panels(
-    const reports::SweepTable& table, const std::vector<reports::Recommendation>& recommendations,
+std::vector<results::ComparisonPanel> write_comparison_panels(
+    const results::SweepTable& table, const std::vector<reports::Recommendation>& recommendations,
     const std::filesystem::path& sweep_dir, bool over_skin,
     const std::map<std::string, std::string>& truth_images = {});
 

@@ -8,7 +8,7 @@
 
 namespace skinsim::driver {
 
-SweepReportOutcome write_sweep_report(reports::SweepTable& table, const std::string& out_dir,
+SweepReportOutcome write_sweep_report(results::SweepTable& table, const std::string& out_dir,
                                       bool charts, const ReportTruth& truth) {
   SweepReportOutcome outcome;
   if (table.rows.empty()) {

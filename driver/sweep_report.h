@@ -5,7 +5,7 @@
 #include <map>
 #include <string>
 
-#include "reports/sweep_table.h"
+#include "results/sweep_table.h"
 
 namespace skinsim::driver {
 
@@ -30,7 +30,7 @@ struct ReportTruth {
 // `charts` is set and an X display is available; without a display the report is written
 // without charts and `note` says how to get them (run under `xvfb-run -a` or pass
 // --no-charts). Throws reports::ReportError on write failures.
-SweepReportOutcome write_sweep_report(reports::SweepTable& table, const std::string& out_dir,
+SweepReportOutcome write_sweep_report(results::SweepTable& table, const std::string& out_dir,
                                       bool charts, const ReportTruth& truth = {});
 
 }  // namespace skinsim::driver

@@ -4,7 +4,7 @@
 
 namespace skinsim::driver {
 
-SweepReportOutcome write_sweep_report(reports::SweepTable& table, const std::string& out_dir, bool,
+SweepReportOutcome write_sweep_report(results::SweepTable& table, const std::string& out_dir, bool,
                                       const ReportTruth& truth) {
   finish_sweep_data(table, out_dir, truth.images);
   // A report.html from a build with the report library would not show these tables.

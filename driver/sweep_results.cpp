@@ -13,6 +13,7 @@
 #include "driver/sweep_run.h"
 #include "reports/csv_writer.h"
 #include "reports/recommendation.h"
+#include "reports/sweep_json.h"
 
 namespace skinsim::driver {
 
@@ -33,11 +34,11 @@ std::string joined(const std::set<std::string>& values) {
 
 }  // namespace
 
-reports::SweepTable assemble_sweep_table(const SweepSpec& spec,
+results::SweepTable assemble_sweep_table(const SweepSpec& spec,
                                          const std::vector<SweepConfig>& configs,
                                          const std::map<std::string, nlohmann::json>& fingerprints,
                                          const std::string& out_dir) {
-  reports::SweepTable table;
+  results::SweepTable table;
   table.scene = spec.scene.label();
   table.budget_ms = spec.budget_ms;
   std::vector<StoredConfig> stored;
@@ -49,8 +50,8 @@ reports::SweepTable assemble_sweep_table(const SweepSpec& spec,
     // configs/<id>.json keeps every knob (the fingerprint); the table shows the knobs the
     // frame depends on, so a knob the technique ignores has no misleading value.
     keep_used_knobs(c, s->row.knobs);
-    devices.insert(reports::knob_value(s->row, "device"));
-    resolutions.insert(reports::knob_value(s->row, "resolution"));
+    devices.insert(results::knob_value(s->row, "device"));
+    resolutions.insert(results::knob_value(s->row, "resolution"));
     table.rows.push_back(s->row);
     stored.push_back(std::move(*s));
   }
@@ -75,7 +76,7 @@ reports::SweepTable assemble_sweep_table(const SweepSpec& spec,
   return table;
 }
 
-void finish_sweep_data(reports::SweepTable& table, const std::string& out_dir,
+void finish_sweep_data(results::SweepTable& table, const std::string& out_dir,
                        const std::map<std::string, std::string>& truth_images) {
   if (!table.rows.empty()) {
     const std::string metric = reports::recommend_metric(table.rows);
@@ -90,7 +91,7 @@ void remove_stale_report(const std::string& out_dir) {
   std::filesystem::remove(std::filesystem::path(out_dir) / "report.html", ignored);
 }
 
-void write_sweep_data(const reports::SweepTable& table, const std::string& out_dir) {
+void write_sweep_data(const results::SweepTable& table, const std::string& out_dir) {
   const std::filesystem::path dir(out_dir);
   reports::write_sweep_json(table, (dir / "results.json").string());
   reports::write_sweep_csv(table, (dir / "results.csv").string());

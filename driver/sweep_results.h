@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "driver/sweep_spec.h"
-#include "reports/sweep_table.h"
+#include "results/sweep_table.h"
 
 namespace skinsim::driver {
 
@@ -20,7 +20,7 @@ namespace skinsim::driver {
 // sensitivity and assumptions come from the first group's recommended row
 // (reports::recommend), else the first row. The comparison panels come with the data files
 // (finish_sweep_data), which the report makes while its charts draw.
-reports::SweepTable assemble_sweep_table(const SweepSpec& spec,
+results::SweepTable assemble_sweep_table(const SweepSpec& spec,
                                          const std::vector<SweepConfig>& configs,
                                          const std::map<std::string, nlohmann::json>& fingerprints,
                                          const std::string& out_dir);
@@ -29,7 +29,7 @@ reports::SweepTable assemble_sweep_table(const SweepSpec& spec,
 // best (sweep_crops.h: the crops and their images in out_dir/compare/, listed in
 // table.panels; with each group's truth image from `truth_images` when it has one), then
 // writes the table (write_sweep_data).
-void finish_sweep_data(reports::SweepTable& table, const std::string& out_dir,
+void finish_sweep_data(results::SweepTable& table, const std::string& out_dir,
                        const std::map<std::string, std::string>& truth_images = {});
 
 // Removes out_dir/report.html (a sweep directory's, so skinsim wrote it): beside tables it
@@ -37,6 +37,6 @@ void finish_sweep_data(reports::SweepTable& table, const std::string& out_dir,
 void remove_stale_report(const std::string& out_dir);
 
 // out_dir/results.json and out_dir/results.csv, atomically.
-void write_sweep_data(const reports::SweepTable& table, const std::string& out_dir);
+void write_sweep_data(const results::SweepTable& table, const std::string& out_dir);
 
 }  // namespace skinsim::driver

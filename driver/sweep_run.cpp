@@ -24,10 +24,10 @@
 #include "driver/sweep_thumbnails.h"
 #include "gpu_model/device_profile.h"
 #include "gpu_model/profile_loader.h"
+#include "image/image.h"
 #include "io/atomic_file.h"
 #include "io/read_file.h"
 #include "pipeline/frame.h"
-#include "quality/image.h"
 #include "sim/pass_memo.h"
 #include "util/build_identity.h"
 #include "util/fingerprint.h"
@@ -102,7 +102,7 @@ Stored stored_state(const fs::path& dir, const Job& job, std::string& damaged) {
 
 // Why a row cannot be stored, or "": a NaN or infinite figure would be written as JSON null,
 // fail to read back, and so be recomputed on every resume without a word.
-std::string non_finite_figure(const reports::ConfigResult& row) {
+std::string non_finite_figure(const results::ConfigResult& row) {
   std::vector<std::pair<std::string, double>> figures = {
       {"frame_ms", row.frame_ms}, {"fps", row.fps}, {"dram_bytes", row.dram_bytes}};
   for (const auto& [name, value] : row.quality) figures.emplace_back("quality." + name, value);
@@ -115,8 +115,8 @@ std::string non_finite_figure(const reports::ConfigResult& row) {
 // Measures a rendered configuration and writes its files; the JSON goes last, so a
 // configuration counts as finished only once all its files are in place. Throws SweepError when
 // a figure is not a finite number.
-void finish(const fs::path& dir, const Job& job, const FrameResult& frame, quality::Image image,
-            const std::optional<reports::SequenceSummary>& sequence) {
+void finish(const fs::path& dir, const Job& job, const FrameResult& frame, image::Image image,
+            const std::optional<results::SequenceSummary>& sequence) {
   const std::string& id = job.config->id;
   FrameQuality measured = evaluate_quality(image, *job.reference);
   // Each PNG's deflate stream is encoded by one thread: the two at once, each with its
@@ -137,7 +137,7 @@ void finish(const fs::path& dir, const Job& job, const FrameResult& frame, quali
   // config_row reads the metrics; the error map went into its PNG above.
   stored.row = config_row(*job.config, frame, measured, config_frame_path(id),
                           config_error_path(id), job.reference_image);
-  if (sequence) reports::apply_sequence_summary(stored.row, *sequence);
+  if (sequence) results::apply_sequence_summary(stored.row, *sequence);
   if (const std::string bad = non_finite_figure(stored.row); !bad.empty()) throw SweepError(bad);
   stored.heatmap = pass_heatmap(frame, kHeatmapPass, id);
   add_sensitivity(frame, *job.device, stored);
@@ -151,8 +151,8 @@ struct Finishing {
   Clock::time_point start;  // of its frame
   Clock::time_point done;   // of its files
   FrameResult frame;        // its counters and timing; its render targets are let go
-  quality::Image image;     // its frame, converted
-  std::optional<reports::SequenceSummary> sequence;  // of a sweep over a sequence
+  image::Image image;       // its frame, converted
+  std::optional<results::SequenceSummary> sequence;  // of a sweep over a sequence
   std::string failure;  // why it could not be measured, if it could not
 };
 
@@ -187,67 +187,92 @@ std::string config_error_path(const std::string& id) {
   return "configs/" + id + "_flip.png";
 }
 
-SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>& configs,
-                          const SweepRunOptions& options) {
-  const Clock::time_point start = Clock::now();
-  const fs::path dir(options.out_dir);
+namespace {
 
-  // Devices first: an unknown profile fails before any work or directory. A stored result
-  // made with other figures (an edited profile), from an edited scene file or by another build
-  // of skinsim is not this sweep's: the profile's bytes, the scene's content
-  // (scene_fingerprint) and the build identity are part of the fingerprint.
-  std::map<std::string, gpu_model::DeviceProfile> devices;
-  std::map<std::string, std::string> device_fingerprints;
-  for (const SweepConfig& c : configs) {
-    if (!devices.count(c.device)) {
-      const gpu_model::DeviceProfile& device =
-          devices.emplace(c.device, gpu_model::load_device_profile(c.device, options.data_dir))
-              .first->second;
-      device_fingerprints[c.device] =
-          content_fingerprint(io::read_regular_file(device.source_path, "device profile"));
-    }
-  }
-  fs::create_directories(dir / "configs");
+// The device profiles the configurations name, each loaded once, and their files' fingerprints.
+struct Devices {
+  std::map<std::string, gpu_model::DeviceProfile> profiles;
+  std::map<std::string, std::string> fingerprints;
+};
 
-  SweepRunSummary summary;
-  summary.total = static_cast<int>(configs.size());
-  std::vector<std::uint64_t> expected_costs;
+// Devices first: an unknown profile fails before any work or directory. A stored result made
+// with other figures (an edited profile) is not this sweep's: the profile's bytes are part of
+// the fingerprint.
+Devices load_devices(const std::vector<SweepConfig>& configs, const std::string& data_dir) {
+  Devices devices;
   for (const SweepConfig& c : configs) {
-    expected_costs.push_back(expected_host_cost(resolve_config(c.config, devices.at(c.device))));
+    if (devices.profiles.count(c.device)) continue;
+    const gpu_model::DeviceProfile& device =
+        devices.profiles.emplace(c.device, gpu_model::load_device_profile(c.device, data_dir))
+            .first->second;
+    devices.fingerprints[c.device] =
+        content_fingerprint(io::read_regular_file(device.source_path, "device profile"));
   }
-  const std::vector<int> shard_of = options.shard
-                                        ? assign_shards(expected_costs, options.shard->count)
-                                        : std::vector<int>(configs.size(), 0);
+  return devices;
+}
+
+// What this run (or shard) computes: its configurations not yet finished in the directory,
+// and the ids that hold another sweep's result.
+struct SweepPlan {
+  nlohmann::json scene_fp;  // scene_fingerprint, read once (a scan's bytes), not per job
+  std::vector<Job> jobs;
+  std::set<std::string> foreign;
+  ShardStatus status;  // written only by a shard
+};
+
+// What each configuration is expected to cost the host (expected_host_cost), for balancing
+// shards.
+std::vector<std::uint64_t> expected_costs(const std::vector<SweepConfig>& configs,
+                                          const Devices& devices) {
+  std::vector<std::uint64_t> costs;
+  for (const SweepConfig& c : configs) {
+    costs.push_back(expected_host_cost(resolve_config(c.config, devices.profiles.at(c.device))));
+  }
+  return costs;
+}
+
+// A configuration with everything resolved and its fingerprint: a stored result from an edited
+// scene file or by another build of skinsim is not this sweep's either (scene_fingerprint,
+// the build identity).
+Job resolved_job(const SweepConfig& c, const Devices& devices, const nlohmann::json& scene_fp,
+                 const SweepRunOptions& options) {
+  Job job;
+  job.config = &c;
+  job.device = &devices.profiles.at(c.device);
+  job.resolved = resolve_config(c.config, *job.device);
+  job.fingerprint = config_fingerprint(c, scene_fp, job.resolved.width, job.resolved.height);
+  job.fingerprint["device_profile"] = devices.fingerprints.at(c.device);
+  job.fingerprint["build"] = build_identity();  // another skinsim may compute other figures
+  if (options.sequence) job.fingerprint["sequence"] = sequence_fingerprint(*options.sequence);
+  return job;
+}
+
+SweepPlan plan_sweep(const SweepSpec& spec, const std::vector<SweepConfig>& configs,
+                     const Devices& devices, const fs::path& dir, const SweepRunOptions& options,
+                     SweepRunSummary& summary) {
+  const std::vector<std::uint64_t> costs = expected_costs(configs, devices);
+  const std::vector<int> shard_of = options.shard ? assign_shards(costs, options.shard->count)
+                                                  : std::vector<int>(configs.size(), 0);
   const int this_shard = options.shard ? options.shard->index : 0;
   const ShardLedger ledger(options.shard ? std::vector<ShardStatus>() : read_shard_statuses(dir),
-                           expected_costs);
-  ShardStatus status;  // written only by a shard
-  if (options.shard) status = {*options.shard, "running", "", {}, {}};
-
-  std::vector<Job> jobs;
-  std::set<std::string> foreign;  // ids holding another sweep's result
-  const nlohmann::json scene_fp = scene_fingerprint(spec.scene);  // reads a scan once, not per job
+                           costs);
+  SweepPlan plan;
+  if (options.shard) plan.status = {*options.shard, "running", "", {}, {}};
+  plan.scene_fp = scene_fingerprint(spec.scene);
   for (std::size_t index = 0; index < configs.size(); ++index) {
     const SweepConfig& c = configs[index];
-    Job job;
-    job.config = &c;
-    job.device = &devices.at(c.device);
-    job.resolved = resolve_config(c.config, *job.device);
-    job.fingerprint = config_fingerprint(c, scene_fp, job.resolved.width, job.resolved.height);
-    job.fingerprint["device_profile"] = device_fingerprints.at(c.device);
-    job.fingerprint["build"] = build_identity();  // another skinsim may compute other figures
-    if (options.sequence) job.fingerprint["sequence"] = sequence_fingerprint(*options.sequence);
+    Job job = resolved_job(c, devices, plan.scene_fp, options);
     summary.fingerprints[c.id] = job.fingerprint;
     if (shard_of[index] != this_shard) continue;  // another shard's
     ++summary.this_part;
-    status.configurations.push_back(c.id);
+    plan.status.configurations.push_back(c.id);
     std::string damaged;
     const Stored state = stored_state(dir, job, damaged);
     if (state == Stored::kFinished) {
       ++summary.resumed;
       continue;
     }
-    if (state == Stored::kForeign) foreign.insert(c.id);
+    if (state == Stored::kForeign) plan.foreign.insert(c.id);
     if (state == Stored::kDamaged) {
       // Its result goes with it: the tables and a merge then treat it as not yet computed,
       // instead of failing on the image.
@@ -261,29 +286,54 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
     if (!options.compute || !ledger.empty()) {
       summary.left_by_shards.push_back({c.id, ledger.why_missing(index, c.id)});
     }
-    if (options.compute) jobs.push_back(std::move(job));
+    if (options.compute) plan.jobs.push_back(std::move(job));
   }
-  if (options.shard && !foreign.empty()) {
+  if (options.shard && !plan.foreign.empty()) {
     // Shards share a directory: one of another sweep (another --set knob, scene, device or
     // build) would replace the results the other sweep's shards are computing there.
     throw SweepError(fmt::format(
         "--shard {}: {} holds another sweep's results under {} of this shard's configuration "
         "ids (e.g. {}): refusing to replace them from a shard; give this sweep its own --out, "
         "or run it without --shard to replace them",
-        to_string(*options.shard), dir.string(), foreign.size(), *foreign.begin()));
+        to_string(*options.shard), dir.string(), plan.foreign.size(), *plan.foreign.begin()));
   }
-  if (options.shard) write_shard_status(dir, status);
+  return plan;
+}
 
-  SweepProgress progress(summary.this_part, summary.resumed, options.progress);
-  tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
-
-  // Scenes and references for the configurations still to do, each built once.
+// Scenes and references for the configurations still to do, each built once; the jobs point
+// into them.
+struct SweepInputs {
   std::map<std::string, SceneForSize> scenes;         // by "WxH"
   std::map<std::string, ReferenceImages> references;  // by reference_stem
+};
+
+// The reference of `shown`, from refs/, the store or rendered, with its FLIP features.
+ReferenceImages prepare_reference(const pipeline::GpuScene& scene,
+                                  const pipeline::PipelineConfig& shown,
+                                  const nlohmann::json& scene_fp, const fs::path& dir,
+                                  const SweepRunOptions& options, tbb::task_arena& arena,
+                                  SweepRunSummary& summary) {
+  ReferenceSource source = ReferenceSource::kKept;
+  ReferenceImages images;
+  arena.execute([&] {
+    images = cached_reference(scene, shown, scene_fp, dir / "refs", options.threads,
+                              options.reference_store ? &*options.reference_store : nullptr,
+                              &source, options.progress);
+    images.flip_features = std::make_shared<const quality::FlipFeatures>(images.image);
+  });
+  summary.references_rendered += source == ReferenceSource::kRendered ? 1 : 0;
+  summary.references_from_store += source == ReferenceSource::kStore ? 1 : 0;
+  return images;
+}
+
+void prepare_jobs(std::vector<Job>& jobs, SweepInputs& inputs, const SweepSpec& spec,
+                  const nlohmann::json& scene_fp, const fs::path& dir,
+                  const SweepRunOptions& options, tbb::task_arena& arena,
+                  SweepRunSummary& summary) {
   for (Job& job : jobs) {
     if (cancelled(options)) break;
     const int w = job.resolved.width, h = job.resolved.height;
-    SceneForSize& s = scenes[std::to_string(w) + "x" + std::to_string(h)];
+    SceneForSize& s = inputs.scenes[std::to_string(w) + "x" + std::to_string(h)];
     // A sequence's configurations show, and are compared on, one frame (shown_frame).
     const int shown_index = options.sequence ? shown_frame(*options.sequence) : 0;
     const double shown_time_s = options.sequence ? options.sequence->time_s(shown_index) : 0.0;
@@ -308,45 +358,69 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
                          : scene_fp;
     const std::string stem = reference_stem(shown, shown_scene_fp);
     job.reference_image = reference_image_path(stem);
-    auto it = references.find(stem);
-    if (it == references.end()) {
-      ReferenceSource source = ReferenceSource::kKept;
-      ReferenceImages images;
-      arena.execute([&] {
-        images = cached_reference(*s.gpu, shown, shown_scene_fp, dir / "refs", options.threads,
-                                  options.reference_store ? &*options.reference_store : nullptr,
-                                  &source, options.progress);
-        images.flip_features = std::make_shared<const quality::FlipFeatures>(images.image);
-      });
-      summary.references_rendered += source == ReferenceSource::kRendered ? 1 : 0;
-      summary.references_from_store += source == ReferenceSource::kStore ? 1 : 0;
+    auto it = inputs.references.find(stem);
+    if (it == inputs.references.end()) {
+      ReferenceImages images =
+          prepare_reference(*s.gpu, shown, shown_scene_fp, dir, options, arena, summary);
       if (images.skin.count() == 0) {  // still rendered and measured, over the whole frame
         summary.warnings.push_back(fmt::format(
             "{}x{}: {} (skin metrics not available; configurations are compared by FLIP over "
             "the frame)",
             w, h, no_skin_reason(*s.scene, spec.scene.skin_materials)));
       }
-      it = references.emplace(stem, std::move(images)).first;
+      it = inputs.references.emplace(stem, std::move(images)).first;
     }
     job.reference = &it->second;
   }
+}
 
-  progress.start_configs();
-  // One frame at a time, with every thread of the arena: a frame's tiles use any number of
-  // host threads (sim/tile_stage.cpp), and its quality metrics whatever threads are free. On
-  // a 16-core host the default sweep's frames took 4.08 s so, against 3.44 s four at a time
-  // with 4 threads each (bench/thread_scaling, docs/performance.md); but four in flight
-  // peaked at 1415 MB against 667 MB, as each holds its render targets and a memo, and
-  // replayed 12 passes of 80 instead of 51, as consecutive configurations, which share
-  // passes, went to different lanes. The memo replays passes of earlier frames:
-  // configurations come in expansion order, the last axis fastest, so consecutive ones share
-  // the passes that axis leaves be.
-  //
-  // A configuration's measuring and files (finish) run as a task beside the next
-  // configuration's frame, so that the frame's serial stretches (binning, the cost model, the
-  // memo's hashing) and those of the metrics fill each other's idle cores. One is in flight at
-  // a time, for memory; it is done, and counted, before the next is started, and a sweep
-  // cancelled meanwhile drops the frame just rendered rather than start its files.
+// Renders one configuration's frame (or plays its sequence) into `next`, its render targets
+// let go once converted.
+void render_job(const Job& job, const nlohmann::json& scene_fp, const fs::path& dir,
+                const SweepRunOptions& options, tbb::task_arena& arena, sim::PassMemo& memo,
+                Finishing& next, std::vector<std::string>& warnings) {
+  if (options.sequence) {
+    PlayedConfig played = play_sweep_config(
+        *job.scene, *options.sequence, job.resolved, *job.device, arena.max_concurrency(), memo,
+        sweep_references(scene_fp, dir, options), dir, job.config->id,
+        job.animated ? SceneAtTime([a = job.animated](double t) -> const pipeline::GpuScene& {
+          return a->at(t);
+        })
+                     : SceneAtTime{});
+    next.frame = std::move(played.cost_frame);
+    next.image = std::move(played.shown_image);
+    next.sequence = std::move(played.summary);
+    if (!played.video_note.empty() &&
+        std::find(warnings.begin(), warnings.end(), played.video_note) == warnings.end()) {
+      warnings.push_back(played.video_note);
+    }
+  } else {
+    next.frame =
+        run_frame(*job.scene, job.resolved, *job.device, arena.max_concurrency(), {}, &memo);
+    next.image = to_image(next.frame.output.frame);
+  }
+  next.frame.output.frame = {};
+  next.frame.output.intermediates.clear();
+}
+
+// One frame at a time, with every thread of the arena: a frame's tiles use any number of
+// host threads (sim/tile_stage.cpp), and its quality metrics whatever threads are free. On
+// a 16-core host the default sweep's frames took 4.08 s so, against 3.44 s four at a time
+// with 4 threads each (bench/thread_scaling, docs/performance.md); but four in flight
+// peaked at 1415 MB against 667 MB, as each holds its render targets and a memo, and
+// replayed 12 passes of 80 instead of 51, as consecutive configurations, which share
+// passes, went to different lanes. The memo replays passes of earlier frames:
+// configurations come in expansion order, the last axis fastest, so consecutive ones share
+// the passes that axis leaves be.
+//
+// A configuration's measuring and files (finish) run as a task beside the next
+// configuration's frame, so that the frame's serial stretches (binning, the cost model, the
+// memo's hashing) and those of the metrics fill each other's idle cores. One is in flight at
+// a time, for memory; it is done, and counted, before the next is started, and a sweep
+// cancelled meanwhile drops the frame just rendered rather than start its files.
+void execute_jobs(const std::vector<Job>& jobs, const nlohmann::json& scene_fp, const fs::path& dir,
+                  const SweepRunOptions& options, tbb::task_arena& arena, SweepProgress& progress,
+                  SweepRunSummary& summary) {
   arena.execute([&] {
     sim::PassMemo memo(kPassMemoBytes);
     std::unique_ptr<Finishing> finishing;
@@ -377,34 +451,12 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
       next->job = &job;
       next->start = Clock::now();
       try {
-        if (options.sequence) {
-          PlayedConfig played = play_sweep_config(
-              *job.scene, *options.sequence, job.resolved, *job.device, arena.max_concurrency(),
-              memo, sweep_references(scene_fp, dir, options), dir, job.config->id,
-              job.animated ? SceneAtTime([a = job.animated](double t) -> const pipeline::GpuScene& {
-                return a->at(t);
-              })
-                           : SceneAtTime{});
-          next->frame = std::move(played.cost_frame);
-          next->image = std::move(played.shown_image);
-          next->sequence = std::move(played.summary);
-          const std::vector<std::string>& said = summary.warnings;
-          if (!played.video_note.empty() &&
-              std::find(said.begin(), said.end(), played.video_note) == said.end()) {
-            summary.warnings.push_back(played.video_note);
-          }
-        } else {
-          next->frame =
-              run_frame(*job.scene, job.resolved, *job.device, arena.max_concurrency(), {}, &memo);
-          next->image = to_image(next->frame.output.frame);
-        }
+        render_job(job, scene_fp, dir, options, arena, memo, *next, summary.warnings);
       } catch (const UserError& e) {
         complete();
         summary.failed.push_back({job.config->id, e.what()});
         continue;
       }
-      next->frame.output.frame = {};
-      next->frame.output.intermediates.clear();
       complete();
       if (cancelled(options)) {
         ++summary.not_run;
@@ -424,17 +476,41 @@ SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>&
     summary.passes_replayed = memo.stats().replayed;
     summary.passes_rendered = memo.stats().rendered;
   });
+}
+
+// A shard's status file says how its part ended.
+void write_shard_outcome(const fs::path& dir, const SweepRunSummary& summary, ShardStatus& status) {
+  for (const FailedConfig& f : summary.failed) status.failed.emplace_back(f.id, f.reason);
+  status.state = summary.cancelled ? "interrupted" : summary.failed.empty() ? "finished" : "failed";
+  write_shard_status(dir, status);
+}
+
+}  // namespace
+
+SweepRunSummary run_sweep(const SweepSpec& spec, const std::vector<SweepConfig>& configs,
+                          const SweepRunOptions& options) {
+  const Clock::time_point start = Clock::now();
+  const fs::path dir(options.out_dir);
+  const Devices devices = load_devices(configs, options.data_dir);
+  fs::create_directories(dir / "configs");
+
+  SweepRunSummary summary;
+  summary.total = static_cast<int>(configs.size());
+  SweepPlan plan = plan_sweep(spec, configs, devices, dir, options, summary);
+  if (options.shard) write_shard_status(dir, plan.status);
+
+  SweepProgress progress(summary.this_part, summary.resumed, options.progress);
+  tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
+  SweepInputs inputs;
+  prepare_jobs(plan.jobs, inputs, spec, plan.scene_fp, dir, options, arena, summary);
+  progress.start_configs();
+  execute_jobs(plan.jobs, plan.scene_fp, dir, options, arena, progress, summary);
   progress.close();
-  for (const std::string& id : summary.computed) foreign.erase(id);
-  summary.foreign_ignored = static_cast<int>(foreign.size());
+
+  for (const std::string& id : summary.computed) plan.foreign.erase(id);
+  summary.foreign_ignored = static_cast<int>(plan.foreign.size());
   summary.cancelled = cancelled(options);
-  if (options.shard) {
-    for (const FailedConfig& f : summary.failed) status.failed.emplace_back(f.id, f.reason);
-    status.state = summary.cancelled        ? "interrupted"
-                   : summary.failed.empty() ? "finished"
-                                            : "failed";
-    write_shard_status(dir, status);
-  }
+  if (options.shard) write_shard_outcome(dir, summary, plan.status);
   summary.seconds = seconds_since(start);
   return summary;
 }

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "quality/resize.h"
+#include "image/resize.h"
 #include "reports/html_text.h"
 #include "util/fingerprint.h"
 
@@ -25,17 +25,17 @@ bool up_to_date(const fs::path& thumb, const fs::path& image) {
 }
 
 // `saved`: the pixels load_png reads from `image`'s PNG.
-void write_thumbnail(const quality::Image& saved, const fs::path& sweep_dir,
+void write_thumbnail(const image::Image& saved, const fs::path& sweep_dir,
                      const std::string& image) {
-  quality::save_png(quality::resized(saved, std::min(kThumbnailWidth, saved.width)),
-                    sweep_dir / reports::thumbnail_path(image));
+  image::save_png(image::resized(saved, std::min(kThumbnailWidth, saved.width)),
+                  sweep_dir / reports::thumbnail_path(image));
 }
 
 }  // namespace
 
-void write_thumbnails(const reports::SweepTable& table, const fs::path& sweep_dir) {
+void write_thumbnails(const results::SweepTable& table, const fs::path& sweep_dir) {
   std::set<std::string> images;
-  for (const reports::ConfigResult& r : table.rows) {
+  for (const results::ConfigResult& r : table.rows) {
     for (const std::string* image : {&r.reference_image, &r.frame_image, &r.error_image}) {
       if (!image->empty()) images.insert(*image);
     }
@@ -50,14 +50,14 @@ void write_thumbnails(const reports::SweepTable& table, const fs::path& sweep_di
   if (todo.empty()) return;
   fs::create_directories(sweep_dir / "thumbs");
   tbb::parallel_for(std::size_t{0}, todo.size(), [&](std::size_t i) {
-    write_thumbnail(quality::load_png(sweep_dir / todo[i]), sweep_dir, todo[i]);
+    write_thumbnail(image::load_png(sweep_dir / todo[i]), sweep_dir, todo[i]);
   });
 }
 
-std::string write_image_and_thumbnail(quality::Image image, const fs::path& sweep_dir,
+std::string write_image_and_thumbnail(image::Image image, const fs::path& sweep_dir,
                                       const std::string& relative) {
   const std::string digest =
-      xxh3_fingerprint({quality::save_png_and_round(image, sweep_dir / relative).bytes()});
+      xxh3_fingerprint({image::save_png_and_round(image, sweep_dir / relative).bytes()});
   // After the image: write_thumbnails takes a thumbnail older than its image for a stale one.
   fs::create_directories(sweep_dir / "thumbs");
   write_thumbnail(image, sweep_dir, relative);

@@ -5,8 +5,8 @@
 
 #include <filesystem>
 
-#include "quality/image.h"
-#include "reports/sweep_table.h"
+#include "image/image.h"
+#include "results/sweep_table.h"
 
 namespace skinsim::driver {
 
@@ -15,7 +15,7 @@ inline constexpr int kThumbnailWidth = 320;  // pixels; the page shows them 160-
 // Writes reports::thumbnail_path(image) for every image the table names that has none yet, or
 // a thumbnail older than the image. Images that do not exist are skipped (the report then has
 // no thumbnail for them and links nothing that is missing).
-void write_thumbnails(const reports::SweepTable& table, const std::filesystem::path& sweep_dir);
+void write_thumbnails(const results::SweepTable& table, const std::filesystem::path& sweep_dir);
 
 // Writes `image` as the PNG `relative` (a path inside sweep_dir), then its thumbnail, made from
 // the pixels in memory instead of the file read back: the thumbnail write_thumbnails would make
@@ -23,7 +23,7 @@ void write_thumbnails(const reports::SweepTable& table, const std::filesystem::p
 // PNGs of 2048x1536 decoded after the last configuration, otherwise). Takes the image to
 // round it in place: a frame's copy would be 36 MiB more at the sweep's peak. Returns the PNG's
 // xxh3_fingerprint (util/fingerprint.h), of the bytes written.
-std::string write_image_and_thumbnail(quality::Image image, const std::filesystem::path& sweep_dir,
+std::string write_image_and_thumbnail(image::Image image, const std::filesystem::path& sweep_dir,
                                       const std::string& relative);
 
 }  // namespace skinsim::driver

@@ -17,14 +17,14 @@ namespace {
 
 constexpr const char* kOption = "compare --truth";
 
-quality::Image run_frame(const fs::path& run) {
+image::Image run_frame(const fs::path& run) {
   if (!fs::is_regular_file(run / "result.json") || !fs::is_regular_file(run / "frame.png")) {
     throw UserError(
         fmt::format("{}: {} is not a run directory (result.json, frame.png); a "
                     "sweep is judged with `sweep --truth`",
                     kOption, run.string()));
   }
-  return quality::load_png(run / "frame.png");
+  return image::load_png(run / "frame.png");
 }
 
 // The key of the cached truth `run` was judged with.
@@ -76,7 +76,7 @@ Truth kept_truth(const fs::path& a, const fs::path& b, int width, int height,
 
 nlohmann::json compare_with_truth(const fs::path& a, const fs::path& b, const std::string& spec,
                                   const TruthChoice& choice) {
-  const quality::Image frame_a = run_frame(a), frame_b = run_frame(b);
+  const image::Image frame_a = run_frame(a), frame_b = run_frame(b);
   if (frame_a.width != frame_b.width || frame_a.height != frame_b.height) {
     throw UserError(fmt::format("{}: {} is {}x{}, {} {}x{}: one truth cannot judge both", kOption,
                                 a.string(), frame_a.width, frame_a.height, b.string(),
@@ -85,10 +85,10 @@ nlohmann::json compare_with_truth(const fs::path& a, const fs::path& b, const st
   const Truth truth = spec == kCachedTruth
                           ? kept_truth(a, b, frame_a.width, frame_a.height, choice)
                           : truth_file("--truth", spec, frame_a.width, frame_a.height);
-  std::optional<quality::Mask> skin;
+  std::optional<image::Mask> skin;
   const fs::path mask = a / reference_mask_path(kRunReferenceImage);
-  if (fs::is_regular_file(mask)) skin = quality::load_mask_png(mask);
-  const quality::Mask* m = skin && skin->count() > 0 ? &*skin : nullptr;
+  if (fs::is_regular_file(mask)) skin = image::load_mask_png(mask);
+  const image::Mask* m = skin && skin->count() > 0 ? &*skin : nullptr;
   nlohmann::json out{{"truth", truth.about},
                      {"noise_floor", truth_noise_floor(truth, m)},
                      {"a", judge_against_truth(frame_a, truth, m)},

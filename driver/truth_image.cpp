@@ -42,13 +42,13 @@ LinearImage read_linear_image(const std::filesystem::path& path, const std::file
   return image;
 }
 
-quality::Image display_image(const LinearImage& image) {
-  quality::Image out = quality::Image::filled(image.width, image.height, glm::vec3(0.0f));
+image::Image display_image(const LinearImage& image) {
+  image::Image out = image::Image::filled(image.width, image.height, glm::vec3(0.0f));
   for (std::size_t i = 0; i < image.rgb.size(); ++i) {
     const glm::vec3& c = image.rgb[i];
     out.rgb[i] = {srgb_encode(c.r), srgb_encode(c.g), srgb_encode(c.b)};
   }
-  quality::round_to_saved_png(out);
+  image::round_to_saved_png(out);
   return out;
 }
 

@@ -10,7 +10,7 @@
 #include <glm/vec3.hpp>
 #include <vector>
 
-#include "quality/image.h"
+#include "image/image.h"
 
 namespace skinsim::driver {
 
@@ -30,6 +30,6 @@ LinearImage read_linear_image(const std::filesystem::path& path, const std::file
 
 // As skinsim's frames are seen: sRGB-encoded, clamped to [0,1], rounded to 8 bits (as the
 // reference.png a run writes), so the metrics compare like with like.
-quality::Image display_image(const LinearImage& image);
+image::Image display_image(const LinearImage& image);
 
 }  // namespace skinsim::driver

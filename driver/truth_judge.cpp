@@ -54,8 +54,8 @@ bool is_png(const fs::path& path) {
   return in && std::memcmp(magic, "\x89PNG\r\n\x1a\n", sizeof magic) == 0;
 }
 
-nlohmann::json measure(const quality::Image& test, const quality::Image& truth,
-                       const quality::ScalarMap& floor_map, const quality::Mask* mask) {
+nlohmann::json measure(const image::Image& test, const image::Image& truth,
+                       const image::ScalarMap& floor_map, const image::Mask* mask) {
   const quality::FlipResult flip = quality::flip(test, truth, mask);
   std::size_t pixels = 0, visible = 0;
   const double threshold = quality::flip_visibility_threshold();
@@ -79,8 +79,8 @@ nlohmann::json measure(const quality::Image& test, const quality::Image& truth,
 // varies slowly across the face, far more slowly than from draw to draw).
 constexpr int kFloorRadius = 2;
 
-quality::ScalarMap local_maximum(const quality::ScalarMap& map) {
-  quality::ScalarMap out = map;
+image::ScalarMap local_maximum(const image::ScalarMap& map) {
+  image::ScalarMap out = map;
   for (int y = 0; y < map.height; ++y) {
     for (int x = 0; x < map.width; ++x) {
       float peak = 0.0f;
@@ -151,8 +151,8 @@ Truth truth_file(const std::string& option, const fs::path& path, int width, int
   if (fs::is_directory(path)) return truth_directory(option, path, width, height);
   Truth truth;
   if (is_png(path)) {
-    truth.images.image = quality::load_png(path);
-    quality::round_to_saved_png(truth.images.image);  // a 16-bit PNG is seen in 8 bits too
+    truth.images.image = image::load_png(path);
+    image::round_to_saved_png(truth.images.image);  // a 16-bit PNG is seen in 8 bits too
   } else {
     const ScratchDirectory scratch;
     try {
@@ -161,7 +161,7 @@ Truth truth_file(const std::string& option, const fs::path& path, int width, int
       throw UserError(fmt::format("{} {}", option, e.what()));
     }
   }
-  const quality::Image& image = truth.images.image;
+  const image::Image& image = truth.images.image;
   if (image.width != width || image.height != height) {
     throw UserError(
         fmt::format("{} {}: the image is {}x{}, the frame {}x{} (render the truth at the run's "
@@ -231,7 +231,7 @@ Truth cached_truth(const pipeline::GpuScene& scene, const pipeline::PipelineConf
   for (const int seed : {choice.seed, choice.seed + 1}) {
     const fs::path exr = scratch.path() / fmt::format("truth_seed{}.exr", seed);
     render_truth(render, dir, seed, exr, log);
-    quality::Image image = display_image(read_linear_image(exr, log));
+    image::Image image = display_image(read_linear_image(exr, log));
     (seed == choice.seed ? rendered.image : rendered.second.emplace()) = std::move(image);
   }
   truth.about["source"] = "rendered";
@@ -243,15 +243,15 @@ Truth cached_truth(const pipeline::GpuScene& scene, const pipeline::PipelineConf
   return with_images(std::move(truth), std::move(rendered));
 }
 
-nlohmann::json judge_against_truth(const quality::Image& test, const Truth& truth,
-                                   const quality::Mask* skin) {
+nlohmann::json judge_against_truth(const image::Image& test, const Truth& truth,
+                                   const image::Mask* skin) {
   nlohmann::json out{{"all", measure(test, truth.images.image, truth.floor_map, nullptr)}};
   if (skin && skin->count() > 0)
     out["skin"] = measure(test, truth.images.image, truth.floor_map, skin);
   return out;
 }
 
-nlohmann::json truth_noise_floor(const Truth& truth, const quality::Mask* skin) {
+nlohmann::json truth_noise_floor(const Truth& truth, const image::Mask* skin) {
   if (!truth.images.second) {
     return {{"measured", false},
             {"why",

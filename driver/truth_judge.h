@@ -14,9 +14,9 @@
 
 #include "driver/truth_scene.h"
 #include "driver/truth_store.h"
+#include "image/image.h"
 #include "pipeline/config.h"
 #include "pipeline/gpu_scene.h"
-#include "quality/image.h"
 #include "util/user_error.h"
 
 namespace skinsim::driver {
@@ -47,8 +47,8 @@ UserError missing_named_truth(const TruthChoice& choice, const std::string& stor
 
 struct Truth {
   TruthImages images;
-  nlohmann::json about;          // where it came from: {"source", "file" or "key"/"store"}
-  quality::ScalarMap floor_map;  // the floor per pixel (above); empty without a second seed
+  nlohmann::json about;        // where it came from: {"source", "file" or "key"/"store"}
+  image::ScalarMap floor_map;  // the floor per pixel (above); empty without a second seed
 };
 
 // `truth` with `images`, and the floor map of their second seed when there is one.
@@ -79,12 +79,12 @@ Truth truth_file(const std::string& option, const std::filesystem::path& path, i
 
 // PSNR, SSIM, FLIP and the visible pixels (the rule above) of `test` against the truth over
 // every pixel ("all") and, with `skin` showing any, over the skin ("skin").
-nlohmann::json judge_against_truth(const quality::Image& test, const Truth& truth,
-                                   const quality::Mask* skin);
+nlohmann::json judge_against_truth(const image::Image& test, const Truth& truth,
+                                   const image::Mask* skin);
 
 // The truth's noise floor: the second seed judged as above (its visible pixels are 0 by the
 // rule), or {"measured": false, "why": ...} without one.
-nlohmann::json truth_noise_floor(const Truth& truth, const quality::Mask* skin);
+nlohmann::json truth_noise_floor(const Truth& truth, const image::Mask* skin);
 
 // Where the truth came from, for the terminal: "the truth store's .../truth_<key>.json (64
 // samples, seeds 1 and 2, Blender 3.4.1)", "rendered with Blender Cycles (...)", "the file F

@@ -88,9 +88,9 @@ double render_truth(const TruthRender& render, const std::filesystem::path& scen
   return seconds;
 }
 
-nlohmann::json truth_metrics(const quality::Image& test, const quality::Image& truth,
-                             const quality::Mask* skin) {
-  const auto measure = [&](const quality::Mask* mask) {
+nlohmann::json truth_metrics(const image::Image& test, const image::Image& truth,
+                             const image::Mask* skin) {
+  const auto measure = [&](const image::Mask* mask) {
     return nlohmann::json{{"psnr_db", quality::metric_to_json(quality::psnr(test, truth, mask))},
                           {"ssim", quality::metric_to_json(quality::ssim(test, truth, mask))},
                           {"flip", quality::metric_to_json(quality::flip(test, truth, mask).mean)}};

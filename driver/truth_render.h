@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "quality/image.h"
+#include "image/image.h"
 
 namespace skinsim::driver {
 
@@ -40,7 +40,7 @@ double render_truth(const TruthRender& render, const std::filesystem::path& scen
 // PSNR, SSIM and FLIP of `test` against `truth` over every pixel and, with `skin`, over the
 // skin pixels when it has any: {"all": {...}, "skin": {...}} (values as
 // quality/json_value.h writes them).
-nlohmann::json truth_metrics(const quality::Image& test, const quality::Image& truth,
-                             const quality::Mask* skin);
+nlohmann::json truth_metrics(const image::Image& test, const image::Image& truth,
+                             const image::Mask* skin);
 
 }  // namespace skinsim::driver

@@ -35,14 +35,14 @@ std::string source_text(const nlohmann::json& about) {
   return settings + ", rendered for this sweep";
 }
 
-std::string figure(const reports::ConfigResult& row, const std::string& metric) {
+std::string figure(const results::ConfigResult& row, const std::string& metric) {
   const auto it = row.quality.find(metric);
   return it == row.quality.end() ? std::string("-") : fmt::format("{:.4f}", it->second);
 }
 
 // Whether this truth can tell the group's configurations apart: the spread of their FLIP
 // against it beside the FLIP its own noise makes.
-std::string separation_html(const std::vector<const reports::ConfigResult*>& rows,
+std::string separation_html(const std::vector<const results::ConfigResult*>& rows,
                             const std::string& truth_metric, const nlohmann::json& group,
                             const char* region) {
   if (rows.size() < 2) return "<p>One configuration: nothing to separate.</p>\n";
@@ -53,7 +53,7 @@ std::string separation_html(const std::vector<const reports::ConfigResult*>& row
            "cached</code> renders two seeds and measures it).</p>\n";
   }
   double lo = INFINITY, hi = -INFINITY;
-  for (const reports::ConfigResult* r : rows) {
+  for (const results::ConfigResult* r : rows) {
     const double v = r->quality.at(truth_metric);
     lo = std::min(lo, v);
     hi = std::max(hi, v);
@@ -88,14 +88,14 @@ std::string separation_html(const std::vector<const reports::ConfigResult*>& row
   return "<p>" + h + "</p>\n";
 }
 
-std::string group_html(const reports::SweepTable& table, const nlohmann::json& group,
+std::string group_html(const results::SweepTable& table, const nlohmann::json& group,
                        const std::string& metric) {
   const char* region = metric == "flip_skin" ? "skin" : "all";
   const std::string truth_metric = "truth_" + metric;
   const std::string visible = metric == "flip_skin" ? "truth_visible_skin" : "truth_visible_frame";
   const std::string name = group["group"].get<std::string>();
-  std::vector<const reports::ConfigResult*> rows;
-  for (const reports::ConfigResult& r : table.rows) {
+  std::vector<const results::ConfigResult*> rows;
+  for (const results::ConfigResult& r : table.rows) {
     if (r.group == name && r.quality.count(truth_metric)) rows.push_back(&r);
   }
   std::string h = "<h3>" + reports::esc(name.empty() ? "All configurations" : name) + "</h3>\n";
@@ -131,7 +131,7 @@ std::string group_html(const reports::SweepTable& table, const nlohmann::json& g
   h += "<table>\n<tr><th>configuration</th><th>" + reports::esc(metric) + " vs reference</th><th>" +
        reports::esc(metric) +
        " vs truth</th><th>visible vs reference</th><th>visible vs truth</th></tr>\n";
-  for (const reports::ConfigResult* r : rows) {
+  for (const results::ConfigResult* r : rows) {
     h += "<tr><td class=\"text\">" + reports::esc(r->label.empty() ? r->id : r->label) +
          "</td><td>" + figure(*r, metric) + "</td><td>" + figure(*r, truth_metric) +
          "</td><td class=\"text\">" + (r->visible_vs_reference ? "yes" : "no") +
@@ -150,7 +150,7 @@ std::optional<double> samples_to_separate(double floor_flip, double spread, int 
   return std::ceil(samples * ratio * ratio);
 }
 
-std::string truth_report_section(const reports::SweepTable& table, const nlohmann::json& judged) {
+std::string truth_report_section(const results::SweepTable& table, const nlohmann::json& judged) {
   if (!judged.is_array() || judged.empty()) return "";
   const std::string metric = reports::recommend_metric(table.rows);
   std::string h =

@@ -10,7 +10,7 @@
 #include <optional>
 #include <string>
 
-#include "reports/sweep_table.h"
+#include "results/sweep_table.h"
 
 namespace skinsim::driver {
 
@@ -23,7 +23,7 @@ std::optional<double> samples_to_separate(double floor_flip, double spread, int 
 
 // The section's HTML, from judge_sweep_with_truth's result (truth_sweep.h) and the table it
 // added its truth_* columns to.
-std::string truth_report_section(const reports::SweepTable& table, const nlohmann::json& judged);
+std::string truth_report_section(const results::SweepTable& table, const nlohmann::json& judged);
 
 // Per group, the path of its truth image in the sweep directory (judged's "image").
 std::map<std::string, std::string> truth_report_images(const nlohmann::json& judged);

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "image/image.h"
 #include "io/atomic_file.h"
 #include "pipeline/bake/brdf_lut.h"
 #include "pipeline/bake/dipole.h"
@@ -15,7 +16,6 @@
 #include "pipeline/brdf_lut_texture.h"
 #include "pipeline/lighting.h"
 #include "pipeline/shaders/eye.h"
-#include "quality/image.h"
 #include "util/unorm8.h"
 
 namespace skinsim::driver {
@@ -87,7 +87,7 @@ json material_json(const scene::Scene& sc, const scene::Material& m,
     if (!textures.contains(name)) {
       std::vector<std::uint8_t> bytes(image.texels.size() * 4);
       unorm8_nearest(&image.texels.data()->x, bytes.size(), bytes.data(), nullptr);
-      quality::write_png_u8(dir / name, image.width, image.height, 4, bytes);
+      image::write_png_u8(dir / name, image.width, image.height, 4, bytes);
       textures[name] = image.name;
     }
     j["base_color_texture"] = name;

@@ -10,10 +10,10 @@
 
 #include "driver/reference_cache.h"
 #include "driver/reference_store.h"
+#include "image/png_encode.h"
 #include "io/atomic_file.h"
 #include "io/json_input.h"
 #include "io/read_file.h"
-#include "quality/png_encode.h"
 #include "util/fingerprint.h"
 
 namespace skinsim::driver {
@@ -28,7 +28,7 @@ constexpr const char* kKeyFormat = "skinsim truth key 2";
 // A scan's meshes.bin and textures may be large; the key reads each whole.
 constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t{4} << 30;
 
-std::string_view bytes_of(const quality::Image& image) {
+std::string_view bytes_of(const image::Image& image) {
   return {reinterpret_cast<const char*>(image.rgb.data()), image.rgb.size() * sizeof(image.rgb[0])};
 }
 
@@ -132,8 +132,8 @@ KeptTruth TruthStore::load(const nlohmann::json& key, int width, int height) con
   }
   TruthImages images;
   try {
-    images.image = quality::load_png(image);
-    images.second = quality::load_png(second);
+    images.image = image::load_png(image);
+    images.second = image::load_png(second);
   } catch (const std::exception& e) {
     return discarded(e.what());
   }
@@ -148,9 +148,9 @@ KeptTruth TruthStore::load(const nlohmann::json& key, int width, int height) con
 std::string TruthStore::keep(const nlohmann::json& key, const TruthImages& images) const {
   try {
     fs::create_directories(dir_);
-    io::replace_file_entry(file(key, ".png"), quality::encode_png(images.image, "truth").bytes());
+    io::replace_file_entry(file(key, ".png"), image::encode_png(images.image, "truth").bytes());
     io::replace_file_entry(file(key, "_second.png"),
-                           quality::encode_png(*images.second, "truth").bytes());
+                           image::encode_png(*images.second, "truth").bytes());
     nlohmann::json kept = key;
     kept["images"] = images_entry(images);
     io::replace_file_entry(marker(key), kept.dump(2) + "\n");

@@ -14,15 +14,15 @@
 #include <optional>
 #include <string>
 
-#include "quality/image.h"
+#include "image/image.h"
 
 namespace skinsim::driver {
 
 // A truth as skinsim judges with it: display images (truth_image.h: display_image), the truth
 // and, when known, another seed's rendering of the same scene for its noise floor.
 struct TruthImages {
-  quality::Image image;
-  std::optional<quality::Image> second;
+  image::Image image;
+  std::optional<image::Image> second;
 };
 
 // The key of the truth of the scene exported to `scene_dir` (write_truth_scene; `exported`:

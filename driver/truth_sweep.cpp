@@ -18,22 +18,22 @@ namespace fs = std::filesystem;
 namespace {
 
 struct RowImages {
-  quality::Image frame;
-  std::optional<quality::Mask> skin;  // the reference's, when it was rendered
-  const quality::Mask* mask() const { return skin && skin->count() > 0 ? &*skin : nullptr; }
+  image::Image frame;
+  std::optional<image::Mask> skin;  // the reference's, when it was rendered
+  const image::Mask* mask() const { return skin && skin->count() > 0 ? &*skin : nullptr; }
 };
 
-RowImages load_row(const reports::ConfigResult& row, const std::string& out_dir) {
+RowImages load_row(const results::ConfigResult& row, const std::string& out_dir) {
   RowImages r;
-  r.frame = quality::load_png(fs::path(out_dir) / row.frame_image);
+  r.frame = image::load_png(fs::path(out_dir) / row.frame_image);
   if (!row.reference_image.empty()) {
-    r.skin = quality::load_mask_png(fs::path(out_dir) / reference_mask_path(row.reference_image));
+    r.skin = image::load_mask_png(fs::path(out_dir) / reference_mask_path(row.reference_image));
   }
   return r;
 }
 
 // The figures of one region ("skin" -> "_skin", "all" -> "_frame") into the row's quality.
-void add_figures(reports::ConfigResult& row, const nlohmann::json& judged,
+void add_figures(results::ConfigResult& row, const nlohmann::json& judged,
                  const nlohmann::json& floor) {
   for (const auto& [region, suffix] : {std::pair{"skin", "_skin"}, std::pair{"all", "_frame"}}) {
     if (!judged.contains(region)) continue;
@@ -55,23 +55,23 @@ void add_figures(reports::ConfigResult& row, const nlohmann::json& judged,
 }
 
 std::optional<std::string> chosen_id(const reports::Recommendation& r,
-                                     const reports::SweepTable& table) {
+                                     const results::SweepTable& table) {
   if (!r.chosen) return std::nullopt;
   return table.rows[*r.chosen].id;
 }
 
 }  // namespace
 
-nlohmann::json judge_sweep_with_truth(reports::SweepTable& table, const std::string& out_dir,
+nlohmann::json judge_sweep_with_truth(results::SweepTable& table, const std::string& out_dir,
                                       const GroupTruth& truth_of) {
-  const std::string metric = recommend_metric(table.rows);
+  const std::string metric = reports::recommend_metric(table.rows);
   const char* region = metric == "flip_skin" ? "skin" : "all";
-  reports::SweepTable judged = table;  // the verdicts the truth gives
+  results::SweepTable judged = table;  // the verdicts the truth gives
   std::map<std::string, Truth> truths;
   std::map<std::string, nlohmann::json> groups;
   std::map<std::string, std::size_t> best;  // per group, the row closest to the truth
   for (std::size_t i = 0; i < table.rows.size(); ++i) {
-    reports::ConfigResult& row = table.rows[i];
+    results::ConfigResult& row = table.rows[i];
     if (row.frame_image.empty()) continue;
     const RowImages images = load_row(row, out_dir);
     auto it = truths.find(row.group);
@@ -80,7 +80,7 @@ nlohmann::json judge_sweep_with_truth(reports::SweepTable& table, const std::str
       // The report shows it beside the frames (sweep_report_truth.h), as they are seen.
       const std::string image = fmt::format("{}/g{}.png", kTruthImageDir, groups.size());
       fs::create_directories(fs::path(out_dir) / kTruthImageDir);
-      quality::save_png(it->second.images.image, fs::path(out_dir) / image);
+      image::save_png(it->second.images.image, fs::path(out_dir) / image);
       groups[row.group] = {{"group", row.group},
                            {"truth", it->second.about},
                            {"image", image},
@@ -100,7 +100,7 @@ nlohmann::json judge_sweep_with_truth(reports::SweepTable& table, const std::str
   // best is the one closest to the truth.
   for (auto& [group, b] : best) {
     const RowImages best_images = load_row(table.rows[b], out_dir);
-    for (reports::ConfigResult& row : judged.rows) {
+    for (results::ConfigResult& row : judged.rows) {
       if (row.group != group || row.frame_image.empty()) continue;
       const RowImages images = load_row(row, out_dir);
       row.vs_best = compare_frames(images.frame, best_images.frame, best_images.mask());

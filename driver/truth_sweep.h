@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "driver/truth_judge.h"
-#include "reports/sweep_table.h"
+#include "results/sweep_table.h"
 
 namespace skinsim::driver {
 
@@ -18,7 +18,7 @@ namespace skinsim::driver {
 inline constexpr const char* kTruthImageDir = "truth";
 
 // The truth of one group's view: `row` is one of its configurations, its frame width x height.
-using GroupTruth = std::function<Truth(const reports::ConfigResult& row, int width, int height)>;
+using GroupTruth = std::function<Truth(const results::ConfigResult& row, int width, int height)>;
 
 // Adds to each row's quality its figures against its group's truth (frame.png and the
 // reference's skin mask from `out_dir`): truth_psnr_skin, truth_ssim_skin, truth_flip_skin,
@@ -31,7 +31,7 @@ using GroupTruth = std::function<Truth(const reports::ConfigResult& row, int wid
 // Returns, for results.json's "truth", per group: where its truth came from, its image, its
 // noise floor, the configuration recommended when the reference judges and when the truth
 // does, and the configurations whose verdict "visibly different" changes.
-nlohmann::json judge_sweep_with_truth(reports::SweepTable& table, const std::string& out_dir,
+nlohmann::json judge_sweep_with_truth(results::SweepTable& table, const std::string& out_dir,
                                       const GroupTruth& truth_of);
 
 // "ipad4, 64x48: the recommendation stays scale 0.5 (…); 2 of 2 visibility verdicts stay":

@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "gpu_model/frame_cost.h"
+#include "results/pass_rows.h"
 #include "util/check.h"
 
 namespace skinsim::driver {
@@ -134,7 +135,7 @@ Validation compare_measurements(const Measurements& measured, const gpu_model::F
   std::vector<std::string> names;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     ValidationRow row;
-    row.name = i < pass_count ? timing.passes[i].name : gpu_model::kDramWaitRow;
+    row.name = i < pass_count ? timing.passes[i].name : results::kDramWaitRow;
     row.bottleneck =
         i < pass_count ? gpu_model::unit_name(timing.passes[i].bottleneck) : "bandwidth";
     row.model = rows[i];

@@ -81,12 +81,10 @@ struct PassSlot {
   double render_start_ms = 0.0;
   double render_end_ms = 0.0;
   // render_end - previous render_end: the pass's share of the frame, what every output calls
-  // the pass's "ms". The passes' exposed_ms plus FrameTiming::dram_wait_ms add up to frame_ms.
+  // the pass's "ms". The passes' exposed_ms plus FrameTiming::dram_wait_ms (listed as
+  // results::kDramWaitRow) add up to frame_ms.
   double exposed_ms = 0.0;
 };
-
-// The name under which outputs list FrameTiming::dram_wait_ms beside the passes.
-inline constexpr const char* kDramWaitRow = "dram_wait";
 
 // Dynamic energy (energy.h), millijoules by cause.
 struct EnergyParts {

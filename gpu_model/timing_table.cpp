@@ -6,6 +6,7 @@
 
 #include "gpu_model/energy.h"
 #include "gpu_model/profile_loader.h"
+#include "results/pass_rows.h"
 
 namespace skinsim::gpu_model {
 namespace {
@@ -38,7 +39,8 @@ std::string format_frame_table(const FrameTiming& frame) {
         frame.energy.passes[i].mj.total());
   }
   if (frame.dram_wait_ms > 0.0) {
-    out += fmt::format("{:<24} {:>8.3f} {:>10}\n", kDramWaitRow, frame.dram_wait_ms, "bandwidth");
+    out += fmt::format("{:<24} {:>8.3f} {:>10}\n", results::kDramWaitRow, frame.dram_wait_ms,
+                       "bandwidth");
   }
   const FrameEnergy& e = frame.energy;
   out += fmt::format("{:<24} {:>8.3f} {:>10} {:>66.2f} {:>8.3f}\n", "frame", frame.frame_ms,
@@ -63,7 +65,7 @@ std::string frame_table_legend() {
              "overlapping it\n"
              "  ALU% TEX% ISP% BW% = unit busy time / alone ms; bottleneck = the busiest unit; "
              "bal% = mean / busiest 3D core; mJ = dynamic energy (docs/cost-model.md)\n  ") +
-         kDramWaitRow +
+         results::kDramWaitRow +
          " (when > 0) = the frame's DRAM traffic outlasting the pipeline; docs/cost-model.md\n";
 }
 

@@ -79,14 +79,14 @@ glm::vec3 color_map(ColorMap map, float t) {
   return colours[0];
 }
 
-Image false_colour(const ScalarMap& map, ColorMap colors) {
+image::Image false_colour(const image::ScalarMap& map, ColorMap colors) {
   if (map.width <= 0 || map.height <= 0 ||
       map.values.size() != static_cast<std::size_t>(map.width) * map.height) {
     throw QualityError("false_colour: map of " + std::to_string(map.width) + "x" +
                        std::to_string(map.height) + " holds " + std::to_string(map.values.size()) +
                        " values");
   }
-  Image image;
+  image::Image image;
   image.width = map.width;
   image.height = map.height;
   image.rgb.resize(map.values.size());

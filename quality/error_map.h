@@ -4,7 +4,7 @@
 #include <glm/common.hpp>
 #include <glm/vec3.hpp>
 
-#include "quality/image.h"
+#include "image/image.h"
 
 namespace skinsim::quality {
 
@@ -14,6 +14,6 @@ enum class ColorMap { kMagma, kViridis };
 glm::vec3 color_map(ColorMap map, float t);
 
 // One pixel per map value, value clamped to [0,1]; a NaN value is drawn as the map's 0.
-Image false_colour(const ScalarMap& map, ColorMap colors = ColorMap::kMagma);
+image::Image false_colour(const image::ScalarMap& map, ColorMap colors = ColorMap::kMagma);
 
 }  // namespace skinsim::quality

@@ -184,8 +184,9 @@ class SrgbDecoder {
 
 // Source columns of row y: YCxCz and luminance, a vector of pixels at a time.
 template <class V>
-[[gnu::always_inline]] inline void write_source_row(const Image& image, int y, Columns columns,
-                                                    const SrgbDecoder& decode, float* const* rows) {
+[[gnu::always_inline]] inline void write_source_row(const image::Image& image, int y,
+                                                    Columns columns, const SrgbDecoder& decode,
+                                                    float* const* rows) {
   const std::size_t begin = static_cast<std::size_t>(y) * image.width;
   for (int x = columns.begin; x < columns.end; x += kLanes<V>) {
     const int n = std::min(kLanes<V>, columns.end - x);
@@ -204,8 +205,9 @@ template <class V>
   }
 }
 
-[[gnu::target("avx2")]] void write_source_row_avx2(const Image& image, int y, Columns columns,
-                                                   const SrgbDecoder& decode, float* const* rows) {
+[[gnu::target("avx2")]] void write_source_row_avx2(const image::Image& image, int y,
+                                                   Columns columns, const SrgbDecoder& decode,
+                                                   float* const* rows) {
   write_source_row<Float8>(image, y, columns, decode, rows);
 }
 
@@ -306,7 +308,7 @@ struct NearDifferences {
   std::vector<std::uint8_t> mask;
   std::vector<Columns> rows;
 };
-NearDifferences near_differences(const Image& a, const Image& b, int radius) {
+NearDifferences near_differences(const image::Image& a, const image::Image& b, int radius) {
   const int w = a.width, h = a.height;
   std::vector<std::uint8_t> across(a.pixel_count(), 0);  // a difference within radius along x
   tbb::parallel_for(0, h, [&](int y) {
@@ -389,8 +391,8 @@ template <class Sink>
 // lane is -1. `sink` is a generic lambda marked always_inline: it is called with four lanes
 // (SSE2) or eight (AVX2, where use_avx2()), and must be compiled into each width's loop.
 template <class Sink>
-void stream_flip_pixels(std::span<const Image* const> images, double ppd,
-                        const Image* unchanged_from, const Sink& sink) {
+void stream_flip_pixels(std::span<const image::Image* const> images, double ppd,
+                        const image::Image* unchanged_from, const Sink& sink) {
   const FeatureKernels features = feature_kernels(ppd);
   const int count = static_cast<int>(images.size());
   SeparableStream stream{images[0]->width, images[0]->height, count * kSourcesPerImage, {}, {}, {}};
@@ -435,13 +437,13 @@ void stream_flip_pixels(std::span<const Image* const> images, double ppd,
 
 }  // namespace
 
-FlipResult flip(const Image& test, const Image& reference, const Mask* mask,
+FlipResult flip(const image::Image& test, const image::Image& reference, const image::Mask* mask,
                 const FlipParams& params) {
   check_metric_inputs("FLIP", test, reference, mask);
   const float cmax = max_colour_difference();
   FlipResult result;
-  result.map = ScalarMap{test.width, test.height, std::vector<float>(test.pixel_count())};
-  const std::array<const Image*, 2> images{&test, &reference};
+  result.map = image::ScalarMap{test.width, test.height, std::vector<float>(test.pixel_count())};
+  const std::array<const image::Image*, 2> images{&test, &reference};
   // The map starts at 0, the error wherever the images do not differ nearby.
   stream_flip_pixels(
       images, checked_pixels_per_degree(params), &reference,
@@ -453,11 +455,11 @@ FlipResult flip(const Image& test, const Image& reference, const Mask* mask,
   return result;
 }
 
-FlipFeatures::FlipFeatures(const Image& image, const FlipParams& params)
+FlipFeatures::FlipFeatures(const image::Image& image, const FlipParams& params)
     : image_(image), params_(params) {
   check_metric_inputs("FLIP", image, image, nullptr);
   for (std::vector<float>& plane : planes_) plane.resize(image.pixel_count());
-  const std::array<const Image*, 1> images{&image};
+  const std::array<const image::Image*, 1> images{&image};
   stream_flip_pixels(
       images, checked_pixels_per_degree(params), nullptr,
       [&](std::size_t i, int n, auto, const auto& p, const auto*) __attribute__((always_inline)) {
@@ -469,7 +471,7 @@ FlipFeatures::FlipFeatures(const Image& image, const FlipParams& params)
       });
 }
 
-FlipResult flip(const Image& test, const FlipFeatures& reference, const Mask* mask) {
+FlipResult flip(const image::Image& test, const FlipFeatures& reference, const image::Mask* mask) {
   check_metric_inputs("FLIP", test, test, mask);
   if (test.width != reference.width() || test.height != reference.height()) {
     throw QualityError("FLIP: test image is " + std::to_string(test.width) + "x" +
@@ -479,8 +481,8 @@ FlipResult flip(const Image& test, const FlipFeatures& reference, const Mask* ma
   }
   const float cmax = max_colour_difference();
   FlipResult result;
-  result.map = ScalarMap{test.width, test.height, std::vector<float>(test.pixel_count())};
-  const std::array<const Image*, 1> images{&test};
+  result.map = image::ScalarMap{test.width, test.height, std::vector<float>(test.pixel_count())};
+  const std::array<const image::Image*, 1> images{&test};
   stream_flip_pixels(
       images, checked_pixels_per_degree(reference.params()), &reference.image(),
       [&](std::size_t i, int n, auto keep, const auto& t, const auto*)

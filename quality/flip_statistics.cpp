@@ -40,11 +40,11 @@ std::size_t count_visible(const std::vector<float>& values) {
 
 }  // namespace
 
-std::size_t flip_visible_pixels(const ScalarMap& map) {
+std::size_t flip_visible_pixels(const image::ScalarMap& map) {
   return count_visible(map.values);
 }
 
-FlipStatistics flip_statistics(const ScalarMap& map, const Mask* mask) {
+FlipStatistics flip_statistics(const image::ScalarMap& map, const image::Mask* mask) {
   if (mask && (mask->width != map.width || mask->height != map.height)) {
     throw QualityError("FLIP statistics: mask and map sizes differ");
   }

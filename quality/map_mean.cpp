@@ -3,7 +3,7 @@
 
 namespace skinsim::quality {
 
-double map_mean(const ScalarMap& map, const Mask* mask) {
+double map_mean(const image::ScalarMap& map, const image::Mask* mask) {
   return masked_mean(map.values, map.width, map.height, mask);
 }
 

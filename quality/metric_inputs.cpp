@@ -38,7 +38,7 @@ bool all_finite(const float* values, std::size_t count) {
   return finite_so_far;
 }
 
-void check_image(std::string_view metric, std::string_view role, const Image& image) {
+void check_image(std::string_view metric, std::string_view role, const image::Image& image) {
   const std::string where = std::string(metric) + ": " + std::string(role) + " image";
   if (image.width <= 0 || image.height <= 0) {
     throw QualityError(where + " is empty (" + size_text(image.width, image.height) + ")");
@@ -68,8 +68,8 @@ void check_image(std::string_view metric, std::string_view role, const Image& im
 
 }  // namespace
 
-void check_metric_inputs(std::string_view metric, const Image& test, const Image& reference,
-                         const Mask* mask) {
+void check_metric_inputs(std::string_view metric, const image::Image& test,
+                         const image::Image& reference, const image::Mask* mask) {
   check_image(metric, "test", test);
   // FlipFeatures (one image) and flip against them (whose reference was checked when it was
   // prepared) pass one image in both roles: scan it once.

@@ -9,20 +9,20 @@
 #include <string_view>
 #include <vector>
 
-#include "quality/image.h"
+#include "image/image.h"
 
 namespace skinsim::quality {
 
 // Throws QualityError naming the metric and the problem: empty or mismatched sizes, a pixel
 // array that does not match width x height, a mask of another size or selecting no pixel, or
 // a NaN/infinite value.
-void check_metric_inputs(std::string_view metric, const Image& test, const Image& reference,
-                         const Mask* mask);
+void check_metric_inputs(std::string_view metric, const image::Image& test,
+                         const image::Image& reference, const image::Mask* mask);
 
 // Mean of `values` (width x height) over the mask (all pixels without one). Rows are summed in
 // parallel and the row sums added in row order, so the result does not depend on threads.
 template <typename T>
-double masked_mean(const std::vector<T>& values, int width, int height, const Mask* mask) {
+double masked_mean(const std::vector<T>& values, int width, int height, const image::Mask* mask) {
   std::vector<double> row_sums(height, 0.0);
   std::vector<std::size_t> row_counts(height, 0);
   tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {

@@ -9,25 +9,26 @@
 #include <glm/vec3.hpp>
 #include <vector>
 
-#include "quality/image.h"
+#include "image/image.h"
 
 namespace skinsim::quality {
 
 // Peak signal-to-noise ratio in dB with peak 1.0 over the R, G and B values of the counted
 // pixels: -10 log10(MSE). Identical images give +infinity (see docs/quality-metrics.md for
 // how JSON output represents it).
-double psnr(const Image& test, const Image& reference, const Mask* mask = nullptr);
+double psnr(const image::Image& test, const image::Image& reference,
+            const image::Mask* mask = nullptr);
 
 // Structural similarity (Wang, Bovik, Sheikh, Simoncelli 2004) of the luma
 // Y' = 0.299 R' + 0.587 G' + 0.114 B' of the encoded values (as MATLAB's rgb2gray): 11x11
 // Gaussian window (sigma 1.5), K1 = 0.01, K2 = 0.03, L = 1, edge-clamped borders. Returns the
 // mean of the SSIM map over the mask; writes the full map to `map` if given.
-double ssim(const Image& test, const Image& reference, const Mask* mask = nullptr,
-            ScalarMap* map = nullptr);
+double ssim(const image::Image& test, const image::Image& reference,
+            const image::Mask* mask = nullptr, image::ScalarMap* map = nullptr);
 
 // Mean of a per-pixel map over the mask (all pixels without one), as the metrics average
 // their maps: ssim(a, b, mask) == map_mean(m, mask) where ssim(a, b, nullptr, &m).
-double map_mean(const ScalarMap& map, const Mask* mask = nullptr);
+double map_mean(const image::ScalarMap& map, const image::Mask* mask = nullptr);
 
 // Pixels per degree of visual angle for an observer `distance_m` from a monitor
 // `monitor_width_m` wide with `monitor_width_px` pixels across (small-angle approximation, as
@@ -41,12 +42,12 @@ struct FlipParams {
 };
 
 struct FlipResult {
-  double mean = 0.0;  // mean error over the mask, in [0,1]
-  ScalarMap map;      // per-pixel error in [0,1], every pixel (the mask only affects the mean)
+  double mean = 0.0;     // mean error over the mask, in [0,1]
+  image::ScalarMap map;  // per-pixel error in [0,1], every pixel (the mask only affects the mean)
 };
 
-FlipResult flip(const Image& test, const Image& reference, const Mask* mask = nullptr,
-                const FlipParams& params = {});
+FlipResult flip(const image::Image& test, const image::Image& reference,
+                const image::Mask* mask = nullptr, const FlipParams& params = {});
 
 // An image's FLIP pixels (what FLIP derives from one of its two images per pixel: the
 // filtered colour in Hunt-adjusted L*a*b* and the edge and point strengths), computed once to
@@ -56,20 +57,21 @@ FlipResult flip(const Image& test, const Image& reference, const Mask* mask = nu
 class FlipFeatures {
  public:
   enum Plane { kLightness, kA, kB, kEdge, kPoint, kPlanes };
-  explicit FlipFeatures(const Image& image, const FlipParams& params = {});
+  explicit FlipFeatures(const image::Image& image, const FlipParams& params = {});
   int width() const { return image_.width; }
   int height() const { return image_.height; }
-  const Image& image() const { return image_; }  // kept: where a test equals it, error is 0
+  const image::Image& image() const { return image_; }  // kept: where a test equals it, error is 0
   const FlipParams& params() const { return params_; }
   const float* plane(Plane p) const { return planes_[p].data(); }
 
  private:
-  Image image_;
+  image::Image image_;
   FlipParams params_;
   std::array<std::vector<float>, kPlanes> planes_;
 };
 
-FlipResult flip(const Image& test, const FlipFeatures& reference, const Mask* mask = nullptr);
+FlipResult flip(const image::Image& test, const FlipFeatures& reference,
+                const image::Mask* mask = nullptr);
 
 // When a FLIP difference is visible. FLIP has no threshold of its own; skinsim calls a pixel
 // visibly different when its error exceeds what one just-noticeable lightness step
@@ -94,8 +96,8 @@ struct FlipStatistics {
   double visible_percent() const;
   bool visible(const FlipParams& params = {}) const;  // visible_pixels >= the area above
 };
-FlipStatistics flip_statistics(const ScalarMap& map, const Mask* mask = nullptr);
+FlipStatistics flip_statistics(const image::ScalarMap& map, const image::Mask* mask = nullptr);
 // flip_statistics(map).visible_pixels alone, without the percentiles' selection.
-std::size_t flip_visible_pixels(const ScalarMap& map);
+std::size_t flip_visible_pixels(const image::ScalarMap& map);
 
 }  // namespace skinsim::quality

@@ -10,7 +10,7 @@
 
 namespace skinsim::quality {
 
-double psnr(const Image& test, const Image& reference, const Mask* mask) {
+double psnr(const image::Image& test, const image::Image& reference, const image::Mask* mask) {
   check_metric_inputs("PSNR", test, reference, mask);
   // Per-pixel squared error averaged over R, G, B, in double so that a uniform offset d gives
   // exactly -20 log10(d) up to rounding.

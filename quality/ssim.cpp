@@ -22,7 +22,8 @@ float luma(const glm::vec3& p) {
 
 }  // namespace
 
-double ssim(const Image& test, const Image& reference, const Mask* mask, ScalarMap* map) {
+double ssim(const image::Image& test, const image::Image& reference, const image::Mask* mask,
+            image::ScalarMap* map) {
   check_metric_inputs("SSIM", test, reference, mask);
   const std::vector<float> window = gaussian_kernel(kWindowSigma, kWindowRadius);
   // Source channels: x, y, x^2, y^2, xy; each is averaged by the window along x, then y.
@@ -61,7 +62,7 @@ double ssim(const Image& test, const Image& reference, const Mask* mask, ScalarM
   };
   run_separable_stream(stream, source, sink);
   const double mean = masked_mean(values, test.width, test.height, mask);
-  if (map != nullptr) *map = ScalarMap{test.width, test.height, std::move(values)};
+  if (map != nullptr) *map = image::ScalarMap{test.width, test.height, std::move(values)};
   return mean;
 }
 

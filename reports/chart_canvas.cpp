@@ -26,9 +26,9 @@
 #include <filesystem>
 #include <vector>
 
+#include "image/error.h"
+#include "image/image.h"
 #include "io/atomic_file.h"
-#include "quality/error.h"
-#include "quality/image.h"
 #include "reports/chart_svg.h"
 #include "reports/display_check.h"
 #include "reports/error.h"
@@ -186,8 +186,8 @@ void write_png(vtkRenderWindow* window, const std::string& path) {
                 row);
   }
   try {
-    quality::write_png_u8(path, size[0], size[1], 3, top_down);
-  } catch (const quality::QualityError& e) {
+    image::write_png_u8(path, size[0], size[1], 3, top_down);
+  } catch (const image::ImageError& e) {
     throw ReportError("cannot write chart " + path + ": " + e.what());
   }
 }

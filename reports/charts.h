@@ -6,7 +6,7 @@
 #include <map>
 #include <string>
 
-#include "reports/sweep_table.h"
+#include "results/sweep_table.h"
 
 namespace skinsim::reports {
 
@@ -41,33 +41,34 @@ struct TradeoffSpec {
 // Whether a row is plotted on the trade-off chart of `spec`'s knobs: it has the series knob
 // and the order knob, if any (a sweep leaves out of a row the knobs its technique does not
 // use, and such a row has no place on a line ordered by that knob).
-bool on_tradeoff_chart(const ConfigResult& row, const TradeoffSpec& spec);
+bool on_tradeoff_chart(const results::ConfigResult& row, const TradeoffSpec& spec);
 
 // Frame time vs quality, one polyline per series_knob value, the Pareto front of the plotted
 // rows highlighted, the recommended configuration (pareto_knee over every row of the table)
 // marked if the chart plots it, and the frame budget as a vertical line labelled e.g.
 // "33.3 ms (30 fps)". Throws ReportError if no row on the chart has the metric.
-ChartFiles write_tradeoff_chart(const SweepTable& table, const TradeoffSpec& spec,
+ChartFiles write_tradeoff_chart(const results::SweepTable& table, const TradeoffSpec& spec,
                                 const std::string& path_stem, const ChartOptions& options = {});
 
 // Horizontal stacked bars of per-pass ms, one bar per configuration, coloured by pass; each
 // bar's label names the configuration's dominant bottleneck. Budget drawn as a vertical line.
-ChartFiles write_pass_stack_chart(const SweepTable& table, const std::string& path_stem,
+ChartFiles write_pass_stack_chart(const results::SweepTable& table, const std::string& path_stem,
                                   const ChartOptions& options = {});
 
 // Heat map of ms per tile over the frame, with a colour bar. PNG only (see ChartFiles.svg):
 // Debian's libgl2ps cannot embed the raster map in SVG.
-ChartFiles write_tile_cost_heatmap(const TileHeatmap& heatmap, const std::string& path_stem,
-                                   const ChartOptions& options = {});
+ChartFiles write_tile_cost_heatmap(const results::TileHeatmap& heatmap,
+                                   const std::string& path_stem, const ChartOptions& options = {});
 
 // The bottleneck unit of every tile, one colour per unit, with a legend bar naming them.
 // PNG only, like the heat map.
 // Throws ReportError if the heat map has no bottleneck entries.
-ChartFiles write_tile_bottleneck_map(const TileHeatmap& heatmap, const std::string& path_stem,
+ChartFiles write_tile_bottleneck_map(const results::TileHeatmap& heatmap,
+                                     const std::string& path_stem,
                                      const ChartOptions& options = {});
 
 // DRAM traffic of one configuration, one stacked bar per pass split by cause, in MB (10^6 B).
-ChartFiles write_dram_by_cause_chart(const ConfigResult& row, const std::string& path_stem,
+ChartFiles write_dram_by_cause_chart(const results::ConfigResult& row, const std::string& path_stem,
                                      const ChartOptions& options = {});
 
 // The quality metric a chart plots on its y axis.
@@ -83,7 +84,7 @@ struct QualityAxis {
 // profile's energy figures at their minima and maxima) as a grey bar, configurations over the
 // frame budget crossed, and each group's recommended configuration (chosen by frame time and
 // quality, recommendation.h) as a diamond. Throws ReportError if no row has the metric.
-ChartFiles write_energy_chart(const SweepTable& table, const QualityAxis& quality,
+ChartFiles write_energy_chart(const results::SweepTable& table, const QualityAxis& quality,
                               const std::string& path_stem, const ChartOptions& options = {});
 
 // The "33.3 ms (30 fps)" text used for the budget line.

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "reports/sweep_table.h"
+#include "results/sweep_table.h"
 
 namespace skinsim::reports {
 
@@ -46,14 +46,14 @@ struct ValueDelta {
 struct ImageDiff {
   std::string a_image;  // paths as the page links them (relative to the output directory)
   std::string b_image;
-  std::string difference_image;  // |B - A| amplified, full size ("" when not written)
-  bool identical = false;        // same pixels: no FLIP needed
-  std::string size_mismatch;     // e.g. "256x192 vs 320x240": not comparable, so different
-  FrameComparison flip;          // B's frame against A's
-  std::string over;              // what FLIP counted, e.g. "the whole frame"
-  double threshold = 0.0;        // the rule: pixels above this FLIP error...
-  double visible_area_px = 0.0;  // ...covering at least this many pixels are visible
-  std::vector<CropWindow> windows;
+  std::string difference_image;   // |B - A| amplified, full size ("" when not written)
+  bool identical = false;         // same pixels: no FLIP needed
+  std::string size_mismatch;      // e.g. "256x192 vs 320x240": not comparable, so different
+  results::FrameComparison flip;  // B's frame against A's
+  std::string over;               // what FLIP counted, e.g. "the whole frame"
+  double threshold = 0.0;         // the rule: pixels above this FLIP error...
+  double visible_area_px = 0.0;   // ...covering at least this many pixels are visible
+  std::vector<results::CropWindow> windows;
 
   bool different() const { return !size_mismatch.empty() || flip.visible; }
 };

@@ -7,6 +7,7 @@
 
 #include "io/atomic_file.h"
 #include "reports/error.h"
+#include "reports/sequence_sweep.h"
 
 namespace skinsim::reports {
 
@@ -18,14 +19,14 @@ struct Columns {
   std::vector<std::string> metrics;
 };
 
-Columns collect_columns(const SweepTable& table) {
+Columns collect_columns(const results::SweepTable& table) {
   std::set<std::string> knobs;
   std::set<std::string> metrics;
   Columns c;
-  for (const ConfigResult& r : table.rows) {
+  for (const results::ConfigResult& r : table.rows) {
     for (const auto& [k, v] : r.knobs) knobs.insert(k);
     for (const auto& [k, v] : r.quality) metrics.insert(k);
-    for (const PassCost& p : r.passes) {
+    for (const results::PassCost& p : r.passes) {
       if (std::find(c.passes.begin(), c.passes.end(), p.name) == c.passes.end()) {
         c.passes.push_back(p.name);
       }
@@ -64,7 +65,7 @@ std::string csv_field(const std::string& text) {
   return out + "\"";
 }
 
-std::vector<std::string> sweep_csv_columns(const SweepTable& table) {
+std::vector<std::string> sweep_csv_columns(const results::SweepTable& table) {
   const Columns c = collect_columns(table);
   std::vector<std::string> cols = {"id", "label"};
   cols.insert(cols.end(), c.knobs.begin(), c.knobs.end());
@@ -90,13 +91,13 @@ std::vector<std::string> sweep_csv_columns(const SweepTable& table) {
   return cols;
 }
 
-std::string sweep_csv(const SweepTable& table) {
+std::string sweep_csv(const results::SweepTable& table) {
   const std::vector<std::string> cols = sweep_csv_columns(table);
   const Columns c = collect_columns(table);
   std::string out;
   append_record(out, cols);
-  for (const ConfigResult& r : table.rows) {
-    const std::vector<PassCost> passes = merged_passes(r);
+  for (const results::ConfigResult& r : table.rows) {
+    const std::vector<results::PassCost> passes = merged_passes(r);
     std::vector<std::string> cells = {r.id, r.label};
     for (const std::string& k : c.knobs) cells.push_back(knob_value(r, k));
     cells.insert(cells.end(),
@@ -105,7 +106,7 @@ std::string sweep_csv(const SweepTable& table) {
                   csv_number(r.energy_mj_low), csv_number(r.energy_mj_high)});
     for (const std::string& name : c.passes) {
       auto it = std::find_if(passes.begin(), passes.end(),
-                             [&](const PassCost& p) { return p.name == name; });
+                             [&](const results::PassCost& p) { return p.name == name; });
       cells.push_back(it == passes.end() ? "" : csv_number(it->ms));
       cells.push_back(it == passes.end() ? "" : it->bottleneck);
     }
@@ -115,7 +116,7 @@ std::string sweep_csv(const SweepTable& table) {
     }
     cells.push_back(r.reference_image.empty() ? "" : yes_no(r.visible_vs_reference));
     cells.push_back(r.group);
-    for (const std::optional<FrameComparison>& against : {r.vs_finest, r.vs_best}) {
+    for (const std::optional<results::FrameComparison>& against : {r.vs_finest, r.vs_best}) {
       if (!against) {
         cells.insert(cells.end(), {"", "", "", ""});
         continue;
@@ -130,7 +131,7 @@ std::string sweep_csv(const SweepTable& table) {
   return out;
 }
 
-void write_sweep_csv(const SweepTable& table, const std::string& path) {
+void write_sweep_csv(const results::SweepTable& table, const std::string& path) {
   io::write_file_atomically(path, sweep_csv(table));
 }
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "reports/sweep_table.h"
+#include "results/sweep_table.h"
 
 namespace skinsim::reports {
 
@@ -13,16 +13,16 @@ namespace skinsim::reports {
 // pass (in first-appearance order over the rows; same-named passes of a row merged as
 // merged_passes does) "<pass>.ms" and "<pass>.bottleneck",
 // then every quality metric (sorted by name). Throws ReportError if two columns collide.
-std::vector<std::string> sweep_csv_columns(const SweepTable& table);
+std::vector<std::string> sweep_csv_columns(const results::SweepTable& table);
 
 // The whole CSV text (RFC 4180 quoting, "\n" line ends). Cells a row lacks are empty.
-std::string sweep_csv(const SweepTable& table);
+std::string sweep_csv(const results::SweepTable& table);
 
 // A number as a CSV cell: the shortest text that reads back to the same double.
 std::string csv_number(double v);
 
 // Writes sweep_csv(table) to `path` atomically.
-void write_sweep_csv(const SweepTable& table, const std::string& path);
+void write_sweep_csv(const results::SweepTable& table, const std::string& path);
 
 // Quotes a field if it holds a comma, a double quote, CR or LF (RFC 4180 section 2).
 std::string csv_field(const std::string& text);

@@ -18,11 +18,11 @@
 
 namespace skinsim::reports {
 
-ChartFiles write_dram_by_cause_chart(const ConfigResult& row, const std::string& path_stem,
+ChartFiles write_dram_by_cause_chart(const results::ConfigResult& row, const std::string& path_stem,
                                      const ChartOptions& options) {
-  const std::vector<PassCost> passes = merged_passes(row);
+  const std::vector<results::PassCost> passes = merged_passes(row);
   std::set<std::string> cause_set;
-  for (const PassCost& p : passes) {
+  for (const results::PassCost& p : passes) {
     for (const auto& [cause, bytes] : p.dram_bytes_by_cause) cause_set.insert(cause);
   }
   if (cause_set.empty()) {

@@ -19,10 +19,10 @@
 
 namespace skinsim::reports {
 
-ChartFiles write_energy_chart(const SweepTable& table, const QualityAxis& quality,
+ChartFiles write_energy_chart(const results::SweepTable& table, const QualityAxis& quality,
                               const std::string& path_stem, const ChartOptions& options) {
-  std::vector<const ConfigResult*> rows;
-  for (const ConfigResult& r : table.rows) {
+  std::vector<const results::ConfigResult*> rows;
+  for (const results::ConfigResult& r : table.rows) {
     if (r.quality.count(quality.metric)) rows.push_back(&r);
   }
   if (rows.empty()) {
@@ -38,7 +38,7 @@ ChartFiles write_energy_chart(const SweepTable& table, const QualityAxis& qualit
               options);
 
   double y_lo = INFINITY, y_hi = -INFINITY, x_lo = INFINITY, x_hi = -INFINITY;
-  for (const ConfigResult* r : rows) {
+  for (const results::ConfigResult* r : rows) {
     y_lo = std::min(y_lo, r->quality.at(quality.metric));
     y_hi = std::max(y_hi, r->quality.at(quality.metric));
     x_lo = std::min(x_lo, r->energy_mj_low);
@@ -49,7 +49,7 @@ ChartFiles write_energy_chart(const SweepTable& table, const QualityAxis& qualit
 
   // Energy ranges over the profile's energy figures, as horizontal error bars.
   bool first = true;
-  for (const ConfigResult* r : rows) {
+  for (const results::ConfigResult* r : rows) {
     const double y = r->quality.at(quality.metric);
     add_range_bar(chart, "mJ range (profile's energy figures at their minima and maxima)",
                   r->energy_mj_low, r->energy_mj_high, y, first);
@@ -60,13 +60,13 @@ ChartFiles write_energy_chart(const SweepTable& table, const QualityAxis& qualit
   // in the same colour (unnamed in the legend: the caption says what it is).
   std::size_t colour = 0;
   for (const std::string& group : groups) {
-    std::vector<ConfigResult> members;
-    for (const ConfigResult* r : rows) {
+    std::vector<results::ConfigResult> members;
+    for (const results::ConfigResult* r : rows) {
       if (r->group == group) members.push_back(*r);
     }
     if (members.empty()) continue;
     std::vector<double> x, y;
-    for (const ConfigResult& r : members) {
+    for (const results::ConfigResult& r : members) {
       x.push_back(r.energy_mj);
       y.push_back(r.quality.at(quality.metric));
     }
@@ -74,7 +74,7 @@ ChartFiles write_energy_chart(const SweepTable& table, const QualityAxis& qualit
     add_series(chart, group.empty() ? "configurations" : group, x, y, rgb, vtkPen::NO_PEN);
     std::vector<double> front_x, front_y;
     for (std::size_t i : pareto_front(members, quality.metric, quality.higher_is_better,
-                                      &ConfigResult::energy_mj)) {
+                                      &results::ConfigResult::energy_mj)) {
       front_x.push_back(members[i].energy_mj);
       front_y.push_back(members[i].quality.at(quality.metric));
     }
@@ -86,7 +86,7 @@ ChartFiles write_energy_chart(const SweepTable& table, const QualityAxis& qualit
 
   // Over the frame budget: however little energy, not a candidate.
   std::vector<double> over_x, over_y;
-  for (const ConfigResult* r : rows) {
+  for (const results::ConfigResult* r : rows) {
     if (r->frame_ms <= table.budget_ms) continue;
     over_x.push_back(r->energy_mj);
     over_y.push_back(r->quality.at(quality.metric));
@@ -104,7 +104,7 @@ ChartFiles write_energy_chart(const SweepTable& table, const QualityAxis& qualit
     first = true;
     for (const Recommendation& rec : recommend(table, quality.metric)) {
       if (!rec.chosen) continue;
-      const ConfigResult& r = table.rows[*rec.chosen];
+      const results::ConfigResult& r = table.rows[*rec.chosen];
       vtkPlotPoints* mark =
           add_series(chart, "recommended (by frame time and quality)", {r.energy_mj},
                      {r.quality.at(quality.metric)}, {200, 0, 0}, vtkPen::NO_PEN);

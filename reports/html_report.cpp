@@ -18,6 +18,8 @@
 #include "reports/pareto.h"
 #include "reports/recommendation.h"
 #include "reports/report_charts.h"
+#include "reports/sequence_sweep.h"
+#include "reports/sweep_json.h"
 #include "reports/timeline_svg.h"
 
 namespace skinsim::reports {
@@ -45,22 +47,23 @@ std::string mj(double v) {
 std::string metric_text(double v) {
   return fmt::format("{:.4g}", v);
 }
-std::string name_of(const ConfigResult& r) {
+std::string name_of(const results::ConfigResult& r) {
   return r.label.empty() ? r.id : r.label;
 }
 
 // Knobs whose value differs between rows (shown per row) and knobs with one value (shown once).
 std::pair<std::vector<std::string>, std::map<std::string, std::string>> split_knobs(
-    const SweepTable& t) {
+    const results::SweepTable& t) {
   std::map<std::string, std::set<std::string>> values;
-  for (const ConfigResult& r : t.rows) {
+  for (const results::ConfigResult& r : t.rows) {
     for (const auto& [k, v] : r.knobs) values[k].insert(v);
   }
   std::vector<std::string> varying;
   std::map<std::string, std::string> fixed;
   for (const auto& [k, vs] : values) {
-    const bool everywhere = std::all_of(t.rows.begin(), t.rows.end(),
-                                        [&](const ConfigResult& r) { return r.knobs.count(k); });
+    const bool everywhere =
+        std::all_of(t.rows.begin(), t.rows.end(),
+                    [&](const results::ConfigResult& r) { return r.knobs.count(k); });
     if (vs.size() == 1 && everywhere)
       fixed[k] = *vs.begin();
     else
@@ -69,17 +72,17 @@ std::pair<std::vector<std::string>, std::map<std::string, std::string>> split_kn
   return {varying, fixed};
 }
 
-std::vector<std::string> metric_names(const SweepTable& t) {
+std::vector<std::string> metric_names(const results::SweepTable& t) {
   std::set<std::string> names;
-  for (const ConfigResult& r : t.rows) {
+  for (const results::ConfigResult& r : t.rows) {
     for (const auto& [k, v] : r.quality) names.insert(k);
   }
   return {names.begin(), names.end()};
 }
 
-std::string header_section(const SweepTable& t, const ReportOptions& o) {
+std::string header_section(const results::SweepTable& t, const ReportOptions& o) {
   std::size_t within = 0;
-  for (const ConfigResult& r : t.rows) within += r.frame_ms <= t.budget_ms;
+  for (const results::ConfigResult& r : t.rows) within += r.frame_ms <= t.budget_ms;
   std::string h = "<h1>" + esc(o.title) + "</h1>\n<div class=\"summary\">\n";
   h += "<b>Device:</b> " + esc(t.device) + "<br>\n<b>Scene:</b> " + esc(t.scene) +
        " &nbsp; <b>Resolution:</b> " + esc(t.resolution) + "<br>\n";
@@ -92,7 +95,7 @@ std::string header_section(const SweepTable& t, const ReportOptions& o) {
 }
 
 // One sentence per knob, per group, from the sweep's own rows (knob_verdicts).
-std::string verdicts_section(const SweepTable& t, const ReportOptions& o) {
+std::string verdicts_section(const results::SweepTable& t, const ReportOptions& o) {
   const std::vector<KnobVerdict> verdicts = knob_verdicts(t, o.quality_metric);
   std::string h = "<h2>What each knob does</h2>\n<div class=\"summary\">\n";
   if (verdicts.empty()) h += "<p>No knob was varied within a group, so none is judged.</p>\n";
@@ -126,11 +129,12 @@ std::string verdicts_section(const SweepTable& t, const ReportOptions& o) {
   return h + "</p>\n</div>\n";
 }
 
-std::string recommendation_section(const SweepTable& t, const ReportOptions& o,
+std::string recommendation_section(const results::SweepTable& t, const ReportOptions& o,
                                    const std::vector<Recommendation>& recommendations) {
   std::string h = "<h2>Recommendation</h2>\n<div class=\"recommend\">\n";
-  if (std::none_of(t.rows.begin(), t.rows.end(),
-                   [&](const ConfigResult& r) { return r.quality.count(o.quality_metric) > 0; })) {
+  if (std::none_of(t.rows.begin(), t.rows.end(), [&](const results::ConfigResult& r) {
+        return r.quality.count(o.quality_metric) > 0;
+      })) {
     h += "<p><b>No configuration has the quality metric " + esc(o.quality_metric) +
          ", so none is recommended.</b></p>\n";
   }
@@ -138,7 +142,7 @@ std::string recommendation_section(const SweepTable& t, const ReportOptions& o,
     h += "<p><b>" + esc(rec.group.empty() ? "All configurations" : rec.group) +
          "</b>: " + esc(rec.verdict) + ".";
     if (rec.chosen) {
-      const ConfigResult& r = t.rows[*rec.chosen];
+      const results::ConfigResult& r = t.rows[*rec.chosen];
       h += " " +
            esc(fmt::format("{:.1f} fps, {} = {:.4g} against the reference, {:.1f} MB DRAM "
                            "per frame.",
@@ -165,11 +169,11 @@ std::string recommendation_section(const SweepTable& t, const ReportOptions& o,
 // A slider between any two of the group's full frames (the reference and every configuration,
 // the recommended one on the left), with their difference; then per window the crops at 1:1
 // and magnified, with the difference's colour scale.
-std::string panel_html(const SweepTable& t, const ComparisonPanel& p,
+std::string panel_html(const results::SweepTable& t, const results::ComparisonPanel& p,
                        const std::map<std::string, std::string>& truth_images) {
   std::vector<std::pair<std::string, std::string>> frames = {{"reference", p.reference_image}};
   std::size_t left = 0;
-  for (const ConfigResult& r : t.rows) {
+  for (const results::ConfigResult& r : t.rows) {
     if (r.group != p.group || r.frame_image.empty()) continue;
     std::string what = r.id == p.chosen ? "recommended: " : r.id == p.best ? "best: " : "";
     if (r.id == p.chosen) left = frames.size();
@@ -190,7 +194,7 @@ std::string panel_html(const SweepTable& t, const ComparisonPanel& p,
                              (truth == truth_images.end() ? "" : ", |recommended - truth|"));
 }
 
-std::string comparison_section(const SweepTable& t, const ReportOptions& o) {
+std::string comparison_section(const results::SweepTable& t, const ReportOptions& o) {
   if (t.panels.empty()) return "";
   std::string h =
       "<h2>What the recommendation looks like</h2>\n<p>Pick any two frames of the group (the "
@@ -198,7 +202,7 @@ std::string comparison_section(const SweepTable& t, const ReportOptions& o) {
       "<i>difference</i> to see where they differ. Below, the windows where the recommended "
       "frame differs most (found in the FLIP error over skin), cut out of the reference, the "
       "best and the recommended frame. Click any image for full size.</p>\n";
-  for (const ComparisonPanel& p : t.panels) h += panel_html(t, p, o.truth_images);
+  for (const results::ComparisonPanel& p : t.panels) h += panel_html(t, p, o.truth_images);
   return h + image_compare_script();
 }
 
@@ -219,7 +223,7 @@ std::string yes_no(bool v) {
 }
 
 // Technique error against knob error, per technique and group (technique_errors).
-std::string errors_html(const SweepTable& t, const ReportOptions& o) {
+std::string errors_html(const results::SweepTable& t, const ReportOptions& o) {
   const std::vector<TechniqueError> errors = technique_errors(t, o.quality_metric);
   if (errors.empty()) return "";
   std::string h =
@@ -235,7 +239,7 @@ std::string errors_html(const SweepTable& t, const ReportOptions& o) {
   }
   h += "</ul>\n";
   std::size_t compared = 0, visible = 0;
-  for (const ConfigResult& r : t.rows) {
+  for (const results::ConfigResult& r : t.rows) {
     if (r.reference_image.empty()) continue;
     ++compared;
     visible += r.visible_vs_reference;
@@ -254,7 +258,7 @@ std::string errors_html(const SweepTable& t, const ReportOptions& o) {
   return h;
 }
 
-std::string table_section(const SweepTable& t, const ReportOptions& o,
+std::string table_section(const results::SweepTable& t, const ReportOptions& o,
                           const std::set<std::size_t>& chosen) {
   const auto [varying, fixed] = split_knobs(t);
   const std::vector<std::string> metrics = metric_names(t);
@@ -284,7 +288,7 @@ std::string table_section(const SweepTable& t, const ReportOptions& o,
   }
   h += "<th>Pareto</th></tr>\n";
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
-    const ConfigResult& r = t.rows[i];
+    const results::ConfigResult& r = t.rows[i];
     const char* cls =
         chosen.count(i) ? " class=\"chosen\"" : (r.frame_ms > t.budget_ms ? " class=\"over\"" : "");
     h += std::string("<tr") + cls + "><td class=\"text\">" + esc(name_of(r)) + "</td>";
@@ -322,13 +326,13 @@ std::string table_section(const SweepTable& t, const ReportOptions& o,
 // One row per technique (when the sweep compares several): its best configuration by the
 // quality metric, the passes it runs, its DRAM traffic, and the op profile of every skin
 // program it runs (eyes and background are the same for all techniques and left out).
-std::string techniques_section(const SweepTable& t, const ReportOptions& o) {
-  std::map<std::string, const ConfigResult*> best;
-  for (const ConfigResult& r : t.rows) {
+std::string techniques_section(const results::SweepTable& t, const ReportOptions& o) {
+  std::map<std::string, const results::ConfigResult*> best;
+  for (const results::ConfigResult& r : t.rows) {
     const std::string technique = knob_value(r, "technique");
     if (technique.empty()) continue;
     const auto q = r.quality.find(o.quality_metric);
-    const ConfigResult*& slot = best[technique];
+    const results::ConfigResult*& slot = best[technique];
     if (!slot) {
       slot = &r;
       continue;
@@ -350,10 +354,10 @@ std::string techniques_section(const SweepTable& t, const ReportOptions& o) {
       "<th>DRAM MB</th><th>skin programs</th></tr>\n";
   for (const auto& [technique, r] : best) {
     std::string passes, programs;
-    for (const PassCost& p : merged_passes(*r)) {
+    for (const results::PassCost& p : merged_passes(*r)) {
       passes += esc(p.name) + " " + ms(p.ms) + "<br>";
     }
-    for (const ProgramCost& p : r->programs) {
+    for (const results::ProgramCost& p : r->programs) {
       if (p.program == "background_fs" || p.program == "eye_fs") continue;
       programs +=
           fmt::format("{} ({}): {}+{}+{} ALU, {}+{} tex, {:.2f} M frag<br>", esc(p.program),
@@ -376,15 +380,15 @@ std::string thumbnail(const std::string& dir, const std::string& image, const st
          "\" loading=\"lazy\"></a> ";
 }
 
-std::string thumbnails_section(const SweepTable& t, const std::string& dir) {
+std::string thumbnails_section(const results::SweepTable& t, const std::string& dir) {
   std::string cells;
   std::set<std::string> references;
-  for (const ConfigResult& r : t.rows) {
+  for (const results::ConfigResult& r : t.rows) {
     if (r.reference_image.empty() || !references.insert(r.reference_image).second) continue;
     cells += "<div class=\"thumb\"><div><b>reference</b> (" + esc(r.group) + ")</div>" +
              thumbnail(dir, r.reference_image, "reference") + "</div>\n";
   }
-  for (const ConfigResult& r : t.rows) {
+  for (const results::ConfigResult& r : t.rows) {
     if (r.frame_image.empty() && r.error_image.empty()) continue;
     cells += "<div class=\"thumb\"><div>" + esc(name_of(r)) + "</div>";
     for (const std::string* path : {&r.frame_image, &r.error_image}) {
@@ -402,7 +406,7 @@ std::string thumbnails_section(const SweepTable& t, const std::string& dir) {
 
 // Each configuration's frame on the GPU's two stages (PVRTune's view): the recommended ones
 // open, the others folded.
-std::string timeline_section(const SweepTable& t, const std::set<std::size_t>& chosen) {
+std::string timeline_section(const results::SweepTable& t, const std::set<std::size_t>& chosen) {
   const std::vector<std::string> order = pass_order(t);
   std::string h =
       "<h2>Where the frame's time goes: TA and 3D</h2>\n<p>Each pass on the tiler (TA: vertex "
@@ -413,7 +417,7 @@ std::string timeline_section(const SweepTable& t, const std::set<std::size_t>& c
       "frame time. A grey <code>dram_wait</code> at the end is the time the frame's DRAM traffic "
       "outlasts the pipeline. Hover a box for its stage times.</p>\n";
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
-    const ConfigResult& r = t.rows[i];
+    const results::ConfigResult& r = t.rows[i];
     if (r.passes.empty()) continue;
     h += std::string("<details") + (chosen.count(i) ? " open" : "") + "><summary>" +
          esc(name_of(r)) + (chosen.count(i) ? " (recommended)" : "") + ": " + ms(r.frame_ms) +
@@ -422,7 +426,7 @@ std::string timeline_section(const SweepTable& t, const std::set<std::size_t>& c
   return h;
 }
 
-std::string assumptions_section(const SweepTable& t) {
+std::string assumptions_section(const results::SweepTable& t) {
   std::string h = "<h2>Model assumptions and sensitivity</h2>\n";
   if (t.assumptions.empty()) {
     h += "<p>The sweep recorded no assumptions.</p>\n";
@@ -436,7 +440,7 @@ std::string assumptions_section(const SweepTable& t) {
        "plausible range (others at their base values).</p>\n<table>\n<tr><th>figure</th>"
        "<th>min</th><th>base</th><th>max</th><th>frame ms at min</th><th>at base</th>"
        "<th>at max</th><th>swing ms</th></tr>\n";
-  for (const SensitivityRow& s : t.sensitivity) {
+  for (const results::SensitivityRow& s : t.sensitivity) {
     const std::string unit = s.unit.empty() ? "" : " " + s.unit;
     const double lo = std::min({s.frame_ms_at_min, s.frame_ms_at_base, s.frame_ms_at_max});
     const double hi = std::max({s.frame_ms_at_min, s.frame_ms_at_base, s.frame_ms_at_max});
@@ -454,7 +458,7 @@ std::string assumptions_section(const SweepTable& t) {
 
 }  // namespace
 
-std::string write_report(const SweepTable& table, const std::string& dir,
+std::string write_report(const results::SweepTable& table, const std::string& dir,
                          const ReportOptions& options) {
   validate_sweep_table(table);
   std::error_code ec;
@@ -466,13 +470,15 @@ std::string write_report(const SweepTable& table, const std::string& dir,
   for (const Recommendation& r : recommendations) {
     if (r.chosen) chosen.insert(*r.chosen);
   }
-  const ConfigResult* dram_row = !recommendations.empty() && recommendations.front().chosen
-                                     ? &table.rows[*recommendations.front().chosen]
-                                     : nullptr;
+  const results::ConfigResult* dram_row = !recommendations.empty() && recommendations.front().chosen
+                                              ? &table.rows[*recommendations.front().chosen]
+                                              : nullptr;
   if (!dram_row && !table.rows.empty()) {
-    dram_row = &*std::min_element(
-        table.rows.begin(), table.rows.end(),
-        [](const ConfigResult& a, const ConfigResult& b) { return a.frame_ms < b.frame_ms; });
+    dram_row =
+        &*std::min_element(table.rows.begin(), table.rows.end(),
+                           [](const results::ConfigResult& a, const results::ConfigResult& b) {
+                             return a.frame_ms < b.frame_ms;
+                           });
   }
   std::future<void> alongside;  // its destructor waits, should the charts throw
   if (options.alongside_charts) {

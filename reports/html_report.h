@@ -12,7 +12,7 @@
 
 #include "reports/charts.h"
 #include "reports/html_text.h"
-#include "reports/sweep_table.h"
+#include "results/sweep_table.h"
 
 namespace skinsim::reports {
 
@@ -43,7 +43,7 @@ struct ReportOptions {
 // Writes dir/report.html (creating dir), and with draw_charts the chart PNG/SVG files it
 // shows. Returns the path of report.html. Throws ReportError (e.g. no X display while charts
 // are requested, or an unwritable directory) with the reason.
-std::string write_report(const SweepTable& table, const std::string& dir,
+std::string write_report(const results::SweepTable& table, const std::string& dir,
                          const ReportOptions& options = {});
 
 // Every local file that dir/report.html links to (src/href) but that does not exist, as the

@@ -69,9 +69,9 @@ std::string image_slider_html(const std::vector<std::pair<std::string, std::stri
   return h;
 }
 
-std::string crop_windows_html(const std::vector<CropWindow>& windows) {
+std::string crop_windows_html(const std::vector<results::CropWindow>& windows) {
   std::string h;
-  for (const CropWindow& w : windows) {
+  for (const results::CropWindow& w : windows) {
     if (w.images.empty()) {  // a landmark looked for and not found: only the sentence
       h += "<p><b>" + esc(w.why) + "</b></p>\n";
       continue;

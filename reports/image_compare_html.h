@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "reports/sweep_table.h"
+#include "results/sweep_table.h"
 
 namespace skinsim::reports {
 
@@ -25,7 +25,7 @@ std::string image_slider_html(const std::vector<std::pair<std::string, std::stri
                               std::size_t left, std::size_t right, double difference_gain = 0.0);
 
 // Per window: what it shows and where, and its crops at 1:1 above the magnified ones.
-std::string crop_windows_html(const std::vector<CropWindow>& windows);
+std::string crop_windows_html(const std::vector<results::CropWindow>& windows);
 
 // "Difference colour scale: [bar] black = identical, ...": `what` names the difference shown,
 // e.g. "|recommended - reference|".

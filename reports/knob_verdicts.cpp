@@ -19,11 +19,11 @@ namespace {
 constexpr const char* kTechnique = "technique";
 
 // A group's rows of one technique, in table order.
-using Rows = std::vector<const ConfigResult*>;
+using Rows = std::vector<const results::ConfigResult*>;
 
-std::map<std::string, Rows> by_technique(const SweepTable& t, const std::string& group) {
+std::map<std::string, Rows> by_technique(const results::SweepTable& t, const std::string& group) {
   std::map<std::string, Rows> out;
-  for (const ConfigResult& r : t.rows) {
+  for (const results::ConfigResult& r : t.rows) {
     if (r.group == group) out[knob_value(r, kTechnique)].push_back(&r);
   }
   return out;
@@ -47,9 +47,9 @@ std::string area_of(const std::string& metric) {
 
 // Knobs with two or more values within some group (a knob only some techniques use counts
 // its values where it is used).
-std::set<std::string> judged_knobs(const SweepTable& t) {
+std::set<std::string> judged_knobs(const results::SweepTable& t) {
   std::map<std::pair<std::string, std::string>, std::set<std::string>> values;  // (group, knob)
-  for (const ConfigResult& r : t.rows) {
+  for (const results::ConfigResult& r : t.rows) {
     for (const auto& [k, v] : r.knobs) values[{r.group, k}].insert(v);
   }
   std::set<std::string> out;
@@ -60,11 +60,12 @@ std::set<std::string> judged_knobs(const SweepTable& t) {
 }
 
 // A value as the sentences name it: "lut 8x32", "scale 0.5"; a technique by its name alone.
-std::string value_text(const ConfigResult& r, const std::string& knob) {
+std::string value_text(const results::ConfigResult& r, const std::string& knob) {
   return knob == kTechnique ? knob_value(r, knob) : knob + " " + knob_value(r, knob);
 }
 
-bool same_except(const ConfigResult& a, const ConfigResult& b, const std::string& knob) {
+bool same_except(const results::ConfigResult& a, const results::ConfigResult& b,
+                 const std::string& knob) {
   std::map<std::string, std::string> ka = a.knobs, kb = b.knobs;
   ka.erase(knob);
   kb.erase(knob);
@@ -74,11 +75,13 @@ bool same_except(const ConfigResult& a, const ConfigResult& b, const std::string
 // What the knob's values do to the frame time against `around`'s: the cheapest value's
 // saving and the dearest's extra cost, each stated when it is kNoTimeEffect of the frame or
 // more; otherwise no time effect.
-std::string time_part(const std::vector<const ConfigResult*>& slice, const ConfigResult& around,
-                      const std::string& knob, bool& effect) {
-  const auto [lo, hi] = std::minmax_element(
-      slice.begin(), slice.end(),
-      [](const ConfigResult* a, const ConfigResult* b) { return a->frame_ms < b->frame_ms; });
+std::string time_part(const std::vector<const results::ConfigResult*>& slice,
+                      const results::ConfigResult& around, const std::string& knob, bool& effect) {
+  const auto [lo, hi] =
+      std::minmax_element(slice.begin(), slice.end(),
+                          [](const results::ConfigResult* a, const results::ConfigResult* b) {
+                            return a->frame_ms < b->frame_ms;
+                          });
   const double threshold = kNoTimeEffect * around.frame_ms;
   const double saves = around.frame_ms - (*lo)->frame_ms;
   const double costs = (*hi)->frame_ms - around.frame_ms;
@@ -107,14 +110,14 @@ std::string time_part(const std::vector<const ConfigResult*>& slice, const Confi
 }
 
 // Which values differ visibly from `around`'s, by `comparison` (vs_finest or vs_best).
-std::string visible_part(const std::vector<const ConfigResult*>& slice, const ConfigResult& around,
-                         const std::string& knob,
-                         std::optional<FrameComparison> ConfigResult::*comparison,
+std::string visible_part(const std::vector<const results::ConfigResult*>& slice,
+                         const results::ConfigResult& around, const std::string& knob,
+                         std::optional<results::FrameComparison> results::ConfigResult::*comparison,
                          const std::string& metric, bool& effect) {
   std::vector<std::string> visible;
   double largest_invisible = 0.0;
   std::size_t compared = 0;
-  for (const ConfigResult* r : slice) {
+  for (const results::ConfigResult* r : slice) {
     const auto& c = r->*comparison;
     if (r == &around || !c || c->against != around.id) continue;
     ++compared;
@@ -139,11 +142,12 @@ std::string visible_part(const std::vector<const ConfigResult*>& slice, const Co
   return fmt::format("visibly different from {}, the closest to the reference: {}", at, list);
 }
 
-std::vector<const ConfigResult*> sorted_by_value(std::vector<const ConfigResult*> rows,
-                                                 const std::string& knob) {
-  std::stable_sort(rows.begin(), rows.end(), [&](const ConfigResult* a, const ConfigResult* b) {
-    return knob_value_less(knob_value(*a, knob), knob_value(*b, knob));
-  });
+std::vector<const results::ConfigResult*> sorted_by_value(
+    std::vector<const results::ConfigResult*> rows, const std::string& knob) {
+  std::stable_sort(rows.begin(), rows.end(),
+                   [&](const results::ConfigResult* a, const results::ConfigResult* b) {
+                     return knob_value_less(knob_value(*a, knob), knob_value(*b, knob));
+                   });
   return rows;
 }
 
@@ -154,11 +158,11 @@ KnobVerdict technique_verdict(const std::string& group, const std::map<std::stri
   KnobVerdict v;
   v.group = group;
   v.knob = kTechnique;
-  std::vector<const ConfigResult*> finest;
+  std::vector<const results::ConfigResult*> finest;
   for (const auto& [technique, rows] : techs) {
-    if (const ConfigResult* f = lowest_metric(rows, metric)) finest.push_back(f);
+    if (const results::ConfigResult* f = lowest_metric(rows, metric)) finest.push_back(f);
   }
-  const ConfigResult* best = lowest_metric(finest, metric);
+  const results::ConfigResult* best = lowest_metric(finest, metric);
   if (!best) {
     v.kind = KnobVerdict::Kind::not_isolated;
     v.sentence = "technique: no technique has the quality metric, so none is judged.";
@@ -167,7 +171,7 @@ KnobVerdict technique_verdict(const std::string& group, const std::map<std::stri
   v.around = best->id;
   const double threshold = kNoTimeEffect * best->frame_ms;
   std::string others;
-  for (const ConfigResult* f : finest) {
+  for (const results::ConfigResult* f : finest) {
     if (f == best) continue;
     const double delta = f->frame_ms - best->frame_ms;
     v.time_effect = v.time_effect || std::abs(delta) >= threshold;
@@ -191,7 +195,7 @@ KnobVerdict technique_verdict(const std::string& group, const std::map<std::stri
 }
 
 KnobVerdict knob_verdict(const std::string& group, const std::string& technique, const Rows& rows,
-                         const ConfigResult& around, const std::string& knob,
+                         const results::ConfigResult& around, const std::string& knob,
                          const std::string& metric) {
   KnobVerdict v;
   v.group = group;
@@ -200,7 +204,7 @@ KnobVerdict knob_verdict(const std::string& group, const std::string& technique,
   v.around = around.id;
   const std::string name = technique.empty() ? knob : fmt::format("{} ({})", knob, technique);
   std::set<std::string> values;
-  for (const ConfigResult* r : rows) {
+  for (const results::ConfigResult* r : rows) {
     if (r->knobs.count(knob)) values.insert(knob_value(*r, knob));
   }
   if (values.size() == 1) {
@@ -209,8 +213,8 @@ KnobVerdict knob_verdict(const std::string& group, const std::string& technique,
         fmt::format("{}: only {} was swept, so its effect is not measured.", name, *values.begin());
     return v;
   }
-  std::vector<const ConfigResult*> slice;
-  for (const ConfigResult* r : rows) {
+  std::vector<const results::ConfigResult*> slice;
+  for (const results::ConfigResult* r : rows) {
     if (r->knobs.count(knob) && same_except(*r, around, knob)) slice.push_back(r);
   }
   slice = sorted_by_value(slice, knob);
@@ -223,22 +227,23 @@ KnobVerdict knob_verdict(const std::string& group, const std::string& technique,
     return v;
   }
   const std::string time = time_part(slice, around, knob, v.time_effect);
-  const std::string seen =
-      visible_part(slice, around, knob, &ConfigResult::vs_finest, metric, v.visible_effect);
+  const std::string seen = visible_part(slice, around, knob, &results::ConfigResult::vs_finest,
+                                        metric, v.visible_effect);
   v.sentence = fmt::format("{}: {}; {}.", name, time, seen);
   return v;
 }
 
 }  // namespace
 
-std::vector<KnobVerdict> knob_verdicts(const SweepTable& table, const std::string& metric) {
+std::vector<KnobVerdict> knob_verdicts(const results::SweepTable& table,
+                                       const std::string& metric) {
   const std::set<std::string> judged = judged_knobs(table);
   std::vector<KnobVerdict> out;
   for (const std::string& group : groups_in_order(table)) {
     const std::map<std::string, Rows> techs = by_technique(table, group);
     if (techs.size() > 1) out.push_back(technique_verdict(group, techs, metric));
     for (const auto& [technique, rows] : techs) {
-      const ConfigResult* around = lowest_metric(rows, metric);
+      const results::ConfigResult* around = lowest_metric(rows, metric);
       if (!around) continue;
       for (const std::string& knob : judged) {
         if (knob == kTechnique || !around->knobs.count(knob)) continue;  // not its knob
@@ -249,11 +254,12 @@ std::vector<KnobVerdict> knob_verdicts(const SweepTable& table, const std::strin
   return out;
 }
 
-std::vector<TechniqueError> technique_errors(const SweepTable& table, const std::string& metric) {
+std::vector<TechniqueError> technique_errors(const results::SweepTable& table,
+                                             const std::string& metric) {
   std::vector<TechniqueError> out;
   for (const std::string& group : groups_in_order(table)) {
     for (const auto& [technique, rows] : by_technique(table, group)) {
-      const ConfigResult* finest = lowest_metric(rows, metric);
+      const results::ConfigResult* finest = lowest_metric(rows, metric);
       if (!finest) continue;
       TechniqueError e;
       e.group = group;
@@ -261,7 +267,7 @@ std::vector<TechniqueError> technique_errors(const SweepTable& table, const std:
       e.finest = finest->id;
       e.technique_error = finest->quality.at(metric);
       e.configurations = static_cast<int>(rows.size());
-      for (const ConfigResult* r : rows) {
+      for (const results::ConfigResult* r : rows) {
         if (r == finest || !r->vs_finest || r->vs_finest->against != finest->id) continue;
         e.visibly_worse += r->vs_finest->visible;
         if (e.worst.empty() || r->vs_finest->flip_mean > e.knob_error) {
@@ -292,9 +298,9 @@ std::vector<TechniqueError> technique_errors(const SweepTable& table, const std:
   return out;
 }
 
-std::vector<std::string> unswept_knobs(const SweepTable& table) {
+std::vector<std::string> unswept_knobs(const results::SweepTable& table) {
   std::map<std::string, std::set<std::string>> values;
-  for (const ConfigResult& r : table.rows) {
+  for (const results::ConfigResult& r : table.rows) {
     for (const auto& [k, v] : r.knobs) values[k].insert(v);
   }
   std::vector<std::string> out;
@@ -304,7 +310,7 @@ std::vector<std::string> unswept_knobs(const SweepTable& table) {
   return out;
 }
 
-nlohmann::json findings_json(const SweepTable& table) {
+nlohmann::json findings_json(const results::SweepTable& table) {
   const std::string metric = recommend_metric(table.rows);
   nlohmann::json recommendations = nlohmann::json::array();
   for (const Recommendation& r : recommend(table, metric)) {

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "reports/sweep_table.h"
+#include "results/sweep_table.h"
 
 namespace skinsim::reports {
 
@@ -39,7 +39,7 @@ inline constexpr double kNoTimeEffect = 0.01;
 
 // Every judged knob, by group, then technique (the technique knob first), then knob name.
 // `metric` is the lower-is-better metric the finest rows were picked by (recommend_metric).
-std::vector<KnobVerdict> knob_verdicts(const SweepTable& table, const std::string& metric);
+std::vector<KnobVerdict> knob_verdicts(const results::SweepTable& table, const std::string& metric);
 
 // What a technique's best knobs leave against the reference (technique error) and what its
 // other knob values add on top (knob error: FLIP against the technique's finest row).
@@ -56,14 +56,15 @@ struct TechniqueError {
   std::string sentence;
 };
 
-std::vector<TechniqueError> technique_errors(const SweepTable& table, const std::string& metric);
+std::vector<TechniqueError> technique_errors(const results::SweepTable& table,
+                                             const std::string& metric);
 
 // Knobs with one value wherever they are used (they are not judged), "name=value" sorted by
 // name.
-std::vector<std::string> unswept_knobs(const SweepTable& table);
+std::vector<std::string> unswept_knobs(const results::SweepTable& table);
 
 // The findings results.json keeps beside the rows: metric, recommendations, knob verdicts
 // and technique errors (derived from the rows; read_sweep_json ignores them).
-nlohmann::json findings_json(const SweepTable& table);
+nlohmann::json findings_json(const results::SweepTable& table);
 
 }  // namespace skinsim::reports

@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "gpu_model/timing.h"
+#include "results/pass_rows.h"
 
 namespace skinsim::reports {
 
@@ -16,10 +16,10 @@ Rgb palette_colour(std::size_t i) {
   return kPalette[i % std::size(kPalette)];
 }
 
-std::vector<std::string> pass_order(const SweepTable& table) {
+std::vector<std::string> pass_order(const results::SweepTable& table) {
   std::vector<std::string> names;
-  for (const ConfigResult& r : table.rows) {
-    for (const PassCost& p : r.passes) {
+  for (const results::ConfigResult& r : table.rows) {
+    for (const results::PassCost& p : r.passes) {
       if (std::find(names.begin(), names.end(), p.name) == names.end()) names.push_back(p.name);
     }
   }
@@ -27,7 +27,7 @@ std::vector<std::string> pass_order(const SweepTable& table) {
 }
 
 Rgb pass_colour(const std::string& pass, const std::vector<std::string>& order) {
-  if (pass == gpu_model::kDramWaitRow) return {128, 128, 128};
+  if (pass == results::kDramWaitRow) return {128, 128, 128};
   const auto it = std::find(order.begin(), order.end(), pass);
   return palette_colour(static_cast<std::size_t>(it - order.begin()));
 }

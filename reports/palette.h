@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "reports/sweep_table.h"
+#include "results/sweep_table.h"
 
 namespace skinsim::reports {
 
@@ -16,10 +16,10 @@ using Rgb = std::array<unsigned char, 3>;
 Rgb palette_colour(std::size_t i);
 
 // The pass names of a sweep in first-appearance order (rows, then passes).
-std::vector<std::string> pass_order(const SweepTable& table);
+std::vector<std::string> pass_order(const results::SweepTable& table);
 
 // A pass's colour: palette_colour of its index in `order` (the next free index if it is not
-// there); the frame's DRAM wait (gpu_model::kDramWaitRow) is always grey.
+// there); the frame's DRAM wait (results::kDramWaitRow) is always grey.
 Rgb pass_colour(const std::string& pass, const std::vector<std::string>& order);
 
 // "#rrggbb".

@@ -9,13 +9,14 @@ namespace skinsim::reports {
 namespace {
 
 // Quality as "larger is better", so one comparison serves both directions.
-double goodness(const ConfigResult& r, const std::string& metric, bool higher_is_better) {
+double goodness(const results::ConfigResult& r, const std::string& metric, bool higher_is_better) {
   const double q = r.quality.at(metric);
   return higher_is_better ? q : -q;
 }
 
-bool dominates(const ConfigResult& a, const ConfigResult& b, const std::string& metric,
-               bool higher_is_better, double ConfigResult::*cost) {
+bool dominates(const results::ConfigResult& a, const results::ConfigResult& b,
+               const std::string& metric, bool higher_is_better,
+               double results::ConfigResult::*cost) {
   const double ga = goodness(a, metric, higher_is_better);
   const double gb = goodness(b, metric, higher_is_better);
   const bool no_worse = a.*cost <= b.*cost && ga >= gb;
@@ -30,9 +31,9 @@ double normalise(double v, double lo, double hi) {
 
 }  // namespace
 
-std::vector<std::size_t> pareto_front(const std::vector<ConfigResult>& rows,
+std::vector<std::size_t> pareto_front(const std::vector<results::ConfigResult>& rows,
                                       const std::string& metric, bool higher_is_better,
-                                      double ConfigResult::*cost) {
+                                      double results::ConfigResult::*cost) {
   std::vector<std::size_t> with_metric;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     if (rows[i].quality.count(metric)) with_metric.push_back(i);
@@ -49,7 +50,7 @@ std::vector<std::size_t> pareto_front(const std::vector<ConfigResult>& rows,
   return front;
 }
 
-std::optional<std::size_t> pareto_knee(const std::vector<ConfigResult>& rows,
+std::optional<std::size_t> pareto_knee(const std::vector<results::ConfigResult>& rows,
                                        const std::string& metric, bool higher_is_better,
                                        double budget_ms) {
   std::vector<std::size_t> candidates;

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "reports/sweep_table.h"
+#include "results/sweep_table.h"
 
 namespace skinsim::reports {
 
@@ -15,16 +15,16 @@ namespace skinsim::reports {
 // another lower-is-better member such as energy_mj) and quality[metric] (direction given by
 // higher_is_better); a row dominated by another has both no better and one strictly worse.
 // Rows without the metric are left out. Sorted by cost ascending (ties: by index).
-std::vector<std::size_t> pareto_front(const std::vector<ConfigResult>& rows,
-                                      const std::string& metric, bool higher_is_better,
-                                      double ConfigResult::*cost = &ConfigResult::frame_ms);
+std::vector<std::size_t> pareto_front(
+    const std::vector<results::ConfigResult>& rows, const std::string& metric,
+    bool higher_is_better, double results::ConfigResult::*cost = &results::ConfigResult::frame_ms);
 
 // The recommended configuration: among Pareto-front rows within budget_ms, the one nearest
 // the utopia point (cheapest frame time AND best quality of those rows) after normalising
 // both axes to [0, 1] over those rows (Euclidean distance). Both axes count equally, so the
 // knee is where spending more time stops buying proportionate quality. Ties: lower frame
 // time, then lower index. nullopt if no row with the metric fits the budget.
-std::optional<std::size_t> pareto_knee(const std::vector<ConfigResult>& rows,
+std::optional<std::size_t> pareto_knee(const std::vector<results::ConfigResult>& rows,
                                        const std::string& metric, bool higher_is_better,
                                        double budget_ms);
 

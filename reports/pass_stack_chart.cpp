@@ -17,11 +17,11 @@
 
 namespace skinsim::reports {
 
-ChartFiles write_pass_stack_chart(const SweepTable& table, const std::string& path_stem,
+ChartFiles write_pass_stack_chart(const results::SweepTable& table, const std::string& path_stem,
                                   const ChartOptions& options) {
   if (table.rows.empty()) throw ReportError("pass chart " + path_stem + ": the sweep has no rows");
-  std::vector<std::vector<PassCost>> merged;
-  for (const ConfigResult& r : table.rows) merged.push_back(merged_passes(r));
+  std::vector<std::vector<results::PassCost>> merged;
+  for (const results::ConfigResult& r : table.rows) merged.push_back(merged_passes(r));
   const std::vector<std::string> names = pass_order(table);
   if (names.empty()) throw ReportError("pass chart " + path_stem + ": no row has passes");
 
@@ -37,14 +37,14 @@ ChartFiles write_pass_stack_chart(const SweepTable& table, const std::string& pa
     labels[i] = (table.rows[i].label.empty() ? table.rows[i].id : table.rows[i].label) + " (" +
                 (bottleneck.empty() ? "?" : bottleneck) + ")";
     double total = 0.0;
-    for (const PassCost& p : merged[i]) total += p.ms;
+    for (const results::PassCost& p : merged[i]) total += p.ms;
     x_hi = std::max(x_hi, total);
   }
   data->AddColumn(make_column("position", position));
   for (const std::string& name : names) {
     std::vector<double> ms(n, 0.0);
     for (std::size_t i = 0; i < n; ++i) {
-      for (const PassCost& p : merged[i]) {
+      for (const results::PassCost& p : merged[i]) {
         if (p.name == name) ms[i] = p.ms;
       }
     }

@@ -13,7 +13,7 @@ namespace skinsim::reports {
 namespace {
 
 // Time and energy per frame, each with its modelled range.
-std::string cost_range(const ConfigResult& r) {
+std::string cost_range(const results::ConfigResult& r) {
   return fmt::format("{:.2f} ms ({:.2f} to {:.2f}) and {:.3f} mJ ({:.3f} to {:.3f}) per frame",
                      r.frame_ms, r.frame_ms_low, r.frame_ms_high, r.energy_mj, r.energy_mj_low,
                      r.energy_mj_high);
@@ -21,7 +21,7 @@ std::string cost_range(const ConfigResult& r) {
 
 // A group's rows with the metric, and their indices into the table's rows.
 struct Members {
-  std::vector<ConfigResult> rows;  // copies, to reuse pareto_knee on them
+  std::vector<results::ConfigResult> rows;  // copies, to reuse pareto_knee on them
   std::vector<std::size_t> index;
 };
 
@@ -33,13 +33,13 @@ struct Pick {
   bool tie = false;
 };
 
-Pick pick(const SweepTable& table, const Members& members, std::size_t best,
+Pick pick(const results::SweepTable& table, const Members& members, std::size_t best,
           const std::string& metric, std::optional<std::size_t> excluded,
-          double ConfigResult::*time, bool knee) {
+          double results::ConfigResult::*time, bool knee) {
   Pick p;
   Members rest;
   for (std::size_t k = 0; k < members.rows.size(); ++k) {
-    const ConfigResult& r = members.rows[k];
+    const results::ConfigResult& r = members.rows[k];
     const std::size_t i = members.index[k];
     if (i == excluded) continue;
     rest.rows.push_back(r);
@@ -57,7 +57,7 @@ Pick pick(const SweepTable& table, const Members& members, std::size_t best,
   return p;
 }
 
-std::string against_best(const ConfigResult& c) {
+std::string against_best(const results::ConfigResult& c) {
   return c.vs_best ? fmt::format(
                          "FLIP {:.4f} against it, {:.0f} pixels above the visibility "
                          "threshold",
@@ -65,13 +65,13 @@ std::string against_best(const ConfigResult& c) {
                    : "not compared";
 }
 
-std::string verdict_for(const std::vector<ConfigResult>& rows, const Recommendation& rec,
+std::string verdict_for(const std::vector<results::ConfigResult>& rows, const Recommendation& rec,
                         double budget_ms) {
   if (!rec.chosen) {
     return fmt::format("no configuration fits the {:.1f} ms budget", budget_ms);
   }
-  const ConfigResult& c = rows[*rec.chosen];
-  const ConfigResult& b = rows[*rec.best];
+  const results::ConfigResult& c = rows[*rec.chosen];
+  const results::ConfigResult& b = rows[*rec.best];
   if (*rec.chosen == *rec.best) {
     return fmt::format("{} at {}: the best quality of the group, and within the budget", c.id,
                        cost_range(c));
@@ -88,9 +88,9 @@ std::string verdict_for(const std::vector<ConfigResult>& rows, const Recommendat
       c.id, cost_range(c), b.id, b.frame_ms, against_best(c));
 }
 
-std::string range_note_for(const std::vector<ConfigResult>& rows, const Recommendation& rec,
-                           double budget_ms) {
-  const ConfigResult& c = rows[*rec.chosen];
+std::string range_note_for(const std::vector<results::ConfigResult>& rows,
+                           const Recommendation& rec, double budget_ms) {
+  const results::ConfigResult& c = rows[*rec.chosen];
   if (!rec.straddles_budget) {
     return fmt::format(
         "Its whole modelled range, {:.2f} to {:.2f} ms, is within the {:.1f} ms budget.",
@@ -104,17 +104,17 @@ std::string range_note_for(const std::vector<ConfigResult>& rows, const Recommen
     return note +
            " No configuration that looks the same as the best fits the budget at its slow end.";
   }
-  const ConfigResult& s = rows[*rec.safe];
+  const results::ConfigResult& s = rows[*rec.safe];
   return note + fmt::format(
                     " The cheapest that looks the same as the best and fits even at its slow end "
                     "is {} at {}.",
                     s.id, cost_range(s));
 }
 
-std::string runner_up_note_for(const std::vector<ConfigResult>& rows, const Recommendation& rec,
-                               bool runner_up_ties) {
-  const ConfigResult& c = rows[*rec.chosen];
-  const ConfigResult& u = rows[*rec.runner_up];
+std::string runner_up_note_for(const std::vector<results::ConfigResult>& rows,
+                               const Recommendation& rec, bool runner_up_ties) {
+  const results::ConfigResult& c = rows[*rec.chosen];
+  const results::ConfigResult& u = rows[*rec.runner_up];
   const double more = u.frame_ms - c.frame_ms;
   const std::string cost = more >= 0.0 ? fmt::format("costs {:.2f} ms more", more)
                                        : fmt::format("saves {:.2f} ms", -more);
@@ -132,25 +132,25 @@ std::string runner_up_note_for(const std::vector<ConfigResult>& rows, const Reco
 
 }  // namespace
 
-std::string recommend_metric(const std::vector<ConfigResult>& rows) {
-  const bool any_skin = std::any_of(rows.begin(), rows.end(), [](const ConfigResult& r) {
+std::string recommend_metric(const std::vector<results::ConfigResult>& rows) {
+  const bool any_skin = std::any_of(rows.begin(), rows.end(), [](const results::ConfigResult& r) {
     return r.quality.count("flip_skin") > 0;
   });
   return any_skin ? "flip_skin" : "flip_frame";
 }
 
-std::vector<std::string> groups_in_order(const SweepTable& table) {
+std::vector<std::string> groups_in_order(const results::SweepTable& table) {
   std::vector<std::string> order;
-  for (const ConfigResult& r : table.rows) {
+  for (const results::ConfigResult& r : table.rows) {
     if (std::find(order.begin(), order.end(), r.group) == order.end()) order.push_back(r.group);
   }
   return order;
 }
 
-const ConfigResult* lowest_metric(const std::vector<const ConfigResult*>& rows,
-                                  const std::string& metric) {
-  const ConfigResult* best = nullptr;
-  for (const ConfigResult* r : rows) {
+const results::ConfigResult* lowest_metric(const std::vector<const results::ConfigResult*>& rows,
+                                           const std::string& metric) {
+  const results::ConfigResult* best = nullptr;
+  for (const results::ConfigResult* r : rows) {
     const auto q = r->quality.find(metric);
     if (q == r->quality.end()) continue;
     if (!best || q->second < best->quality.at(metric) ||
@@ -161,39 +161,39 @@ const ConfigResult* lowest_metric(const std::vector<const ConfigResult*>& rows,
   return best;
 }
 
-std::vector<Recommendation> recommend(const SweepTable& table, const std::string& metric) {
+std::vector<Recommendation> recommend(const results::SweepTable& table, const std::string& metric) {
   std::vector<Recommendation> out;
   for (const std::string& group : groups_in_order(table)) {
     Recommendation rec;
     rec.group = group;
     Members members;
-    std::vector<const ConfigResult*> candidates;
+    std::vector<const results::ConfigResult*> candidates;
     for (std::size_t i = 0; i < table.rows.size(); ++i) {
-      const ConfigResult& r = table.rows[i];
+      const results::ConfigResult& r = table.rows[i];
       if (r.group != group || !r.quality.count(metric)) continue;
       members.rows.push_back(r);
       members.index.push_back(i);
       candidates.push_back(&r);
     }
-    if (const ConfigResult* best = lowest_metric(candidates, metric)) {
+    if (const results::ConfigResult* best = lowest_metric(candidates, metric)) {
       rec.best = static_cast<std::size_t>(best - table.rows.data());
     }
     if (rec.best) {
-      const Pick chosen =
-          pick(table, members, *rec.best, metric, std::nullopt, &ConfigResult::frame_ms, true);
+      const Pick chosen = pick(table, members, *rec.best, metric, std::nullopt,
+                               &results::ConfigResult::frame_ms, true);
       rec.chosen = chosen.index;
       rec.indistinguishable = chosen.tie;
     }
     rec.verdict = verdict_for(table.rows, rec, table.budget_ms);
     if (rec.chosen) {
-      const ConfigResult& c = table.rows[*rec.chosen];
+      const results::ConfigResult& c = table.rows[*rec.chosen];
       rec.straddles_budget = c.frame_ms_high > table.budget_ms;
-      rec.safe =
-          pick(table, members, *rec.best, metric, std::nullopt, &ConfigResult::frame_ms_high, false)
-              .index;
+      rec.safe = pick(table, members, *rec.best, metric, std::nullopt,
+                      &results::ConfigResult::frame_ms_high, false)
+                     .index;
       rec.range_note = range_note_for(table.rows, rec, table.budget_ms);
-      const Pick runner_up =
-          pick(table, members, *rec.best, metric, rec.chosen, &ConfigResult::frame_ms, true);
+      const Pick runner_up = pick(table, members, *rec.best, metric, rec.chosen,
+                                  &results::ConfigResult::frame_ms, true);
       rec.runner_up = runner_up.index;
       if (rec.runner_up) rec.runner_up_note = runner_up_note_for(table.rows, rec, runner_up.tie);
     }
@@ -217,7 +217,7 @@ std::string recommendation_rule_text() {
          "aside.";
 }
 
-nlohmann::json recommendation_json(const SweepTable& table, const Recommendation& r) {
+nlohmann::json recommendation_json(const results::SweepTable& table, const Recommendation& r) {
   const auto id = [&](const std::optional<std::size_t>& i) {
     return i ? nlohmann::json(table.rows[*i].id) : nlohmann::json(nullptr);
   };

@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "reports/sweep_table.h"
+#include "results/sweep_table.h"
 
 namespace skinsim::reports {
 
@@ -45,25 +45,25 @@ struct Recommendation {
 };
 
 // One per group, in first-appearance order. `metric` is lower-is-better (flip_skin).
-std::vector<Recommendation> recommend(const SweepTable& table, const std::string& metric);
+std::vector<Recommendation> recommend(const results::SweepTable& table, const std::string& metric);
 
 // The metric recommendations and verdicts use: flip_skin when any row has it (the reference
 // shows skin), else flip_frame.
-std::string recommend_metric(const std::vector<ConfigResult>& rows);
+std::string recommend_metric(const std::vector<results::ConfigResult>& rows);
 
 // The groups of the table's rows, in first-appearance order.
-std::vector<std::string> groups_in_order(const SweepTable& table);
+std::vector<std::string> groups_in_order(const results::SweepTable& table);
 
 // The best of `rows` by `metric` (lower is better); ties: the cheaper, then the earlier (the
 // rule vs_finest and vs_best were measured against, driver/sweep_comparisons.h). nullptr when
 // no row has the metric.
-const ConfigResult* lowest_metric(const std::vector<const ConfigResult*>& rows,
-                                  const std::string& metric);
+const results::ConfigResult* lowest_metric(const std::vector<const results::ConfigResult*>& rows,
+                                           const std::string& metric);
 
 // The rule above, for the report.
 std::string recommendation_rule_text();
 
 // A recommendation as results.json keeps it: ids instead of row indices, and its sentences.
-nlohmann::json recommendation_json(const SweepTable& table, const Recommendation& r);
+nlohmann::json recommendation_json(const results::SweepTable& table, const Recommendation& r);
 
 }  // namespace skinsim::reports

@@ -15,10 +15,10 @@ ReportFigure relative(const ChartFiles& files, const std::string& caption) {
 }
 
 // Values of `knob` over the rows the chart plots: those with its knobs and its metric.
-std::size_t distinct_values(const SweepTable& table, const TradeoffSpec& spec,
+std::size_t distinct_values(const results::SweepTable& table, const TradeoffSpec& spec,
                             const std::string& knob) {
   std::set<std::string> values;
-  for (const ConfigResult& r : table.rows) {
+  for (const results::ConfigResult& r : table.rows) {
     if (on_tradeoff_chart(r, spec) && r.quality.count(spec.metric)) {
       values.insert(knob_value(r, knob));
     }
@@ -28,22 +28,22 @@ std::size_t distinct_values(const SweepTable& table, const TradeoffSpec& spec,
 
 // A grouping is worth a chart if it compares series, or if its one series runs along a knob;
 // a single series in frame-time order would join unrelated configurations.
-bool worth_drawing(const SweepTable& table, const TradeoffSpec& spec) {
+bool worth_drawing(const results::SweepTable& table, const TradeoffSpec& spec) {
   const std::size_t n = distinct_values(table, spec, spec.series_knob);
   return n >= 2 ||
          (n == 1 && !spec.order_knob.empty() && distinct_values(table, spec, spec.order_knob) >= 2);
 }
 
-bool has_dram_causes(const ConfigResult& row) {
+bool has_dram_causes(const results::ConfigResult& row) {
   return std::any_of(row.passes.begin(), row.passes.end(),
-                     [](const PassCost& p) { return !p.dram_bytes_by_cause.empty(); });
+                     [](const results::PassCost& p) { return !p.dram_bytes_by_cause.empty(); });
 }
 
 }  // namespace
 
-std::vector<ReportFigure> draw_report_charts(const SweepTable& table, const std::string& dir,
-                                             const ReportOptions& options,
-                                             const ConfigResult* dram_row) {
+std::vector<ReportFigure> draw_report_charts(const results::SweepTable& table,
+                                             const std::string& dir, const ReportOptions& options,
+                                             const results::ConfigResult* dram_row) {
   std::vector<ReportFigure> figures;
   const std::string stem = dir + "/";
   for (const auto& [series, order] : options.tradeoff_groupings) {
@@ -61,7 +61,7 @@ std::vector<ReportFigure> draw_report_charts(const SweepTable& table, const std:
     figures.push_back(relative(
         write_tradeoff_chart(table, spec, stem + "tradeoff_by_" + series, options.chart), caption));
   }
-  if (std::any_of(table.rows.begin(), table.rows.end(), [&](const ConfigResult& r) {
+  if (std::any_of(table.rows.begin(), table.rows.end(), [&](const results::ConfigResult& r) {
         return r.quality.count(options.quality_metric) > 0;
       })) {
     figures.push_back(relative(

@@ -19,8 +19,8 @@ struct ReportFigure {
 // the quality metric, per-pass bars, tile maps if the sweep has a heat map, DRAM by cause for
 // `dram_row` if it has causes) into `dir`. Throws ReportError if charts cannot be drawn (e.g. no X
 // display).
-std::vector<ReportFigure> draw_report_charts(const SweepTable& table, const std::string& dir,
-                                             const ReportOptions& options,
-                                             const ConfigResult* dram_row);
+std::vector<ReportFigure> draw_report_charts(const results::SweepTable& table,
+                                             const std::string& dir, const ReportOptions& options,
+                                             const results::ConfigResult* dram_row);
 
 }  // namespace skinsim::reports

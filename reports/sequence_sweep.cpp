@@ -8,23 +8,15 @@
 #include "reports/csv_writer.h"
 #include "reports/error.h"
 #include "reports/html_text.h"
-#include "reports/sweep_table.h"
+#include "results/sweep_table.h"
 
 namespace skinsim::reports {
 
 namespace {
 
-nlohmann::json stat_json(const SequenceSummary::Stat& s) {
-  return {{"ms", s.ms}, {"low", s.low}, {"high", s.high}};
-}
-
-SequenceSummary::Stat parse_stat(const nlohmann::json& j) {
-  return {j.at("ms").get<double>(), j.at("low").get<double>(), j.at("high").get<double>()};
-}
-
-bool any_sequence(const SweepTable& table) {
+bool any_sequence(const results::SweepTable& table) {
   return std::any_of(table.rows.begin(), table.rows.end(),
-                     [](const ConfigResult& r) { return r.sequence.has_value(); });
+                     [](const results::ConfigResult& r) { return r.sequence.has_value(); });
 }
 
 std::string csv_number_or_empty(const std::optional<double>& v) {
@@ -42,9 +34,9 @@ struct StripAxis {
 };
 constexpr double kBudgetReach = 2.0;
 
-StripAxis strip_axis(const SweepTable& table) {
+StripAxis strip_axis(const results::SweepTable& table) {
   double slowest = 0.0;
-  for (const ConfigResult& r : table.rows) {
+  for (const results::ConfigResult& r : table.rows) {
     if (r.sequence) slowest = std::max(slowest, r.sequence->max.high);
   }
   if (table.budget_ms <= kBudgetReach * slowest) {
@@ -56,7 +48,8 @@ StripAxis strip_axis(const SweepTable& table) {
 // Every frame's time as a tick on one horizontal axis shared by the rows (StripAxis), the
 // p50, p95 and worst frame marked, and the budget as a dashed red line (past a break when off
 // scale).
-std::string distribution_svg(const SequenceSummary& s, const StripAxis& axis, double budget_ms) {
+std::string distribution_svg(const results::SequenceSummary& s, const StripAxis& axis,
+                             double budget_ms) {
   constexpr double kWidth = 420.0, kHeight = 26.0;
   // Off scale, the frames' axis leaves room at the right for the break and the budget.
   constexpr double kOffScale = 22.0;
@@ -70,7 +63,7 @@ std::string distribution_svg(const SequenceSummary& s, const StripAxis& axis, do
         "<line x1=\"{0}\" x2=\"{0}\" y1=\"6\" y2=\"20\" stroke=\"#888\" stroke-opacity=\"0.5\"/>",
         x(ms));
   }
-  const std::pair<const SequenceSummary::Stat*, const char*> marks[] = {
+  const std::pair<const results::SequenceSummary::Stat*, const char*> marks[] = {
       {&s.p50, "#2a7ab0"}, {&s.p95, "#000"}, {&s.max, "#b05a00"}};
   for (const auto& [stat, colour] : marks) {
     svg += fmt::format(
@@ -92,60 +85,13 @@ std::string distribution_svg(const SequenceSummary& s, const StripAxis& axis, do
   return svg + "</svg>";
 }
 
-std::string stat_cell(const SequenceSummary::Stat& s) {
+std::string stat_cell(const results::SequenceSummary::Stat& s) {
   return fmt::format("<td>{:.2f} <small>({:.2f}&ndash;{:.2f})</small></td>", s.ms, s.low, s.high);
 }
 
 }  // namespace
 
-void to_json(nlohmann::json& j, const SequenceSummary& v) {
-  j = {{"name", v.name},
-       {"frames", v.frames},
-       {"fps", v.fps},
-       {"shown_frame", v.shown_frame},
-       {"frame_ms_p50", stat_json(v.p50)},
-       {"frame_ms_p95", stat_json(v.p95)},
-       {"frame_ms_max", stat_json(v.max)},
-       {"percentiles", "nearest rank"},
-       {"frame_ms", v.frame_ms},
-       {"video", v.video},
-       {"frames_dir", v.frames_dir}};
-  if (v.temporal_mean_error) j["temporal_mean_error"] = *v.temporal_mean_error;
-  if (v.temporal_max_error) j["temporal_max_error"] = *v.temporal_max_error;
-}
-
-SequenceSummary parse_sequence_summary(const nlohmann::json& j, const std::string& where) {
-  try {
-    SequenceSummary s;
-    s.name = j.at("name").get<std::string>();
-    s.frames = j.at("frames").get<int>();
-    s.fps = j.at("fps").get<double>();
-    s.shown_frame = j.at("shown_frame").get<int>();
-    s.p50 = parse_stat(j.at("frame_ms_p50"));
-    s.p95 = parse_stat(j.at("frame_ms_p95"));
-    s.max = parse_stat(j.at("frame_ms_max"));
-    s.frame_ms = j.at("frame_ms").get<std::vector<double>>();
-    s.video = j.at("video").get<std::string>();
-    s.frames_dir = j.at("frames_dir").get<std::string>();
-    if (j.contains("temporal_mean_error")) {
-      s.temporal_mean_error = j["temporal_mean_error"].get<double>();
-      s.temporal_max_error = j.at("temporal_max_error").get<double>();
-    }
-    return s;
-  } catch (const nlohmann::json::exception& e) {
-    throw ReportError(where + ": " + e.what());
-  }
-}
-
-void apply_sequence_summary(ConfigResult& row, const SequenceSummary& summary) {
-  row.frame_ms = summary.p95.ms;
-  row.frame_ms_low = summary.p95.low;
-  row.frame_ms_high = summary.p95.high;
-  row.fps = 1000.0 / summary.p95.ms;
-  row.sequence = summary;
-}
-
-std::vector<std::string> sequence_csv_columns(const SweepTable& table) {
+std::vector<std::string> sequence_csv_columns(const results::SweepTable& table) {
   if (!any_sequence(table)) return {};
   return {"sequence",
           "frame_ms.p50",
@@ -162,10 +108,11 @@ std::vector<std::string> sequence_csv_columns(const SweepTable& table) {
           "video"};
 }
 
-std::vector<std::string> sequence_csv_cells(const SweepTable& table, const ConfigResult& row) {
+std::vector<std::string> sequence_csv_cells(const results::SweepTable& table,
+                                            const results::ConfigResult& row) {
   if (!any_sequence(table)) return {};
   if (!row.sequence) return std::vector<std::string>(sequence_csv_columns(table).size());
-  const SequenceSummary& s = *row.sequence;
+  const results::SequenceSummary& s = *row.sequence;
   return {s.name,
           csv_number(s.p50.ms),
           csv_number(s.p50.low),
@@ -181,11 +128,11 @@ std::vector<std::string> sequence_csv_cells(const SweepTable& table, const Confi
           s.video};
 }
 
-std::string sequence_sweep_section(const SweepTable& table) {
+std::string sequence_sweep_section(const results::SweepTable& table) {
   if (!any_sequence(table)) return "";
   const StripAxis axis = strip_axis(table);
-  const SequenceSummary& first =
-      *std::find_if(table.rows.begin(), table.rows.end(), [](const ConfigResult& r) {
+  const results::SequenceSummary& first =
+      *std::find_if(table.rows.begin(), table.rows.end(), [](const results::ConfigResult& r) {
          return r.sequence.has_value();
        })->sequence;
   std::string h = fmt::format(
@@ -208,9 +155,9 @@ std::string sequence_sweep_section(const SweepTable& table) {
   h += "<table>\n<tr><th class=\"text\">configuration</th><th>frame times</th><th>p50 "
        "ms</th><th>p95 ms</th><th>worst ms</th><th>temporal error mean / worst</th><th "
        "class=\"text\">video</th></tr>\n";
-  for (const ConfigResult& r : table.rows) {
+  for (const results::ConfigResult& r : table.rows) {
     if (!r.sequence) continue;
-    const SequenceSummary& s = *r.sequence;
+    const results::SequenceSummary& s = *r.sequence;
     h += "<tr><td class=\"text\">" + escape_markup(r.id) + "</td><td>" +
          distribution_svg(s, axis, table.budget_ms) + "</td>" + stat_cell(s.p50) +
          stat_cell(s.p95) + stat_cell(s.max);

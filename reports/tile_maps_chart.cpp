@@ -33,7 +33,8 @@ struct ColorLegendAxis : vtkColorLegend {
 
 // Image with one pixel per tile; image row j holds tile row tiles_y - 1 - j so that the top of
 // the frame is at the top of the chart (VTK's y axis points up).
-vtkSmartPointer<vtkImageData> tile_image(const TileHeatmap& h, const std::vector<double>& values) {
+vtkSmartPointer<vtkImageData> tile_image(const results::TileHeatmap& h,
+                                         const std::vector<double>& values) {
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetDimensions(h.tiles_x, h.tiles_y, 1);
   image->SetOrigin(0.0, 0.0, 0.0);
@@ -48,7 +49,7 @@ vtkSmartPointer<vtkImageData> tile_image(const TileHeatmap& h, const std::vector
   return image;
 }
 
-void check_heatmap(const TileHeatmap& h, const std::string& what) {
+void check_heatmap(const results::TileHeatmap& h, const std::string& what) {
   const std::size_t n = static_cast<std::size_t>(std::max(h.tiles_x, 0)) *
                         static_cast<std::size_t>(std::max(h.tiles_y, 0));
   if (n == 0 || h.ms.size() != n) {
@@ -71,7 +72,7 @@ void tile_ticks(vtkAxis* axis, int count, bool from_top) {
   set_ticks(axis, at, text);
 }
 
-vtkSmartPointer<vtkContextView> tile_chart(const TileHeatmap& h, vtkImageData* image,
+vtkSmartPointer<vtkContextView> tile_chart(const results::TileHeatmap& h, vtkImageData* image,
                                            vtkColorTransferFunction* colours,
                                            const std::string& title, const std::string& legend,
                                            const ChartOptions& options, vtkChartHistogram2D** out) {
@@ -108,7 +109,7 @@ ChartOptions png_only(const ChartOptions& options) {
   return o;
 }
 
-std::string pass_title(const TileHeatmap& h) {
+std::string pass_title(const results::TileHeatmap& h) {
   std::string t = h.pass_name.empty() ? std::string("pass") : h.pass_name;
   if (!h.config_id.empty()) t += ", config " + h.config_id;
   return t;
@@ -116,7 +117,7 @@ std::string pass_title(const TileHeatmap& h) {
 
 }  // namespace
 
-ChartFiles write_tile_cost_heatmap(const TileHeatmap& h, const std::string& path_stem,
+ChartFiles write_tile_cost_heatmap(const results::TileHeatmap& h, const std::string& path_stem,
                                    const ChartOptions& options) {
   check_heatmap(h, "tile heat map " + path_stem);
   const auto [lo_it, hi_it] = std::minmax_element(h.ms.begin(), h.ms.end());
@@ -143,7 +144,7 @@ ChartFiles write_tile_cost_heatmap(const TileHeatmap& h, const std::string& path
   return save_chart(view, path_stem, png_only(options));
 }
 
-ChartFiles write_tile_bottleneck_map(const TileHeatmap& h, const std::string& path_stem,
+ChartFiles write_tile_bottleneck_map(const results::TileHeatmap& h, const std::string& path_stem,
                                      const ChartOptions& options) {
   check_heatmap(h, "tile bottleneck map " + path_stem);
   if (h.bottleneck.size() != h.ms.size()) {

@@ -39,7 +39,7 @@ const char* text_colour(const Rgb& c) {
   return 0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2] > 150.0 ? "#1a1a1a" : "#ffffff";
 }
 
-std::string box(double x0, double x1, double top, const PassCost& p, const Rgb& colour,
+std::string box(double x0, double x1, double top, const results::PassCost& p, const Rgb& colour,
                 const std::string& tooltip) {
   const double w = std::max(1.0, x1 - x0);
   std::string s = fmt::format(
@@ -56,10 +56,11 @@ std::string box(double x0, double x1, double top, const PassCost& p, const Rgb& 
 
 }  // namespace
 
-std::string timeline_svg(const std::vector<PassCost>& passes,
+std::string timeline_svg(const std::vector<results::PassCost>& passes,
                          const std::vector<std::string>& colour_order) {
   double end_ms = 0.0;
-  for (const PassCost& p : passes) end_ms = std::max({end_ms, p.render_end_ms, p.ta_end_ms});
+  for (const results::PassCost& p : passes)
+    end_ms = std::max({end_ms, p.render_end_ms, p.ta_end_ms});
   const double span = end_ms > 0.0 ? end_ms : 1.0;
   const double scale = (kWidth - kLeft - kRight) / span;
   const auto x_at = [&](double ms) { return kLeft + ms * scale; };
@@ -80,7 +81,7 @@ std::string timeline_svg(const std::vector<PassCost>& passes,
         "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.0f}\" fill=\"#f2f2f2\"/>\n",
         kLeft, top, kWidth - kLeft - kRight, kLaneHeight);
   }
-  for (const PassCost& p : passes) {
+  for (const results::PassCost& p : passes) {
     const Rgb colour = pass_colour(p.name, colour_order);
     const std::string times = fmt::format(
         "{}: TA {:.3f}-{:.3f} ms, 3D {:.3f}-{:.3f} ms; its share of the frame {:.3f} ms", p.name,

@@ -7,14 +7,14 @@
 #include <string>
 #include <vector>
 
-#include "reports/sweep_table.h"
+#include "results/sweep_table.h"
 
 namespace skinsim::reports {
 
 // Inline SVG (no external references) of `passes` (one frame, in submission order, with their
 // schedules), coloured by reports::pass_colour(name, colour_order). Each box has a tooltip
 // with its stage times; a legend lists each pass's share of the frame.
-std::string timeline_svg(const std::vector<PassCost>& passes,
+std::string timeline_svg(const std::vector<results::PassCost>& passes,
                          const std::vector<std::string>& colour_order);
 
 }  // namespace skinsim::reports

@@ -27,7 +27,7 @@ namespace skinsim::reports {
 
 namespace {
 
-bool matches(const ConfigResult& row, const std::map<std::string, std::string>& filter) {
+bool matches(const results::ConfigResult& row, const std::map<std::string, std::string>& filter) {
   return std::all_of(filter.begin(), filter.end(),
                      [&](const auto& kv) { return knob_value(row, kv.first) == kv.second; });
 }
@@ -44,17 +44,18 @@ std::string default_title(const TradeoffSpec& spec) {
 
 // Rows of the group that do not differ visibly from its best configuration (ConfigResult::
 // vs_best; the best itself included).
-bool ties_with_best(const ConfigResult& r) {
+bool ties_with_best(const results::ConfigResult& r) {
   return r.vs_best && !r.vs_best->visible;
 }
 
 // ---------------------------------------------------------------- what the chart shows
 
 // The rows the chart plots: those the filter keeps that have both knobs and the metric.
-std::vector<ConfigResult> chart_rows(const SweepTable& table, const TradeoffSpec& spec,
-                                     const std::string& path_stem) {
-  std::vector<ConfigResult> rows;
-  for (const ConfigResult& r : table.rows) {
+std::vector<results::ConfigResult> chart_rows(const results::SweepTable& table,
+                                              const TradeoffSpec& spec,
+                                              const std::string& path_stem) {
+  std::vector<results::ConfigResult> rows;
+  for (const results::ConfigResult& r : table.rows) {
     if (matches(r, spec.filter) && on_tradeoff_chart(r, spec) && r.quality.count(spec.metric)) {
       rows.push_back(r);
     }
@@ -70,9 +71,9 @@ std::vector<ConfigResult> chart_rows(const SweepTable& table, const TradeoffSpec
 
 // The rows' groups, in order of first appearance. Lines join configurations of one group
 // only: a millisecond on one device or framing is not one on another (recommendation.h).
-std::vector<std::string> chart_groups(const std::vector<ConfigResult>& rows) {
+std::vector<std::string> chart_groups(const std::vector<results::ConfigResult>& rows) {
   std::vector<std::string> groups;
-  for (const ConfigResult& r : rows) {
+  for (const results::ConfigResult& r : rows) {
     if (std::find(groups.begin(), groups.end(), r.group) == groups.end()) groups.push_back(r.group);
   }
   return groups;
@@ -83,9 +84,10 @@ struct Axes {
   double x_min = 0.0, x_max = 0.0, y_lo = 0.0, y_hi = 0.0;
 };
 
-Axes chart_axes(const std::vector<ConfigResult>& rows, const TradeoffSpec& spec, double budget_ms) {
+Axes chart_axes(const std::vector<results::ConfigResult>& rows, const TradeoffSpec& spec,
+                double budget_ms) {
   double y_lo = INFINITY, y_hi = -INFINITY, x_lo = budget_ms, x_hi = budget_ms;
-  for (const ConfigResult& r : rows) {
+  for (const results::ConfigResult& r : rows) {
     y_lo = std::min(y_lo, r.quality.at(spec.metric));
     y_hi = std::max(y_hi, r.quality.at(spec.metric));
     x_lo = std::min(x_lo, r.frame_ms_low);
@@ -109,15 +111,15 @@ struct Series {
 
 // One line per group and value of the series knob, its points in order of the order knob
 // (or of frame time without one).
-std::vector<Series> knob_series(const std::vector<ConfigResult>& rows,
+std::vector<Series> knob_series(const std::vector<results::ConfigResult>& rows,
                                 const std::vector<std::string>& groups, const TradeoffSpec& spec) {
   std::set<std::string, decltype(&knob_value_less)> values(&knob_value_less);
-  for (const ConfigResult& r : rows) values.insert(knob_value(r, spec.series_knob));
+  for (const results::ConfigResult& r : rows) values.insert(knob_value(r, spec.series_knob));
   std::vector<Series> out;
   for (const std::string& group : groups) {
     for (const std::string& value : values) {
-      std::vector<const ConfigResult*> members;
-      for (const ConfigResult& r : rows) {
+      std::vector<const results::ConfigResult*> members;
+      for (const results::ConfigResult& r : rows) {
         if (r.group == group && knob_value(r, spec.series_knob) == value) members.push_back(&r);
       }
       if (members.empty()) continue;
@@ -129,7 +131,7 @@ std::vector<Series> knob_series(const std::vector<ConfigResult>& rows,
           (groups.size() > 1 ? group + ": " : std::string()) + spec.series_knob + " = " + value,
           {},
           {}};
-      for (const ConfigResult* r : members) {
+      for (const results::ConfigResult* r : members) {
         s.x.push_back(r->frame_ms);
         s.y.push_back(r->quality.at(spec.metric));
       }
@@ -140,9 +142,9 @@ std::vector<Series> knob_series(const std::vector<ConfigResult>& rows,
 }
 
 // Configurations that differ visibly from their group's best.
-Series visibly_different(const std::vector<ConfigResult>& rows, const TradeoffSpec& spec) {
+Series visibly_different(const std::vector<results::ConfigResult>& rows, const TradeoffSpec& spec) {
   Series s{"visibly different from the best", {}, {}};
-  for (const ConfigResult& r : rows) {
+  for (const results::ConfigResult& r : rows) {
     if (r.vs_best && r.vs_best->visible) {
       s.x.push_back(r.frame_ms);
       s.y.push_back(r.quality.at(spec.metric));
@@ -151,7 +153,7 @@ Series visibly_different(const std::vector<ConfigResult>& rows, const TradeoffSp
   return s;
 }
 
-Series pareto_series(const std::vector<ConfigResult>& rows, const TradeoffSpec& spec) {
+Series pareto_series(const std::vector<results::ConfigResult>& rows, const TradeoffSpec& spec) {
   Series s{"Pareto front", {}, {}};
   for (std::size_t i : pareto_front(rows, spec.metric, spec.higher_is_better)) {
     s.x.push_back(rows[i].frame_ms);
@@ -164,12 +166,12 @@ Series pareto_series(const std::vector<ConfigResult>& rows, const TradeoffSpec& 
 
 // Behind the lines: per group, the band of configurations that do not differ visibly from
 // the group's best.
-void draw_tie_bands(vtkChartXY* chart, const std::vector<ConfigResult>& rows,
+void draw_tie_bands(vtkChartXY* chart, const std::vector<results::ConfigResult>& rows,
                     const std::vector<std::string>& groups, const TradeoffSpec& spec,
                     const Axes& axes, const ChartOptions& options) {
   for (const std::string& group : groups) {
     double lo = INFINITY, hi = -INFINITY;
-    for (const ConfigResult& r : rows) {
+    for (const results::ConfigResult& r : rows) {
       if (r.group != group || !ties_with_best(r)) continue;
       lo = std::min(lo, r.quality.at(spec.metric));
       hi = std::max(hi, r.quality.at(spec.metric));
@@ -191,10 +193,10 @@ void draw_tie_bands(vtkChartXY* chart, const std::vector<ConfigResult>& rows,
 }
 
 // Frame time ranges over the profile's uncertain figures, as horizontal error bars.
-void draw_time_ranges(vtkChartXY* chart, const std::vector<ConfigResult>& rows,
+void draw_time_ranges(vtkChartXY* chart, const std::vector<results::ConfigResult>& rows,
                       const TradeoffSpec& spec) {
   bool first_range = true;
-  for (const ConfigResult& r : rows) {
+  for (const results::ConfigResult& r : rows) {
     const double y = r.quality.at(spec.metric);
     add_range_bar(chart, "frame ms range (profile's uncertain figures)", r.frame_ms_low,
                   r.frame_ms_high, y, first_range);
@@ -204,12 +206,13 @@ void draw_time_ranges(vtkChartXY* chart, const std::vector<ConfigResult>& rows,
 
 // The report's recommendations (one per group of comparable configurations), marked where
 // this chart plots them. Their rule needs a lower-is-better metric.
-void draw_recommendations(vtkChartXY* chart, const SweepTable& table, const TradeoffSpec& spec) {
+void draw_recommendations(vtkChartXY* chart, const results::SweepTable& table,
+                          const TradeoffSpec& spec) {
   if (spec.higher_is_better) return;
   const std::vector<Recommendation> recommendations = recommend(table, spec.metric);
   for (const Recommendation& rec : recommendations) {
     if (!rec.chosen) continue;
-    const ConfigResult& r = table.rows[*rec.chosen];
+    const results::ConfigResult& r = table.rows[*rec.chosen];
     if (!matches(r, spec.filter) || !on_tradeoff_chart(r, spec)) continue;
     const std::string name = recommendations.size() > 1 ? rec.group + ": " + r.label : r.label;
     vtkPlotPoints* mark = add_series(chart, "recommended: " + name, {r.frame_ms},
@@ -235,7 +238,7 @@ void style_axes(vtkChartXY* chart, const TradeoffSpec& spec, const Axes& axes,
 
 }  // namespace
 
-bool on_tradeoff_chart(const ConfigResult& row, const TradeoffSpec& spec) {
+bool on_tradeoff_chart(const results::ConfigResult& row, const TradeoffSpec& spec) {
   return !knob_value(row, spec.series_knob).empty() &&
          (spec.order_knob.empty() || !knob_value(row, spec.order_knob).empty());
 }
@@ -244,9 +247,9 @@ std::string budget_label(double budget_ms) {
   return fmt::format("{:.1f} ms ({:.0f} fps)", budget_ms, 1000.0 / budget_ms);
 }
 
-ChartFiles write_tradeoff_chart(const SweepTable& table, const TradeoffSpec& spec,
+ChartFiles write_tradeoff_chart(const results::SweepTable& table, const TradeoffSpec& spec,
                                 const std::string& path_stem, const ChartOptions& options) {
-  const std::vector<ConfigResult> rows = chart_rows(table, spec, path_stem);
+  const std::vector<results::ConfigResult> rows = chart_rows(table, spec, path_stem);
   const std::vector<std::string> groups = chart_groups(rows);
   const Axes axes = chart_axes(rows, spec, table.budget_ms);
   const std::vector<Series> lines = knob_series(rows, groups, spec);

@@ -1,7 +1,7 @@
 // 8-bit unsigned normalised channels as skinsim holds them: byte k is the float k / 255, and a
 // float is stored as its nearest byte. The emulator's quantize stores RGBA8 targets and
 // textures as these values, the pass memo keeps such targets as their bytes, PNGs are written
-// with the nearest bytes, and quality::load_png decodes 8-bit images to these values, so a
+// with the nearest bytes, and image::load_png decodes 8-bit images to these values, so a
 // frame read back from its PNG is the very frame that was written.
 #pragma once
 

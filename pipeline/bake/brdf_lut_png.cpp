@@ -3,9 +3,9 @@
 #include <string>
 #include <vector>
 
+#include "image/image.h"
 #include "pipeline/bake/brdf_lut.h"
 #include "pipeline/bake/error.h"
-#include "quality/image.h"
 #include "util/unorm8.h"
 
 namespace skinsim::bake {
@@ -22,7 +22,7 @@ void write_lut_png(const BrdfLut& lut, const std::filesystem::path& path, int le
       bytes[i * 4 + c] = unorm8_nearest(l.texels[i][c]);
     }
   }
-  quality::write_png_u8(path, l.width, l.height, 4, bytes);
+  image::write_png_u8(path, l.width, l.height, 4, bytes);
 }
 
 }  // namespace skinsim::bake

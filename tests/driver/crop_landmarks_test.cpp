@@ -11,8 +11,8 @@ namespace {
 // left of x = 70, dark right of it), with a hole (an eye) at (70, 70) and a red patch (lips)
 // at (100, 150).
 struct Face {
-  quality::Image image = quality::Image::filled(200, 200, glm::vec3(0.4f));
-  quality::Mask skin = quality::Mask::filled(200, 200, 0);
+  image::Image image = image::Image::filled(200, 200, glm::vec3(0.4f));
+  image::Mask skin = image::Mask::filled(200, 200, 0);
   Face() {
     for (int y = 0; y < 200; ++y) {
       for (int x = 0; x < 200; ++x) {
@@ -48,7 +48,7 @@ TEST(CropLandmarks, FindsTheEyeLipsShadowEdgeAndSilhouetteOfASyntheticFace) {
 
 TEST(CropLandmarks, NoSkinNoLandmarksAndNoHoleNoEye) {
   Face face;
-  EXPECT_TRUE(find_landmarks(face.image, quality::Mask::filled(200, 200, 0)).empty());
+  EXPECT_TRUE(find_landmarks(face.image, image::Mask::filled(200, 200, 0)).empty());
   for (int y = 60; y < 80; ++y) {  // fill the eye
     for (int x = 60; x < 80; ++x) {
       if (std::hypot(x - 70, y - 70) < 8)

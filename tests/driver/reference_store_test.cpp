@@ -12,7 +12,7 @@
 #include <thread>
 #include <vector>
 
-#include "quality/image.h"
+#include "image/image.h"
 #include "tests/scoped_env.h"
 #include "tests/test_paths.h"
 #include "util/user_error.h"
@@ -33,8 +33,8 @@ fs::path fresh_dir(const std::string& name) {
 // `seed`, and a skin mask over its left half.
 ReferenceImages images(int seed) {
   ReferenceImages r;
-  r.image = quality::Image::filled(4, 3, glm::vec3(0.0f));
-  r.skin = quality::Mask::filled(4, 3, 0);
+  r.image = image::Image::filled(4, 3, glm::vec3(0.0f));
+  r.skin = image::Mask::filled(4, 3, 0);
   for (int i = 0; i < 12; ++i) {
     const int k = (seed * 37 + i * 11) % 256;
     r.image.rgb[i] = glm::vec3(k, 255 - k, (k * 7) % 256) / 255.0f;
@@ -169,10 +169,10 @@ std::vector<Tampering> tamperings() {
       {"smaller_images",  // a 2x2 reference's files in place of the 4x3 one's
        [](auto& d, auto& s) {
          ReferenceImages small = images(1);
-         small.image = quality::Image::filled(2, 2, glm::vec3(0.5f));
-         small.skin = quality::Mask::filled(2, 2, 1);
-         quality::save_png(small.image, d / (s + ".png"));
-         quality::save_mask_png(small.skin, d / (s + "_skin.png"));
+         small.image = image::Image::filled(2, 2, glm::vec3(0.5f));
+         small.skin = image::Mask::filled(2, 2, 1);
+         image::save_png(small.image, d / (s + ".png"));
+         image::save_mask_png(small.skin, d / (s + "_skin.png"));
        },
        "not the ones its marker describes"},
       {"image_symlink",  // a link to a good copy elsewhere is not the store's own file

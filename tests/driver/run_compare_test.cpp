@@ -9,9 +9,9 @@
 #include <nlohmann/json.hpp>
 
 #include "driver/result_values.h"
+#include "image/image.h"
 #include "io/atomic_file.h"
 #include "io/read_file.h"
-#include "quality/image.h"
 #include "tests/scratch_dir.h"
 
 namespace skinsim::driver {
@@ -40,13 +40,13 @@ nlohmann::json result(double frame_ms, double fragments, const std::string& lut)
 fs::path make_run(const std::string& name, const nlohmann::json& json, bool square = false) {
   const fs::path dir = scratch(name);
   io::write_file_atomically(dir / "result.json", json.dump());
-  quality::Image frame = quality::Image::filled(64, 64, glm::vec3(0.4f));
+  image::Image frame = image::Image::filled(64, 64, glm::vec3(0.4f));
   if (square) {
     for (int y = 8; y < 24; ++y) {
       for (int x = 8; x < 24; ++x) frame.at(x, y) = glm::vec3(1.0f);
     }
   }
-  quality::save_png(frame, dir / "frame.png");
+  image::save_png(frame, dir / "frame.png");
   return dir;
 }
 
@@ -101,9 +101,9 @@ TEST(RunCompare, EqualRunsAreTheSameAndOneCountOrPixelApartAreNot) {
   EXPECT_EQ(counted.configs[0].moved[0].name, "counters.skin.renderer.fragments_shaded");
 
   const fs::path pixel = make_run("same_pixel", result(2.0, 100.0, "8x32"));
-  quality::Image frame = quality::Image::filled(64, 64, glm::vec3(0.4f));
+  image::Image frame = image::Image::filled(64, 64, glm::vec3(0.4f));
   frame.at(30, 30) = glm::vec3(0.4f + 1.0f / 255.0f);
-  quality::save_png(frame, pixel / "frame.png");
+  image::save_png(frame, pixel / "frame.png");
   const reports::Comparison pixelled = compare_outputs(a, pixel, {}, {});
   ASSERT_TRUE(pixelled.configs.at(0).image);
   EXPECT_FALSE(pixelled.configs[0].image->identical);
@@ -127,7 +127,7 @@ TEST(RunCompare, OneKnobNamedWhatMovedAndTheFramesVerdictWithCrops) {
   EXPECT_TRUE(run.image->flip.visible) << run.image->flip.visible_px;  // 256 px, above 30
   EXPECT_EQ(run.image->a_image, "../knob_a/frame.png");
   ASSERT_FALSE(run.image->windows.empty());
-  const reports::CropWindow& w = run.image->windows[0];
+  const results::CropWindow& w = run.image->windows[0];
   EXPECT_TRUE(w.x <= 8 && w.x + w.size >= 24) << w.x;  // the window holds the square
   for (const auto& [what, path] : w.images) EXPECT_TRUE(fs::exists(out / path)) << path;
   EXPECT_TRUE(fs::exists(out / run.image->difference_image));
@@ -137,11 +137,11 @@ TEST(RunCompare, OneKnobNamedWhatMovedAndTheFramesVerdictWithCrops) {
 TEST(RunCompare, OtherImagesSayWhichPixelsMovedWithoutAVerdict) {
   const fs::path a = make_run("other_a", result(2.0, 100.0, "8x32"));
   const fs::path b = make_run("other_b", result(2.0, 100.0, "8x32"));
-  quality::Image irradiance = quality::Image::filled(8, 8, glm::vec3(0.5f));
-  quality::save_png(irradiance, a / "irradiance.png");
+  image::Image irradiance = image::Image::filled(8, 8, glm::vec3(0.5f));
+  image::save_png(irradiance, a / "irradiance.png");
   irradiance.at(3, 4) = glm::vec3(0.75f);
-  quality::save_png(irradiance, b / "irradiance.png");
-  quality::save_png(irradiance, a / "brdf_lut.png");
+  image::save_png(irradiance, b / "irradiance.png");
+  image::save_png(irradiance, a / "brdf_lut.png");
   const reports::Comparison c = compare_outputs(a, b, {}, {});
   EXPECT_FALSE(c.different());  // the frame and every value are the same
   const std::vector<reports::ImageChange>& images = c.configs.at(0).other_images;

@@ -10,15 +10,15 @@
 #include <filesystem>
 
 #include "driver/reference_cache.h"
-#include "quality/image.h"
-#include "tests/quality/test_image.h"
+#include "image/image.h"
+#include "tests/image/test_image.h"
 
 namespace skinsim::driver {
 namespace {
 
 namespace fs = std::filesystem;
 
-bool shows(const reports::CropWindow& w, const std::string& what) {
+bool shows(const results::CropWindow& w, const std::string& what) {
   return std::any_of(w.images.begin(), w.images.end(),
                      [&](const auto& image) { return image.first == what; });
 }
@@ -28,24 +28,24 @@ TEST(SweepCrops, WindowsShowTheDifferenceFromTheBestToo) {
   fs::remove_all(dir);
   fs::create_directories(dir / "refs");
   fs::create_directories(dir / "configs");
-  const quality::Image reference = quality::testing::pattern_image(256, 192);
-  quality::save_png(reference, dir / "refs/ref.png");
-  quality::save_mask_png(quality::Mask::filled(256, 192, 255),
-                         dir / reference_mask_path("refs/ref.png"));
-  reports::SweepTable table;
+  const image::Image reference = image::testing::pattern_image(256, 192);
+  image::save_png(reference, dir / "refs/ref.png");
+  image::save_mask_png(image::Mask::filled(256, 192, 255),
+                       dir / reference_mask_path("refs/ref.png"));
+  results::SweepTable table;
   for (const char* id : {"chosen", "best"}) {
-    reports::ConfigResult r;
+    results::ConfigResult r;
     r.id = id;
     r.frame_image = std::string("configs/") + id + ".png";
     r.reference_image = "refs/ref.png";
-    quality::save_png(quality::testing::add_noise(reference, id[0] == 'c' ? 0.3f : 0.05f, id[0]),
-                      dir / r.frame_image);
+    image::save_png(image::testing::add_noise(reference, id[0] == 'c' ? 0.3f : 0.05f, id[0]),
+                    dir / r.frame_image);
     table.rows.push_back(r);
   }
   reports::Recommendation rec;
   rec.chosen = 0;
   rec.best = 1;
-  std::vector<reports::ComparisonPanel> panels = write_comparison_panels(table, {rec}, dir, true);
+  std::vector<results::ComparisonPanel> panels = write_comparison_panels(table, {rec}, dir, true);
   ASSERT_EQ(panels.size(), 1u);
   const auto found_against_best =
       std::find_if(panels[0].windows.begin(), panels[0].windows.end(), [](const auto& w) {
@@ -61,7 +61,7 @@ TEST(SweepCrops, WindowsShowTheDifferenceFromTheBestToo) {
   rec.chosen = 1;
   panels = write_comparison_panels(table, {rec}, dir, true);
   ASSERT_EQ(panels.size(), 1u);
-  for (const reports::CropWindow& w : panels[0].windows) {
+  for (const results::CropWindow& w : panels[0].windows) {
     EXPECT_FALSE(shows(w, "|recommended - best| x 8")) << w.why;
   }
   fs::remove_all(dir);

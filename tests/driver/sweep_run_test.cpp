@@ -17,7 +17,7 @@
 #include "driver/skin_diagnosis.h"
 #include "driver/sweep_results.h"
 #include "driver/sweep_spec.h"
-#include "reports/sweep_table.h"
+#include "results/sweep_table.h"
 #include "sweep_test_support.h"
 #include "tests/test_paths.h"
 #include "util/build_identity.h"
@@ -40,12 +40,12 @@ SweepSpec tiny_spec() {
 }
 
 // Runs the sweep and writes results.json/csv; returns the table.
-reports::SweepTable run_and_write(const SweepSpec& spec, const SweepRunOptions& o,
+results::SweepTable run_and_write(const SweepSpec& spec, const SweepRunOptions& o,
                                   SweepRunSummary* summary = nullptr) {
   const std::vector<SweepConfig> configs = expand_sweep(spec);
   const SweepRunSummary s = run_sweep(spec, configs, o);
   if (summary) *summary = s;
-  reports::SweepTable table = assemble_sweep_table(spec, configs, s.fingerprints, o.out_dir);
+  results::SweepTable table = assemble_sweep_table(spec, configs, s.fingerprints, o.out_dir);
   write_sweep_data(table, o.out_dir);
   return table;
 }
@@ -53,26 +53,26 @@ reports::SweepTable run_and_write(const SweepSpec& spec, const SweepRunOptions& 
 TEST(SweepRun, WritesOneRowPerConfigurationWithCostAndQuality) {
   const fs::path dir = out_dir("rows");
   SweepRunSummary summary;
-  const reports::SweepTable table = run_and_write(tiny_spec(), options(dir, 2), &summary);
+  const results::SweepTable table = run_and_write(tiny_spec(), options(dir, 2), &summary);
   EXPECT_EQ(summary.total, 2);
   EXPECT_EQ(summary.computed.size(), 2u);
   EXPECT_EQ(summary.references_rendered, 1);  // one reference shared by both
 
-  const reports::SweepTable read = reports::read_sweep_json((dir / "results.json").string());
+  const results::SweepTable read = results::read_sweep_json((dir / "results.json").string());
   ASSERT_EQ(read.rows.size(), 2u);
   EXPECT_EQ(read.rows[0].id, "scale0.5");
   EXPECT_EQ(read.rows[1].id, "scale0.25");
   EXPECT_EQ(read.resolution, "256x192");
   EXPECT_EQ(read.device, "ipad4");
-  for (const reports::ConfigResult& r : read.rows) {
+  for (const results::ConfigResult& r : read.rows) {
     EXPECT_GT(r.frame_ms, 0.0);
     EXPECT_NEAR(r.fps, 1000.0 / r.frame_ms, 1e-6 * r.fps);
     EXPECT_GT(r.dram_bytes, 0.0);
     EXPECT_GT(r.energy_mj, 0.0);  // the frame's dynamic energy and its range
     EXPECT_LT(r.energy_mj_low, r.energy_mj);
     EXPECT_GT(r.energy_mj_high, r.energy_mj);
-    EXPECT_EQ(reports::knob_value(r, "technique"), "mobile");
-    EXPECT_EQ(reports::knob_value(r, "lut"), "32x128");
+    EXPECT_EQ(results::knob_value(r, "technique"), "mobile");
+    EXPECT_EQ(results::knob_value(r, "lut"), "32x128");
     ASSERT_FALSE(r.passes.empty());
     for (const char* m :
          {"psnr_skin", "ssim_skin", "flip_skin", "psnr_frame", "ssim_frame", "flip_frame"}) {
@@ -88,10 +88,10 @@ TEST(SweepRun, WritesOneRowPerConfigurationWithCostAndQuality) {
   ASSERT_EQ(read.rows[0].passes.at(1).name, "irradiance");
   EXPECT_LT(read.rows[1].passes.at(1).dram_bytes_by_cause.at("color_store"),
             read.rows[0].passes.at(1).dram_bytes_by_cause.at("color_store"));
-  for (const reports::ConfigResult& r : read.rows) {
+  for (const results::ConfigResult& r : read.rows) {
     // A pass's ms is its share of the frame: with the DRAM wait, if any, they add up to it.
     double sum = 0.0;
-    for (const reports::PassCost& p : r.passes) {
+    for (const results::PassCost& p : r.passes) {
       sum += p.ms;
       EXPECT_LE(p.ta_start_ms, p.ta_end_ms) << r.id << " " << p.name;
       EXPECT_LE(p.render_end_ms, r.frame_ms * (1.0 + 1e-12)) << r.id << " " << p.name;
@@ -119,14 +119,14 @@ TEST(SweepRun, TechniquesRunOncePerKnobTheyUseAndRowsOmitTheRest) {
   SweepSpec spec = tiny_spec();
   set_axis(spec, "technique", {"mobile", "wrap"}, "test");
   SweepRunSummary summary;
-  const reports::SweepTable table = run_and_write(spec, options(dir, 2), &summary);
+  const results::SweepTable table = run_and_write(spec, options(dir, 2), &summary);
   EXPECT_EQ(summary.total, 3);  // wrap ignores the scale axis
   ASSERT_EQ(table.rows.size(), 3u);
-  for (const reports::ConfigResult& r : table.rows) {
-    const bool wrap = reports::knob_value(r, "technique") == "wrap";
-    EXPECT_EQ(reports::knob_value(r, "scale").empty(), wrap) << r.id;
-    EXPECT_EQ(reports::knob_value(r, "wrap").empty(), !wrap) << r.id;
-    EXPECT_EQ(reports::knob_value(r, "lut"), "32x128") << r.id;
+  for (const results::ConfigResult& r : table.rows) {
+    const bool wrap = results::knob_value(r, "technique") == "wrap";
+    EXPECT_EQ(results::knob_value(r, "scale").empty(), wrap) << r.id;
+    EXPECT_EQ(results::knob_value(r, "wrap").empty(), !wrap) << r.id;
+    EXPECT_EQ(results::knob_value(r, "lut"), "32x128") << r.id;
   }
   // The CSV leaves the knob a technique does not use empty.
   const std::string csv = read_file(dir / "results.csv");
@@ -208,7 +208,7 @@ TEST(SweepRun, CancellationLeavesOnlyCompleteFiles) {
   o.cancel = &cancel;
   o.on_finished = [&](const std::string&) { cancel = true; };  // "Ctrl-C" after the first
   SweepRunSummary summary;
-  const reports::SweepTable table = run_and_write(spec, o, &summary);
+  const results::SweepTable table = run_and_write(spec, o, &summary);
   EXPECT_TRUE(summary.cancelled);
   EXPECT_EQ(summary.computed.size(), 1u);
   EXPECT_EQ(summary.not_run, 3);
@@ -245,14 +245,14 @@ TEST(SweepRun, AnInterruptedSweepShowsOnlyItsOwnRows) {
   o.cancel = &cancel;
   o.on_finished = [&](const std::string&) { cancel = true; };
   SweepRunSummary summary;
-  const reports::SweepTable table = run_and_write(second, o, &summary);
+  const results::SweepTable table = run_and_write(second, o, &summary);
   EXPECT_TRUE(summary.cancelled);
   EXPECT_EQ(summary.resumed, 0);  // the first sweep's results are not this one's
   ASSERT_EQ(summary.computed.size(), 1u);
   EXPECT_EQ(summary.foreign_ignored, 1);  // the other id still holds the first sweep's result
   ASSERT_EQ(table.rows.size(), 1u);
   EXPECT_EQ(table.rows[0].id, summary.computed[0]);
-  EXPECT_EQ(reports::knob_value(table.rows[0], "blur_iterations"), "3");
+  EXPECT_EQ(results::knob_value(table.rows[0], "blur_iterations"), "3");
 }
 
 // A device profile edited between two runs of the same sweep: the stored results were made

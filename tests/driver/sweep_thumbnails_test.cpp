@@ -8,7 +8,7 @@
 
 #include "io/read_file.h"
 #include "reports/html_text.h"
-#include "tests/quality/test_image.h"
+#include "tests/image/test_image.h"
 
 namespace skinsim::driver {
 namespace {
@@ -23,15 +23,14 @@ TEST(SweepThumbnails, MadeWithTheImageAsFromItsPng) {
   fs::create_directories(dir / "configs");
   const std::string image = "configs/a_frame.png";
   // Between bytes and beyond [0,1], so the thumbnail differs unless it is made from the bytes.
-  quality::Image pixels =
-      quality::testing::add_noise(quality::testing::pattern_image(700, 300), 0.4f);
+  image::Image pixels = image::testing::add_noise(image::testing::pattern_image(700, 300), 0.4f);
   for (glm::vec3& p : pixels.rgb) p = p * 1.2f - 0.1f;
   write_image_and_thumbnail(pixels, dir, image);
   const fs::path thumb = dir / reports::thumbnail_path(image);
   const std::string from_memory = io::read_regular_file(thumb, "thumbnail");
   const auto written = fs::last_write_time(thumb);
 
-  reports::SweepTable table;
+  results::SweepTable table;
   table.rows.emplace_back();
   table.rows.back().frame_image = image;
   write_thumbnails(table, dir);
@@ -42,7 +41,7 @@ TEST(SweepThumbnails, MadeWithTheImageAsFromItsPng) {
   const std::string from_png = io::read_regular_file(thumb, "thumbnail");
   EXPECT_FALSE(from_png.empty());
   EXPECT_TRUE(from_png == from_memory) << "the thumbnail differs from the PNG's";
-  EXPECT_EQ(quality::load_png(thumb).width, kThumbnailWidth);
+  EXPECT_EQ(image::load_png(thumb).width, kThumbnailWidth);
   fs::remove_all(dir);
 }
 

@@ -5,6 +5,7 @@
 
 #include "gpu_model/timing_json.h"
 #include "gpu_model/timing_table.h"
+#include "results/pass_rows.h"
 #include "test_support.h"
 
 namespace skinsim::gpu_model {
@@ -119,9 +120,9 @@ TEST(FrameCost, OverlappedStagesShareTheDram) {
   EXPECT_DOUBLE_EQ(f.dram_wait_ms, f.bandwidth_ms - f.pipeline_ms);
   EXPECT_NEAR(f.schedule[0].exposed_ms + f.schedule[1].exposed_ms + f.dram_wait_ms, f.frame_ms,
               1e-12);
-  EXPECT_NE(
-      format_frame_table(f).find(fmt::format("{:<24} {:>8.3f}", kDramWaitRow, f.dram_wait_ms)),
-      std::string::npos)
+  EXPECT_NE(format_frame_table(f).find(
+                fmt::format("{:<24} {:>8.3f}", results::kDramWaitRow, f.dram_wait_ms)),
+            std::string::npos)
       << format_frame_table(f);
   EXPECT_DOUBLE_EQ(to_json(f)["dram_wait_ms"].get<double>(), f.dram_wait_ms);
 }
@@ -130,7 +131,7 @@ TEST(FrameCost, PipelineBoundFrameHasNoDramWaitRow) {
   const FrameTiming f = estimate_frame(two_passes(), round_profile());
   ASSERT_GE(f.pipeline_ms, f.bandwidth_ms);
   EXPECT_DOUBLE_EQ(f.dram_wait_ms, 0.0);
-  EXPECT_EQ(format_frame_table(f).find(kDramWaitRow), std::string::npos);
+  EXPECT_EQ(format_frame_table(f).find(results::kDramWaitRow), std::string::npos);
 }
 
 TEST(FrameCost, JsonCarriesPassesAndFrameTotals) {

@@ -17,7 +17,7 @@
 #include "driver/sweep_shard.h"
 #include "gpu_model/profile_loader.h"
 #include "io/json_input.h"
-#include "reports/sweep_table.h"
+#include "results/sweep_table.h"
 #include "scratch_dir.h"
 #include "util/text.h"
 #include "util/user_error.h"
@@ -40,7 +40,7 @@ const Reader kReaders[] = {
     {"baseline", ".json", [](const std::string& p) { budget::load_baseline(p); }},
     {"sweep_file", ".toml", [](const std::string& p) { driver::parse_sweep_file(p); }},
     {"device_fingerprint", ".toml", [](const std::string& p) { budget::file_fingerprint(p); }},
-    {"sweep_results", ".json", [](const std::string& p) { reports::read_sweep_json(p); }},
+    {"sweep_results", ".json", [](const std::string& p) { results::read_sweep_json(p); }},
 };
 
 // Makes the bad input at `path`; returns false if it cannot be made here (skip).
@@ -122,7 +122,7 @@ struct JsonReader {
 
 const JsonReader kJsonReaders[] = {
     {"baseline", [](const fs::path& p) { budget::load_baseline(p); }, true},
-    {"sweep_results", [](const fs::path& p) { reports::read_sweep_json(p.string()); }, true},
+    {"sweep_results", [](const fs::path& p) { results::read_sweep_json(p.string()); }, true},
     {"run_result",
      [](const fs::path& p) { driver::compare_outputs(p.parent_path(), p.parent_path(), {}, {}); },
      true},

@@ -7,8 +7,8 @@
 #include <sstream>
 
 #include "full_disk.h"
+#include "image/image.h"
 #include "io/read_file.h"
-#include "quality/image.h"
 #include "scratch_dir.h"
 
 namespace skinsim::io {
@@ -16,8 +16,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-quality::Image noise(int size) {
-  quality::Image image = quality::Image::filled(size, size, glm::vec3(0.0f));
+image::Image noise(int size) {
+  image::Image image = image::Image::filled(size, size, glm::vec3(0.0f));
   unsigned state = 12345;
   for (glm::vec3& p : image.rgb) {  // incompressible, so the PNG is large
     for (int c = 0; c < 3; ++c) {
@@ -31,20 +31,20 @@ quality::Image noise(int size) {
 TEST(PngFullDisk, FailureIsReportedAndOldImageKept) {
   const fs::path dir = testing::make_scratch_dir();
   const fs::path path = dir / "frame.png";
-  quality::save_png(quality::Image::filled(8, 8, glm::vec3(0.5f)), path);
+  image::save_png(image::Image::filled(8, 8, glm::vec3(0.5f)), path);
   const std::string previous = testing::read_whole(path);
 
   const std::string error =
-      testing::error_on_full_disk(16 * 1024, [&] { quality::save_png(noise(256), path); });
+      testing::error_on_full_disk(16 * 1024, [&] { image::save_png(noise(256), path); });
   EXPECT_NE(error.find(path.string()), std::string::npos) << error;
   EXPECT_NE(error.find("File too large"), std::string::npos) << error;
   EXPECT_EQ(testing::read_whole(path), previous);
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
 
   // With room, the same image is written and reads back whole.
-  quality::save_png(noise(256), path);
-  const quality::Image expected = noise(256);
-  const quality::Image read = quality::load_png(path);
+  image::save_png(noise(256), path);
+  const image::Image expected = noise(256);
+  const image::Image read = image::load_png(path);
   ASSERT_EQ(read.rgb.size(), expected.rgb.size());
   for (std::size_t i = 0; i < read.rgb.size(); ++i) {
     ASSERT_NEAR(read.rgb[i].x, expected.rgb[i].x, 1e-6f) << "pixel " << i;
@@ -55,8 +55,8 @@ TEST(PngFullDisk, FailureIsReportedAndOldImageKept) {
 TEST(PngRead, FifoOrDeviceIsRefusedWithoutBlocking) {
   const fs::path dir = testing::make_scratch_dir();
   ASSERT_EQ(::mkfifo((dir / "frame.png").c_str(), 0600), 0);
-  EXPECT_THROW(quality::load_png(dir / "frame.png"), InputError);
-  EXPECT_THROW(quality::load_png("/dev/zero"), InputError);
+  EXPECT_THROW(image::load_png(dir / "frame.png"), InputError);
+  EXPECT_THROW(image::load_png("/dev/zero"), InputError);
 }
 
 }  // namespace

@@ -17,15 +17,18 @@
 
 #include "quality/error.h"
 #include "quality/separable_stream.h"
-#include "tests/quality/test_image.h"
+#include "tests/image/test_image.h"
 #include "util/simd_dispatch.h"
 
 namespace skinsim::quality {
 namespace {
 
-using testing::add_noise;
-using testing::box_blur;
-using testing::pattern_image;
+using image::Image;
+using image::Mask;
+using image::ScalarMap;
+using image::testing::add_noise;
+using image::testing::box_blur;
+using image::testing::pattern_image;
 
 // A reference/test pair with noise and a red square, stored as 8-bit values (as the PNGs the
 // external cross-checks below read).

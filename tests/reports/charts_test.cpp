@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "quality/image.h"
+#include "image/image.h"
 #include "reports/display_check.h"
 #include "reports/error.h"
 #include "reports/sequence_charts.h"
@@ -38,7 +38,7 @@ class ChartsTest : public ::testing::Test {
 // The PNG has the requested size and more than one colour; the SVG is non-empty vector text.
 void expect_real_chart(const ChartFiles& files, const ChartOptions& options) {
   ASSERT_TRUE(fs::exists(files.png)) << files.png;
-  const quality::Image image = quality::load_png(files.png);
+  const image::Image image = image::load_png(files.png);
   EXPECT_EQ(image.width, options.width);
   EXPECT_EQ(image.height, options.height);
   const bool varies = std::any_of(image.rgb.begin(), image.rgb.end(),
@@ -52,7 +52,7 @@ void expect_real_chart(const ChartFiles& files, const ChartOptions& options) {
 
 TEST_F(ChartsTest, TradeoffChartPerLutAndPerScale) {
   const std::string dir = fresh_output_dir();
-  const SweepTable sweep = synthetic_sweep();
+  const results::SweepTable sweep = synthetic_sweep();
   TradeoffSpec by_lut;
   by_lut.metric_label = "FLIP mean over skin (lower is better)";
   expect_real_chart(write_tradeoff_chart(sweep, by_lut, dir + "/tradeoff_by_lut", options_),
@@ -73,7 +73,7 @@ TEST_F(ChartsTest, TradeoffChartPerLutAndPerScale) {
 }
 
 TEST_F(ChartsTest, TradeoffChartComparesTechniques) {
-  SweepTable sweep = synthetic_sweep();
+  results::SweepTable sweep = synthetic_sweep();
   for (std::size_t i = 0; i < sweep.rows.size(); i += 2) {
     sweep.rows[i].knobs["technique"] = "preintegrated";
   }
@@ -87,10 +87,10 @@ TEST_F(ChartsTest, TradeoffChartComparesTechniques) {
 }
 
 // A technique that ignores the scale has no scale in its rows (the sweep leaves it out).
-SweepTable with_scale_free_rows() {
-  SweepTable sweep = synthetic_sweep();
+results::SweepTable with_scale_free_rows() {
+  results::SweepTable sweep = synthetic_sweep();
   for (std::size_t i = 0; i < 4; ++i) {
-    ConfigResult r = sweep.rows[i];
+    results::ConfigResult r = sweep.rows[i];
     r.id += "_wrap";
     r.knobs["technique"] = "wrap";
     r.knobs.erase("scale");
@@ -103,7 +103,7 @@ SweepTable with_scale_free_rows() {
 }
 
 TEST(TradeoffRows, ARowIsOnAChartOnlyWithItsSeriesAndOrderKnobs) {
-  const SweepTable sweep = with_scale_free_rows();
+  const results::SweepTable sweep = with_scale_free_rows();
   TradeoffSpec by_lut;  // series lut, ordered by scale
   TradeoffSpec by_technique;
   by_technique.series_knob = "technique";
@@ -114,7 +114,7 @@ TEST(TradeoffRows, ARowIsOnAChartOnlyWithItsSeriesAndOrderKnobs) {
 }
 
 TEST_F(ChartsTest, TradeoffChartLeavesOutRowsWithoutItsKnobs) {
-  const SweepTable sweep = with_scale_free_rows();
+  const results::SweepTable sweep = with_scale_free_rows();
   options_.write_svg = false;
   TradeoffSpec by_lut;
   expect_real_chart(write_tradeoff_chart(sweep, by_lut, fresh_output_dir() + "/lut", options_),
@@ -142,7 +142,7 @@ TEST_F(ChartsTest, TradeoffChartWithoutTheMetricThrows) {
 }
 
 TEST_F(ChartsTest, EnergyChartPerDeviceGroup) {
-  SweepTable sweep = synthetic_sweep();
+  results::SweepTable sweep = synthetic_sweep();
   for (std::size_t i = 0; i < sweep.rows.size(); ++i) {
     sweep.rows[i].group = i % 2 ? "a15, 2048x1536" : "ipad4, 2048x1536";
   }
@@ -151,7 +151,8 @@ TEST_F(ChartsTest, EnergyChartPerDeviceGroup) {
                                        dir + "/energy", options_),
                     options_);
   // Every configuration at the same energy (a zero-width axis) still draws.
-  for (ConfigResult& r : sweep.rows) r.energy_mj = r.energy_mj_low = r.energy_mj_high = 0.0;
+  for (results::ConfigResult& r : sweep.rows)
+    r.energy_mj = r.energy_mj_low = r.energy_mj_high = 0.0;
   options_.write_svg = false;
   expect_real_chart(
       write_energy_chart(sweep, {"flip_skin", false, "FLIP"}, dir + "/flat", options_), options_);
@@ -172,7 +173,7 @@ TEST_F(ChartsTest, PassStackChart) {
 
 TEST_F(ChartsTest, TileHeatmapAndBottleneckMap) {
   const std::string dir = fresh_output_dir();
-  const TileHeatmap heatmap = *synthetic_sweep().heatmap;
+  const results::TileHeatmap heatmap = *synthetic_sweep().heatmap;
   const ChartFiles cost = write_tile_cost_heatmap(heatmap, dir + "/tile_cost", options_);
   EXPECT_TRUE(cost.svg.empty());  // raster content: PNG only
   expect_real_chart(cost, options_);
@@ -181,7 +182,7 @@ TEST_F(ChartsTest, TileHeatmapAndBottleneckMap) {
 }
 
 TEST_F(ChartsTest, BottleneckMapNeedsBottlenecks) {
-  TileHeatmap heatmap = *synthetic_sweep().heatmap;
+  results::TileHeatmap heatmap = *synthetic_sweep().heatmap;
   heatmap.bottleneck.clear();
   EXPECT_THROW(write_tile_bottleneck_map(heatmap, fresh_output_dir() + "/x", options_),
                ReportError);

@@ -27,8 +27,8 @@ TEST(SweepCsv, HeaderListsKnobsTotalsPassesAndMetrics) {
 }
 
 TEST(SweepCsv, RowsCarryTheValues) {
-  SweepTable sweep;
-  ConfigResult r;
+  results::SweepTable sweep;
+  results::ConfigResult r;
   r.id = "a";
   r.label = "scale 0.5, \"big\" LUT";
   r.knobs = {{"scale", "0.5"}};
@@ -43,7 +43,7 @@ TEST(SweepCsv, RowsCarryTheValues) {
   r.passes = {
       {"shade", 10.0, "alu", {}}, {"blur", 1.25, "texture", {}}, {"blur", 1.25, "dram", {}}};
   r.quality = {{"flip_skin", 0.125}};
-  ConfigResult s;
+  results::ConfigResult s;
   s.id = "b";
   s.frame_ms = 3;
   s.frame_ms_low = 3;
@@ -65,8 +65,8 @@ TEST(SweepCsv, RowsCarryTheValues) {
 }
 
 TEST(SweepCsv, CollidingColumnNamesAreAnError) {
-  SweepTable sweep;
-  ConfigResult r;
+  results::SweepTable sweep;
+  results::ConfigResult r;
   r.id = "a";
   r.knobs = {{"flip_skin", "x"}};
   r.quality = {{"flip_skin", 0.1}};

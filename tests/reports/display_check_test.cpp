@@ -27,8 +27,8 @@ namespace {
 using test::ScopedEnv;
 
 // A sweep row with one pass: enough for write_dram_by_cause_chart.
-ConfigResult one_pass_row() {
-  ConfigResult row;
+results::ConfigResult one_pass_row() {
+  results::ConfigResult row;
   row.id = "a";
   row.passes = {{"shade", 1.0, "alu", {{"color_store", 1e6}}}};
   return row;
@@ -79,7 +79,7 @@ TEST(ChartsAvailable, NoWhenTheDisplayNeverAnswers) {
 
 TEST(ChartsAvailable, ChartFunctionsThrowInsteadOfCrashing) {
   ScopedEnv none("DISPLAY", std::nullopt);
-  const ConfigResult row = one_pass_row();
+  const results::ConfigResult row = one_pass_row();
   try {
     write_dram_by_cause_chart(row, "never_written");
     FAIL() << "expected ReportError";
@@ -150,7 +150,7 @@ TEST(ChartsAvailable, NoWhenTheDisplayHasNoOpenGL) {
             std::string::npos)
       << why;
   EXPECT_NE(why.find("--no-charts"), std::string::npos) << why;
-  const ConfigResult row = one_pass_row();
+  const results::ConfigResult row = one_pass_row();
   EXPECT_THROW(write_dram_by_cause_chart(row, ::testing::TempDir() + "no_glx/dram"), ReportError);
 }
 
@@ -175,7 +175,7 @@ TEST(ChartDisplayDeathTest, ALostXServerEndsTheProcessWithStatus2AndSaysWhichDis
   PrivateXServer server;
   if (server.name().empty()) GTEST_SKIP() << "cannot start Xvfb (is the xvfb package installed?)";
   ScopedEnv use("DISPLAY", server.name());
-  const ConfigResult row = one_pass_row();
+  const results::ConfigResult row = one_pass_row();
   const std::string dir = ::testing::TempDir() + "lost_display_charts";
   // Only the forked child connects, so this process keeps no connection to the killed server
   // (a later test's Xvfb may get the same display number).

@@ -34,8 +34,8 @@ std::string read_text(const std::string& path) {
 }
 
 // The frame and error images the sweep would have written (tiny placeholder files).
-void touch_images(const SweepTable& sweep, const std::string& dir) {
-  for (const ConfigResult& r : sweep.rows) {
+void touch_images(const results::SweepTable& sweep, const std::string& dir) {
+  for (const results::ConfigResult& r : sweep.rows) {
     for (const std::string& rel : {r.frame_image, r.error_image}) {
       fs::create_directories((fs::path(dir) / rel).parent_path());
       std::ofstream(fs::path(dir) / rel) << "image";
@@ -52,7 +52,7 @@ ReportOptions no_charts() {
 TEST(HtmlReport, EscapesEveryString) {
   EXPECT_EQ(escape_markup("<a href=\"x\">&'</a>"),
             "&lt;a href=&quot;x&quot;&gt;&amp;&#39;&lt;/a&gt;");
-  SweepTable sweep = synthetic_sweep();
+  results::SweepTable sweep = synthetic_sweep();
   sweep.device = "<script>alert('device')</script>";
   sweep.rows[0].label = "LUT <b>\"big\"</b> & co";
   sweep.rows[0].knobs["technique"] = "a<b";
@@ -67,7 +67,7 @@ TEST(HtmlReport, EscapesEveryString) {
 }
 
 TEST(HtmlReport, LinksResolveWithoutCharts) {
-  const SweepTable sweep = synthetic_sweep();
+  const results::SweepTable sweep = synthetic_sweep();
   const std::string dir = fresh_output_dir();
   touch_images(sweep, dir);
   write_report(sweep, dir, no_charts());
@@ -78,7 +78,7 @@ TEST(HtmlReport, LinksResolveWithoutCharts) {
 }
 
 TEST(HtmlReport, ShowsThumbnailsWhereTheyExistAndLinksTheFullImages) {
-  const SweepTable sweep = synthetic_sweep();
+  const results::SweepTable sweep = synthetic_sweep();
   const std::string dir = fresh_output_dir();
   touch_images(sweep, dir);
   const std::string small = thumbnail_path(sweep.rows[0].frame_image);
@@ -98,7 +98,7 @@ TEST(HtmlReport, ShowsThumbnailsWhereTheyExistAndLinksTheFullImages) {
 // The sweep writes its thumbnails beside the charts: the page, assembled after that work has
 // finished, shows them; and the work's failure is the report's.
 TEST(HtmlReport, WorkAlongsideTheChartsEndsBeforeThePage) {
-  const SweepTable sweep = synthetic_sweep();
+  const results::SweepTable sweep = synthetic_sweep();
   const std::string dir = fresh_output_dir();
   touch_images(sweep, dir);
   const std::string small = thumbnail_path(sweep.rows[0].frame_image);
@@ -116,7 +116,7 @@ TEST(HtmlReport, WorkAlongsideTheChartsEndsBeforeThePage) {
 }
 
 TEST(HtmlReport, DrawsATimelinePerConfigurationWithTheRecommendedOneOpen) {
-  const SweepTable sweep = synthetic_sweep();
+  const results::SweepTable sweep = synthetic_sweep();
   const std::string html = read_text(write_report(sweep, fresh_output_dir(), no_charts()));
   std::size_t timelines = 0;
   for (std::size_t at = html.find("<svg class=\"timeline\""); at != std::string::npos;
@@ -128,7 +128,7 @@ TEST(HtmlReport, DrawsATimelinePerConfigurationWithTheRecommendedOneOpen) {
 }
 
 TEST(HtmlReport, MissingImagesAreReported) {
-  const SweepTable sweep = synthetic_sweep();
+  const results::SweepTable sweep = synthetic_sweep();
   const std::string dir = fresh_output_dir();
   touch_images(sweep, dir);
   fs::remove(fs::path(dir) / sweep.rows[3].error_image);
@@ -137,7 +137,7 @@ TEST(HtmlReport, MissingImagesAreReported) {
 }
 
 TEST(HtmlReport, LinkCheckDecodesFileNames) {
-  SweepTable sweep = synthetic_sweep();
+  results::SweepTable sweep = synthetic_sweep();
   sweep.rows[0].frame_image = "frames/odd name & more.png";
   const std::string dir = fresh_output_dir();
   touch_images(sweep, dir);
@@ -149,11 +149,11 @@ TEST(HtmlReport, LinkCheckDecodesFileNames) {
 }
 
 TEST(HtmlReport, StatesTheRecommendationWithItsRangeAndRule) {
-  const SweepTable sweep = synthetic_sweep();
+  const results::SweepTable sweep = synthetic_sweep();
   const std::vector<Recommendation> recommendations = recommend(sweep, "flip_skin");
   ASSERT_EQ(recommendations.size(), 1u);
   ASSERT_TRUE(recommendations[0].chosen);
-  const ConfigResult& chosen = sweep.rows[*recommendations[0].chosen];
+  const results::ConfigResult& chosen = sweep.rows[*recommendations[0].chosen];
   const std::string html = read_text(write_report(sweep, fresh_output_dir(), no_charts()));
   const std::size_t section = html.find("<h2>Recommendation</h2>");
   ASSERT_NE(section, std::string::npos);
@@ -178,7 +178,7 @@ std::string section_of(const std::string& html, const std::string& heading) {
 }
 
 TEST(HtmlReport, StatesEachKnobsVerdictBeforeTheRecommendation) {
-  const SweepTable sweep = synthetic_sweep();
+  const results::SweepTable sweep = synthetic_sweep();
   const std::string html = read_text(write_report(sweep, fresh_output_dir(), no_charts()));
   const std::string verdicts = section_of(html, "What each knob does");
   ASSERT_FALSE(verdicts.empty());
@@ -191,7 +191,7 @@ TEST(HtmlReport, StatesEachKnobsVerdictBeforeTheRecommendation) {
 }
 
 TEST(HtmlReport, RecommendationNamesItsRangeAgainstTheBudgetAndTheRunnerUp) {
-  SweepTable sweep = synthetic_sweep();
+  results::SweepTable sweep = synthetic_sweep();
   const Recommendation r = recommend(sweep, "flip_skin").front();
   ASSERT_FALSE(r.range_note.empty());
   ASSERT_FALSE(r.runner_up_note.empty());
@@ -202,15 +202,15 @@ TEST(HtmlReport, RecommendationNamesItsRangeAgainstTheBudgetAndTheRunnerUp) {
 }
 
 TEST(HtmlReport, ExplainsTechniqueErrorAgainstKnobErrorBesideTheTable) {
-  const SweepTable sweep = synthetic_sweep();
+  const results::SweepTable sweep = synthetic_sweep();
   const std::string text =
       section_of(read_text(write_report(sweep, fresh_output_dir(), no_charts())), "Configurations");
   EXPECT_NE(text.find("Technique error and knob error"), std::string::npos);
   const TechniqueError e = technique_errors(sweep, "flip_skin").front();
   EXPECT_NE(text.find(escape_markup(e.sentence)), std::string::npos) << e.sentence;
   // Every row visibly different from the reference: the page says what that column measures.
-  SweepTable all_visible = sweep;
-  for (ConfigResult& r : all_visible.rows) {
+  results::SweepTable all_visible = sweep;
+  for (results::ConfigResult& r : all_visible.rows) {
     r.reference_image = "refs/reference.png";
     r.visible_vs_reference = true;
   }
@@ -223,9 +223,9 @@ TEST(HtmlReport, ExplainsTechniqueErrorAgainstKnobErrorBesideTheTable) {
 }
 
 TEST(HtmlReport, TheSliderOffersEveryFrameOfTheGroupAndTheirDifference) {
-  SweepTable sweep = synthetic_sweep();
+  results::SweepTable sweep = synthetic_sweep();
   const Recommendation r = recommend(sweep, "flip_skin").front();
-  ComparisonPanel panel;
+  results::ComparisonPanel panel;
   panel.chosen = sweep.rows[*r.chosen].id;
   panel.best = sweep.rows[*r.best].id;
   panel.reference_image = "refs/reference.png";
@@ -240,7 +240,7 @@ TEST(HtmlReport, TheSliderOffersEveryFrameOfTheGroupAndTheirDifference) {
   const std::size_t left = text.find("<select class=\"left\">");
   ASSERT_NE(left, std::string::npos) << text;
   const std::string options = text.substr(left, text.find("</select>", left) - left);
-  for (const ConfigResult& row : sweep.rows) {
+  for (const results::ConfigResult& row : sweep.rows) {
     EXPECT_NE(options.find("value=\"" + row.frame_image + "\""), std::string::npos) << row.id;
   }
   EXPECT_NE(options.find("value=\"refs/reference.png\">reference<"), std::string::npos);
@@ -251,18 +251,18 @@ TEST(HtmlReport, TheSliderOffersEveryFrameOfTheGroupAndTheirDifference) {
 }
 
 TEST(HtmlReport, SaysSoWhenNothingFitsTheBudget) {
-  SweepTable sweep = synthetic_sweep();
+  results::SweepTable sweep = synthetic_sweep();
   sweep.budget_ms = 1.0;
   const std::string html = read_text(write_report(sweep, fresh_output_dir(), no_charts()));
   EXPECT_NE(html.find("no configuration fits the 1.0 ms budget"), std::string::npos);
 }
 
 TEST(HtmlReport, ComparesTechniquesWithTheirProgramsWhenThereAreSeveral) {
-  SweepTable sweep = synthetic_sweep();
+  results::SweepTable sweep = synthetic_sweep();
   const std::string single = read_text(write_report(sweep, fresh_output_dir(), no_charts()));
   EXPECT_EQ(single.find("Techniques compared"), std::string::npos);
   for (std::size_t i = 0; i < sweep.rows.size(); ++i) {
-    ConfigResult& r = sweep.rows[i];
+    results::ConfigResult& r = sweep.rows[i];
     r.knobs["technique"] = i % 2 ? "wrap" : "mobile";
     r.programs = {{"skin", i % 2 ? "wrap_fs" : "skin_fs", 2.5e6, 30, 18, 7, 4, 1},
                   {"skin", "background_fs", 1e5, 8, 1, 4, 1, 0}};
@@ -275,7 +275,7 @@ TEST(HtmlReport, ComparesTechniquesWithTheirProgramsWhenThereAreSeveral) {
 }
 
 TEST(HtmlReport, AKnobARowDoesNotUseShowsAsADash) {
-  SweepTable sweep = synthetic_sweep();
+  results::SweepTable sweep = synthetic_sweep();
   sweep.rows[0].knobs.erase("scale");
   sweep.rows[0].label = "scale-free";
   const std::string html = read_text(write_report(sweep, fresh_output_dir(), no_charts()));
@@ -299,7 +299,7 @@ TEST(HtmlReport, MissingReportIsAnError) {
 TEST(HtmlReport, WithChartsAllLinksResolve) {
   std::string why;
   if (!charts_available(&why)) GTEST_SKIP() << why;
-  const SweepTable sweep = synthetic_sweep();
+  const results::SweepTable sweep = synthetic_sweep();
   const std::string dir = fresh_output_dir();
   touch_images(sweep, dir);
   const std::string html = read_text(write_report(sweep, dir));

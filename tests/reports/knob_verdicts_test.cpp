@@ -8,7 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "io/read_file.h"
-#include "reports/sweep_table.h"
+#include "reports/sweep_json.h"
+#include "results/sweep_table.h"
 #include "tests/scratch_dir.h"
 
 namespace skinsim::reports {
@@ -16,9 +17,9 @@ namespace {
 
 // A row of group "g" with `knobs`, `ms` and FLIP `flip` against the reference; its
 // comparison with `finest` (FLIP `against`, `px` pixels above the threshold, visible at 30).
-ConfigResult row(const std::string& id, std::map<std::string, std::string> knobs, double ms,
-                 double flip, const std::string& finest, double px) {
-  ConfigResult r;
+results::ConfigResult row(const std::string& id, std::map<std::string, std::string> knobs,
+                          double ms, double flip, const std::string& finest, double px) {
+  results::ConfigResult r;
   r.id = id;
   r.group = "g";
   r.knobs = std::move(knobs);
@@ -26,13 +27,13 @@ ConfigResult row(const std::string& id, std::map<std::string, std::string> knobs
   r.frame_ms_low = ms * 0.8;
   r.frame_ms_high = ms * 1.5;
   r.quality["flip_skin"] = flip;
-  r.vs_finest = FrameComparison{finest, id == finest ? 0.0 : 0.02, 0.1, px, px >= 30.0};
+  r.vs_finest = results::FrameComparison{finest, id == finest ? 0.0 : 0.02, 0.1, px, px >= 30.0};
   r.vs_best = r.vs_finest;
   return r;
 }
 
-SweepTable table(std::vector<ConfigResult> rows) {
-  SweepTable t;
+results::SweepTable table(std::vector<results::ConfigResult> rows) {
+  results::SweepTable t;
   t.budget_ms = 33.3;
   t.rows = std::move(rows);
   return t;
@@ -52,7 +53,7 @@ bool has(const std::string& text, const std::string& part) {
 
 // A LUT x scale grid of "mobile" around fine = (scale 1, lut 64x256): the LUT costs nothing
 // and shows, the scale saves time and does not show.
-SweepTable lut_and_scale() {
+results::SweepTable lut_and_scale() {
   const auto k = [](const std::string& scale, const std::string& lut) {
     return std::map<std::string, std::string>{
         {"technique", "mobile"}, {"scale", scale}, {"lut", lut}, {"device", "ipad4"}};
@@ -92,7 +93,7 @@ TEST(KnobVerdicts, OnlyDearerValuesAndBothDirections) {
     return std::map<std::string, std::string>{{"technique", "mobile"}, {"shadow_taps", taps}};
   };
   // The finest is the middle value: one value is cheaper, one dearer.
-  SweepTable t =
+  results::SweepTable t =
       table({row("t1", k("1"), 20.0, 0.07, "t4", 800), row("t4", k("4"), 25.3, 0.05, "t4", 0),
              row("t16", k("16"), 31.0, 0.0501, "t4", 5)});
   const KnobVerdict both = verdict_for(knob_verdicts(t, "flip_skin"), "shadow_taps");
@@ -114,9 +115,10 @@ TEST(KnobVerdicts, AKnobWithOneValueForATechniqueIsNotMeasured) {
   const auto k = [](const std::string& technique, const std::string& lut) {
     return std::map<std::string, std::string>{{"technique", technique}, {"lut", lut}};
   };
-  const SweepTable t = table({row("m1", k("mobile", "8x32"), 10.0, 0.06, "m2", 100),
-                              row("m2", k("mobile", "64x256"), 10.0, 0.05, "m2", 0),
-                              row("p1", k("preintegrated", "64x256"), 12.0, 0.04, "p1", 0)});
+  const results::SweepTable t =
+      table({row("m1", k("mobile", "8x32"), 10.0, 0.06, "m2", 100),
+             row("m2", k("mobile", "64x256"), 10.0, 0.05, "m2", 0),
+             row("p1", k("preintegrated", "64x256"), 12.0, 0.04, "p1", 0)});
   const std::vector<KnobVerdict> all = knob_verdicts(t, "flip_skin");
   const KnobVerdict one = verdict_for(all, "lut", "preintegrated");
   EXPECT_EQ(one.kind, KnobVerdict::Kind::one_value);
@@ -128,8 +130,8 @@ TEST(KnobVerdicts, KnobsThatNeverVaryAloneAreSaidSo) {
   const auto k = [](const std::string& a, const std::string& b) {
     return std::map<std::string, std::string>{{"technique", "mobile"}, {"scale", a}, {"lut", b}};
   };
-  const SweepTable t = table({row("x", k("1", "64x256"), 20.0, 0.05, "x", 0),
-                              row("y", k("0.5", "8x32"), 10.0, 0.08, "x", 900)});
+  const results::SweepTable t = table({row("x", k("1", "64x256"), 20.0, 0.05, "x", 0),
+                                       row("y", k("0.5", "8x32"), 10.0, 0.08, "x", 900)});
   const KnobVerdict lut = verdict_for(knob_verdicts(t, "flip_skin"), "lut");
   EXPECT_EQ(lut.kind, KnobVerdict::Kind::not_isolated);
   EXPECT_TRUE(has(lut.sentence, "no configuration differs from x in this knob alone"))
@@ -140,12 +142,12 @@ TEST(KnobVerdicts, TheTechniqueIsJudgedOnEachTechniquesBestAgainstTheGroupsBest)
   const auto k = [](const std::string& technique, const std::string& lut) {
     return std::map<std::string, std::string>{{"technique", technique}, {"lut", lut}};
   };
-  SweepTable t = table({row("m", k("mobile", "64x256"), 8.08, 0.09, "m", 0),
-                        row("m_small", k("mobile", "8x32"), 8.0, 0.095, "m", 50),
-                        row("b", k("burley", "64x256"), 24.81, 0.03, "b", 0)});
-  t.rows[0].vs_best = FrameComparison{"b", 0.05, 0.3, 14026, true};
-  t.rows[1].vs_best = FrameComparison{"b", 0.06, 0.3, 15000, true};
-  t.rows[2].vs_best = FrameComparison{"b", 0.0, 0.0, 0, false};
+  results::SweepTable t = table({row("m", k("mobile", "64x256"), 8.08, 0.09, "m", 0),
+                                 row("m_small", k("mobile", "8x32"), 8.0, 0.095, "m", 50),
+                                 row("b", k("burley", "64x256"), 24.81, 0.03, "b", 0)});
+  t.rows[0].vs_best = results::FrameComparison{"b", 0.05, 0.3, 14026, true};
+  t.rows[1].vs_best = results::FrameComparison{"b", 0.06, 0.3, 15000, true};
+  t.rows[2].vs_best = results::FrameComparison{"b", 0.0, 0.0, 0, false};
   const std::vector<KnobVerdict> all = knob_verdicts(t, "flip_skin");
   ASSERT_FALSE(all.empty());
   EXPECT_EQ(all[0].knob, "technique");  // first in its group
@@ -162,7 +164,7 @@ TEST(KnobVerdicts, TheTechniqueIsJudgedOnEachTechniquesBestAgainstTheGroupsBest)
   // A technique that costs the same and looks the same: said so.
   t.rows[0].frame_ms = 24.8;
   t.rows[0].frame_ms_low = 20.0;
-  t.rows[0].vs_best = FrameComparison{"b", 0.01, 0.05, 3, false};
+  t.rows[0].vs_best = results::FrameComparison{"b", 0.01, 0.05, 3, false};
   const KnobVerdict same = knob_verdicts(t, "flip_skin")[0];
   EXPECT_FALSE(same.time_effect);
   EXPECT_FALSE(same.visible_effect);
@@ -171,9 +173,9 @@ TEST(KnobVerdicts, TheTechniqueIsJudgedOnEachTechniquesBestAgainstTheGroupsBest)
 }
 
 TEST(KnobVerdicts, KnobsThatDefineTheGroupsAreNotJudged) {
-  SweepTable t = lut_and_scale();
-  std::vector<ConfigResult> other = t.rows;
-  for (ConfigResult& r : other) {
+  results::SweepTable t = lut_and_scale();
+  std::vector<results::ConfigResult> other = t.rows;
+  for (results::ConfigResult& r : other) {
     r.id += "_iphone";
     r.group = "iphone";
     r.knobs["device"] = "iphone5";
@@ -186,8 +188,8 @@ TEST(KnobVerdicts, KnobsThatDefineTheGroupsAreNotJudged) {
 }
 
 TEST(KnobVerdicts, VisibilityNotMeasuredWithoutComparisons) {
-  SweepTable t = lut_and_scale();
-  for (ConfigResult& r : t.rows) r.vs_finest.reset();
+  results::SweepTable t = lut_and_scale();
+  for (results::ConfigResult& r : t.rows) r.vs_finest.reset();
   const KnobVerdict lut = verdict_for(knob_verdicts(t, "flip_skin"), "lut");
   EXPECT_TRUE(has(lut.sentence, "its visible effect was not measured")) << lut.sentence;
 }
@@ -206,14 +208,14 @@ TEST(TechniqueErrors, SplitTheErrorAgainstTheReferenceFromWhatTheKnobsAdd) {
       << e.sentence;
   EXPECT_TRUE(has(e.sentence, "2 of its 3 other configurations differ visibly")) << e.sentence;
   // A technique swept at one configuration has no knob error to state.
-  SweepTable single = lut_and_scale();
+  results::SweepTable single = lut_and_scale();
   single.rows.resize(1);
   EXPECT_TRUE(
       has(technique_errors(single, "flip_skin")[0].sentence, "so the knob error is not measured"));
 }
 
 TEST(Findings, ResultsJsonKeepsThemAndReadingIgnoresThem) {
-  const SweepTable t = lut_and_scale();
+  const results::SweepTable t = lut_and_scale();
   EXPECT_EQ(unswept_knobs(t), (std::vector<std::string>{"device=ipad4", "technique=mobile"}));
   const std::string path =
       (skinsim::testing::scratch_root("skinsim_knob_verdicts") / "results.json").string();
@@ -224,7 +226,7 @@ TEST(Findings, ResultsJsonKeepsThemAndReadingIgnoresThem) {
   EXPECT_EQ(j["findings"]["recommendations"][0]["chosen"], "half");
   EXPECT_EQ(j["findings"]["knob_verdicts"].size(), 2u);
   EXPECT_EQ(j["findings"]["technique_errors"][0]["finest"], "fine");
-  EXPECT_EQ(read_sweep_json(path).rows.size(), t.rows.size());
+  EXPECT_EQ(results::read_sweep_json(path).rows.size(), t.rows.size());
 }
 
 }  // namespace

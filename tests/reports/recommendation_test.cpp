@@ -8,9 +8,9 @@ namespace {
 
 // A row of `group` at `ms` with FLIP `flip` against the reference; `visible_vs_best`: whether
 // its frame differs visibly from the group's best row (`best`).
-ConfigResult row(const std::string& id, const std::string& group, double ms, double flip,
-                 const std::string& best, bool visible_vs_best) {
-  ConfigResult r;
+results::ConfigResult row(const std::string& id, const std::string& group, double ms, double flip,
+                          const std::string& best, bool visible_vs_best) {
+  results::ConfigResult r;
   r.id = id;
   r.group = group;
   r.frame_ms = ms;
@@ -20,13 +20,13 @@ ConfigResult row(const std::string& id, const std::string& group, double ms, dou
   r.energy_mj_low = r.energy_mj * 0.5;
   r.energy_mj_high = r.energy_mj * 2.0;
   r.quality["flip_skin"] = flip;
-  r.vs_best = FrameComparison{best, id == best ? 0.0 : 0.01, 0.05, visible_vs_best ? 500.0 : 3.0,
-                              visible_vs_best};
+  r.vs_best = results::FrameComparison{best, id == best ? 0.0 : 0.01, 0.05,
+                                       visible_vs_best ? 500.0 : 3.0, visible_vs_best};
   return r;
 }
 
 TEST(Recommendation, AnInvisibleDifferenceIsATieAndTheCheaperWins) {
-  SweepTable t;
+  results::SweepTable t;
   t.budget_ms = 30.0;
   t.rows = {row("fine", "ipad4", 25.0, 0.0800, "fine", false),
             row("cheap", "ipad4", 12.0, 0.0801, "fine", false),  // 0.0001 worse: noise
@@ -45,7 +45,7 @@ TEST(Recommendation, AnInvisibleDifferenceIsATieAndTheCheaperWins) {
 }
 
 TEST(Recommendation, DevicesAreNeverComparedAcrossGroups) {
-  SweepTable t;
+  results::SweepTable t;
   t.budget_ms = 30.0;
   t.rows = {row("a_ipad", "ipad4", 20.0, 0.08, "a_ipad", false),
             row("a_iphone", "iphone5", 28.0, 0.07, "b_iphone", false),
@@ -63,7 +63,7 @@ TEST(Recommendation, DevicesAreNeverComparedAcrossGroups) {
 }
 
 TEST(Recommendation, WhenEverythingInBudgetIsVisiblyWorseTheKneeIsChosenAndSaidSo) {
-  SweepTable t;
+  results::SweepTable t;
   t.budget_ms = 20.0;
   t.rows = {row("best", "g", 40.0, 0.05, "best", false),  // over budget
             row("mid", "g", 18.0, 0.07, "best", true), row("low", "g", 8.0, 0.09, "best", true)};
@@ -75,7 +75,7 @@ TEST(Recommendation, WhenEverythingInBudgetIsVisiblyWorseTheKneeIsChosenAndSaidS
 }
 
 TEST(Recommendation, NothingWithinBudgetIsNoRecommendation) {
-  SweepTable t;
+  results::SweepTable t;
   t.budget_ms = 5.0;
   t.rows = {row("a", "g", 10.0, 0.05, "a", false)};
   const std::vector<Recommendation> r = recommend(t, "flip_skin");
@@ -92,16 +92,16 @@ namespace {
 
 // Rows of group "g" at `ms` (range low..high), FLIP `flip`, visibly different from "best" or
 // not.
-ConfigResult ranged(const std::string& id, double ms, double low, double high, double flip,
-                    bool visible_vs_best) {
-  ConfigResult r = row(id, "g", ms, flip, "best", visible_vs_best);
+results::ConfigResult ranged(const std::string& id, double ms, double low, double high, double flip,
+                             bool visible_vs_best) {
+  results::ConfigResult r = row(id, "g", ms, flip, "best", visible_vs_best);
   r.frame_ms_low = low;
   r.frame_ms_high = high;
   return r;
 }
 
 TEST(Recommendation, SaysWhenTheRangeStraddlesTheBudgetAndNamesTheSafeChoice) {
-  SweepTable t;
+  results::SweepTable t;
   t.budget_ms = 33.3;
   t.rows = {ranged("best", 40.0, 30.0, 60.0, 0.05, false),
             ranged("cheap", 23.17, 17.11, 43.06, 0.0501, false),  // straddles
@@ -137,7 +137,7 @@ TEST(Recommendation, SaysWhenTheRangeStraddlesTheBudgetAndNamesTheSafeChoice) {
 }
 
 TEST(Recommendation, NamesTheRunnerUpAndWhyItLost) {
-  SweepTable t;
+  results::SweepTable t;
   t.budget_ms = 30.0;
   t.rows = {ranged("best", 25.0, 20.0, 28.0, 0.05, false),
             ranged("tie", 20.0, 16.0, 24.0, 0.0501, false),

@@ -8,24 +8,25 @@
 #include <vector>
 
 #include "reports/sequence_sweep.h"
-#include "reports/sweep_table.h"
+#include "results/sequence_summary.h"
+#include "results/sweep_table.h"
 
 namespace skinsim::reports {
 namespace {
 
 // One configuration whose frames took 1 to 2 ms, against `budget_ms`.
-SweepTable table_with_budget(double budget_ms) {
-  ConfigResult row;
+results::SweepTable table_with_budget(double budget_ms) {
+  results::ConfigResult row;
   row.id = "c0";
-  SequenceSummary s;
+  results::SequenceSummary s;
   s.name = "push-in";
   s.frames = 3;
   s.fps = 30.0;
   s.frame_ms = {1.0, 1.5, 2.0};
   s.p50 = {1.5, 1.4, 1.6};
   s.p95 = s.max = {2.0, 1.9, 2.1};
-  apply_sequence_summary(row, s);
-  SweepTable table;
+  results::apply_sequence_summary(row, s);
+  results::SweepTable table;
   table.budget_ms = budget_ms;
   table.rows.push_back(row);
   return table;

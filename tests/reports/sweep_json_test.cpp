@@ -1,4 +1,6 @@
 // results.json round trip and the errors bad input gets.
+#include "reports/sweep_json.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -6,8 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "io/read_file.h"
-#include "reports/error.h"
-#include "reports/sweep_table.h"
+#include "results/error.h"
+#include "results/sweep_table.h"
 #include "tests/reports/synthetic_sweep.h"
 #include "tests/scratch_dir.h"
 
@@ -22,19 +24,19 @@ std::string temp_file(const std::string& name) {
 
 std::string error_of(const nlohmann::json& j) {
   try {
-    (void)j.get<SweepTable>();
-  } catch (const ReportError& e) {
+    (void)j.get<results::SweepTable>();
+  } catch (const results::ResultsError& e) {
     return e.what();
   }
   return "no error";
 }
 
 TEST(SweepJson, RoundTripIsExact) {
-  SweepTable sweep = testing::synthetic_sweep();
+  results::SweepTable sweep = testing::synthetic_sweep();
   sweep.rows[2].programs = {{"skin", "skin_fs", 3.1e6, 30, 18, 7, 4, 1}};
   const std::string path = temp_file("results.json");
   write_sweep_json(sweep, path);
-  const SweepTable back = read_sweep_json(path);
+  const results::SweepTable back = results::read_sweep_json(path);
   // Serialising the read-back table gives the same document, field for field.
   EXPECT_EQ(nlohmann::json(back), nlohmann::json(sweep));
   ASSERT_EQ(back.rows.size(), 16u);
@@ -56,9 +58,9 @@ TEST(SweepJson, RoundTripIsExact) {
 }
 
 TEST(SweepJson, WithoutHeatmapRoundTrips) {
-  SweepTable sweep = testing::synthetic_sweep();
+  results::SweepTable sweep = testing::synthetic_sweep();
   sweep.heatmap.reset();
-  const SweepTable back = nlohmann::json(sweep).get<SweepTable>();
+  const results::SweepTable back = nlohmann::json(sweep).get<results::SweepTable>();
   EXPECT_FALSE(back.heatmap);
 }
 
@@ -115,26 +117,26 @@ TEST(SweepJson, FileErrorsNameTheFile) {
   const std::string path = temp_file("broken.json");
   std::ofstream(path) << "{ not json";
   try {
-    read_sweep_json(path);
+    results::read_sweep_json(path);
     FAIL() << "expected io::InputError";
   } catch (const io::InputError& e) {  // io::parse_json's, as for every JSON a user may edit
     EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
   }
-  EXPECT_THROW(read_sweep_json(temp_file("does_not_exist.json")), io::InputError);
+  EXPECT_THROW(results::read_sweep_json(temp_file("does_not_exist.json")), io::InputError);
 }
 
 TEST(SweepJson, NonFiniteValuesAreRefusedBeforeWriting) {
-  SweepTable sweep = testing::synthetic_sweep();
+  results::SweepTable sweep = testing::synthetic_sweep();
   sweep.rows[0].quality["ssim_skin"] = std::nan("");
-  EXPECT_THROW(write_sweep_json(sweep, temp_file("nan.json")), ReportError);
+  EXPECT_THROW(write_sweep_json(sweep, temp_file("nan.json")), results::ResultsError);
 }
 
 TEST(MergedPasses, SumsRepeatedPassesAndKeepsCostliestBottleneck) {
-  ConfigResult r;
+  results::ConfigResult r;
   r.passes = {{"blur", 1.0, "texture", {{"color_store", 10}}},
               {"shade", 5.0, "alu", {}},
               {"blur", 2.0, "dram", {{"color_store", 5}, {"texture_miss", 1}}}};
-  const std::vector<PassCost> merged = merged_passes(r);
+  const std::vector<results::PassCost> merged = merged_passes(r);
   ASSERT_EQ(merged.size(), 2u);
   EXPECT_EQ(merged[0].name, "blur");
   EXPECT_DOUBLE_EQ(merged[0].ms, 3.0);

@@ -8,12 +8,12 @@
 #include <cmath>
 #include <string>
 
-#include "reports/sweep_table.h"
+#include "results/sweep_table.h"
 
 namespace skinsim::reports::testing {
 
-inline ConfigResult synthetic_config(double scale, int lut_w, int lut_h) {
-  ConfigResult c;
+inline results::ConfigResult synthetic_config(double scale, int lut_w, int lut_h) {
+  results::ConfigResult c;
   c.id = fmt::format("s{}_lut{}x{}", scale, lut_w, lut_h);
   c.label = fmt::format("scale {}, LUT {}x{}", scale, lut_w, lut_h);
   c.knobs = {{"technique", "mobile_ssss"},
@@ -42,7 +42,7 @@ inline ConfigResult synthetic_config(double scale, int lut_w, int lut_h) {
       {"eyes_background", 2.0, "dram", {{"color_store", 2e6}, {"color_load", 12.6e6}}}};
   c.frame_ms = 0.0;
   c.dram_bytes = 0.0;
-  for (PassCost& p : c.passes) {  // renders back to back, no TA work
+  for (results::PassCost& p : c.passes) {  // renders back to back, no TA work
     p.render_start_ms = p.ta_start_ms = p.ta_end_ms = c.frame_ms;
     p.render_end_ms = c.frame_ms + p.ms;
     c.frame_ms += p.ms;
@@ -64,8 +64,8 @@ inline ConfigResult synthetic_config(double scale, int lut_w, int lut_h) {
   return c;
 }
 
-inline TileHeatmap synthetic_heatmap() {
-  TileHeatmap h;
+inline results::TileHeatmap synthetic_heatmap() {
+  results::TileHeatmap h;
   h.tiles_x = 64;
   h.tiles_y = 48;
   h.tile_size = 32;
@@ -84,8 +84,8 @@ inline TileHeatmap synthetic_heatmap() {
   return h;
 }
 
-inline SweepTable synthetic_sweep() {
-  SweepTable t;
+inline results::SweepTable synthetic_sweep() {
+  results::SweepTable t;
   t.device = "PowerVR SGX554MP4 (iPad 4) [synthetic test data]";
   t.scene = "LeePerrySmith head [synthetic test data]";
   t.resolution = "2048x1536";

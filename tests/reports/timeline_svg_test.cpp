@@ -17,11 +17,11 @@ std::size_t count(const std::string& text, const std::string& what) {
 
 // Two passes as the cost model schedules them: B's TA (2-6) overlaps A's 3D (2-7); a blur-like
 // pass C has no TA work; the frame waits 1 ms on DRAM after the pipeline.
-std::vector<PassCost> frame() {
-  PassCost a{"a", 7.0, "alu", {}, 0.0, 2.0, 2.0, 7.0};
-  PassCost b{"b<&>", 1.0, "tiler", {}, 2.0, 6.0, 7.0, 8.0};
-  PassCost c{"c", 1.0, "texture", {}, 7.0, 7.0, 8.0, 9.0};
-  PassCost wait{"dram_wait", 1.0, "bandwidth", {}, 9.0, 9.0, 9.0, 10.0};
+std::vector<results::PassCost> frame() {
+  results::PassCost a{"a", 7.0, "alu", {}, 0.0, 2.0, 2.0, 7.0};
+  results::PassCost b{"b<&>", 1.0, "tiler", {}, 2.0, 6.0, 7.0, 8.0};
+  results::PassCost c{"c", 1.0, "texture", {}, 7.0, 7.0, 8.0, 9.0};
+  results::PassCost wait{"dram_wait", 1.0, "bandwidth", {}, 9.0, 9.0, 9.0, 10.0};
   return {a, b, c, wait};
 }
 

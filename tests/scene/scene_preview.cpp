@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <string>
 
-#include "quality/image.h"
+#include "image/image.h"
 #include "scene/gltf_loader.h"
 #include "scene/procedural_head.h"
 #include "tests/scene/preview_raster.h"
@@ -20,7 +20,7 @@ void write_png(const std::string& path, int w, int h, int channels,
   for (std::size_t i = 0; i < data.size(); ++i) {
     bytes[i] = static_cast<std::uint8_t>(std::lround(std::clamp(data[i], 0.0f, 1.0f) * 255.0f));
   }
-  skinsim::quality::write_png_u8(path, w, h, channels, bytes);
+  skinsim::image::write_png_u8(path, w, h, channels, bytes);
   std::printf("wrote %s\n", path.c_str());
 }
 

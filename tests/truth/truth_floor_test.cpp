@@ -9,8 +9,8 @@ namespace skinsim::driver {
 namespace {
 
 // A 40x40 grey image with white dots on a 5-pixel grid, offset by `at` in x and y.
-quality::Image dotted(int at) {
-  quality::Image image = quality::Image::filled(40, 40, glm::vec3(0.5f));
+image::Image dotted(int at) {
+  image::Image image = image::Image::filled(40, 40, glm::vec3(0.5f));
   for (int y = at; y < 40; y += 5) {
     for (int x = at; x < 40; x += 5) image.rgb[static_cast<std::size_t>(y) * 40 + x] = glm::vec3(1);
   }
@@ -18,7 +18,7 @@ quality::Image dotted(int at) {
 }
 
 TEST(TruthFloor, ADifferenceAsLargeAsTheSeedsNearbyIsNotVisible) {
-  const quality::Image grey = quality::Image::filled(40, 40, glm::vec3(0.5f));
+  const image::Image grey = image::Image::filled(40, 40, glm::vec3(0.5f));
   // The second seed's draws are dots at (0,0) of each 5x5 block, the frame's at (2,2): the
   // same errors, at pixels where the second seed happened to agree with the truth.
   const Truth with_floor = with_images(Truth{}, TruthImages{grey, dotted(0)});

@@ -10,9 +10,9 @@
 namespace skinsim::driver {
 namespace {
 
-reports::ConfigResult row(const std::string& id, double flip, double truth_flip, bool visible,
+results::ConfigResult row(const std::string& id, double flip, double truth_flip, bool visible,
                           bool visible_by_truth) {
-  reports::ConfigResult r;
+  results::ConfigResult r;
   r.id = id;
   r.group = "ipad4, 128x96";
   r.frame_image = "configs/" + id + ".png";
@@ -44,8 +44,8 @@ nlohmann::json judged(double floor, bool same) {
          {{{"id", "b"}, {"visible_by_reference", true}, {"visible_by_truth", false}}}}}});
 }
 
-reports::SweepTable table() {
-  reports::SweepTable t;
+results::SweepTable table() {
+  results::SweepTable t;
   t.rows = {row("a", 0.05, 0.110, false, false), row("b", 0.09, 0.115, true, false)};
   return t;
 }

@@ -28,7 +28,7 @@ fs::path fresh_dir(const std::string& name) {
 // A 4x3 truth and its second seed, 8-bit values (as display images are) that depend on `seed`.
 TruthImages images(int seed) {
   TruthImages t;
-  t.image = quality::Image::filled(4, 3, glm::vec3(0.0f));
+  t.image = image::Image::filled(4, 3, glm::vec3(0.0f));
   t.second = t.image;
   for (int i = 0; i < 12; ++i) {
     const int k = (seed * 37 + i * 11) % 256;

@@ -10,9 +10,9 @@
 #include <glm/geometric.hpp>
 #include <numbers>
 
+#include "image/image.h"
 #include "pipeline/bake/error.h"
 #include "pipeline/bake/specular.h"
-#include "quality/image.h"
 
 namespace skinsim::bake {
 namespace {
@@ -250,7 +250,7 @@ TEST(BrdfLut, WritesAPngOfEachLevel) {
   const auto path = std::filesystem::temp_directory_path() /
                     ("skinsim_brdf_lut_" + std::to_string(::getpid()) + ".png");
   write_lut_png(lut, path, 1);
-  const quality::Image image = quality::load_png(path);
+  const image::Image image = image::load_png(path);
   std::filesystem::remove(path);
   EXPECT_EQ(image.width, 8);
   EXPECT_EQ(image.height, 32);

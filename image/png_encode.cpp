@@ -1,4 +1,4 @@
-#include "quality/png_encode.h"
+#include "image/png_encode.h"
 
 #include <libdeflate.h>
 
@@ -6,9 +6,9 @@
 #include <cstdlib>
 #include <memory>
 
-#include "quality/error.h"
+#include "image/error.h"
 
-namespace skinsim::quality {
+namespace skinsim::image {
 namespace {
 
 // libdeflate's zlib stream, in memory stb_image_write frees with free().
@@ -29,12 +29,12 @@ unsigned char* deflate_level_1(const unsigned char* data, int size, int* out_siz
 }
 
 }  // namespace
-}  // namespace skinsim::quality
+}  // namespace skinsim::image
 
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #define STB_IMAGE_WRITE_STATIC  // this file's own copy, beside libstb's default-built one
 #define STBI_WRITE_NO_STDIO
-#define STBIW_ZLIB_COMPRESS skinsim::quality::deflate_level_1
+#define STBIW_ZLIB_COMPRESS skinsim::image::deflate_level_1
 #define STBIW_CRC32(buffer, size) static_cast<unsigned>(libdeflate_crc32(0, buffer, size))
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-function"
@@ -44,15 +44,15 @@ unsigned char* deflate_level_1(const unsigned char* data, int size, int* out_siz
 #include <stb/stb_image_write.h>
 #pragma GCC diagnostic pop
 
-namespace skinsim::quality {
+namespace skinsim::image {
 
 EncodedPng encode_png_u8(int width, int height, int channels, std::span<const std::uint8_t> data,
                          const std::string& what) {
   // stb_image_write counts the filtered rows (one filter byte each) in an int.
   if ((static_cast<long long>(width) * channels + 1) * height > INT_MAX) {
-    throw QualityError("cannot write '" + what + "': " + std::to_string(width) + "x" +
-                       std::to_string(height) + "x" + std::to_string(channels) +
-                       " is too large for one PNG");
+    throw ImageError("cannot write '" + what + "': " + std::to_string(width) + "x" +
+                     std::to_string(height) + "x" + std::to_string(channels) +
+                     " is too large for one PNG");
   }
   // The Sub filter on every row, set once: stb_image_write's choice is a global it reads.
   [[maybe_unused]] static const bool sub_filter = [] {
@@ -63,9 +63,9 @@ EncodedPng encode_png_u8(int width, int height, int channels, std::span<const st
   EncodedPng png;
   png.data.reset(
       stbi_write_png_to_mem(data.data(), width * channels, width, height, channels, &size));
-  if (!png.data) throw QualityError("cannot write '" + what + "': out of memory encoding the PNG");
+  if (!png.data) throw ImageError("cannot write '" + what + "': out of memory encoding the PNG");
   png.size = static_cast<std::size_t>(size);
   return png;
 }
 
-}  // namespace skinsim::quality
+}  // namespace skinsim::image

@@ -1,4 +1,4 @@
-#include "quality/resize.h"
+#include "image/resize.h"
 
 #include <stb/stb_image_resize.h>
 
@@ -7,7 +7,7 @@
 
 #include "util/check.h"
 
-namespace skinsim::quality {
+namespace skinsim::image {
 
 Image resized(const Image& image, int width) {
   SKINSIM_CHECK_GE(width, 1);
@@ -27,4 +27,4 @@ Image resized(const Image& image, int width) {
   return result;
 }
 
-}  // namespace skinsim::quality
+}  // namespace skinsim::image

@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-namespace skinsim::quality {
+namespace skinsim::image {
 
 // A PNG file's bytes, in the buffer stb_image_write encoded them into (no copy).
 struct EncodedPng {
@@ -22,7 +22,7 @@ struct EncodedPng {
 // first. Every row uses the Sub filter and the stream is deflated at libdeflate's level 1:
 // measured on a 2048x1536 frame, 34 ms and 1.35 MB for the deflate against 54 ms and 1.56 MB
 // for zlib's level 1 (docs/performance-log.md); a sweep writes two such images per configuration.
-// Throws QualityError (naming `what`) for sizes a PNG written so cannot hold.
+// Throws ImageError (naming `what`) for sizes a PNG written so cannot hold.
 EncodedPng encode_png_u8(int width, int height, int channels, std::span<const std::uint8_t> data,
                          const std::string& what);
 
@@ -33,4 +33,4 @@ struct Mask;
 EncodedPng encode_png(const Image& image, const std::string& what);
 EncodedPng encode_mask_png(const Mask& mask, const std::string& what);
 
-}  // namespace skinsim::quality
+}  // namespace skinsim::image

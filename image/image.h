@@ -9,9 +9,9 @@
 #include <span>
 #include <vector>
 
-#include "quality/png_encode.h"
+#include "image/png_encode.h"
 
-namespace skinsim::quality {
+namespace skinsim::image {
 
 struct Image {
   int width = 0;
@@ -64,4 +64,4 @@ void save_mask_png(const Mask& mask, const std::filesystem::path& path);
 EncodedPng write_png_u8(const std::filesystem::path& path, int width, int height, int channels,
                         std::span<const std::uint8_t> data);
 
-}  // namespace skinsim::quality
+}  // namespace skinsim::image

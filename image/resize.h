@@ -1,9 +1,9 @@
 // Resampling display images, e.g. the small thumbnails a report page loads.
 #pragma once
 
-#include "quality/image.h"
+#include "image/image.h"
 
-namespace skinsim::quality {
+namespace skinsim::image {
 
 // `image` resampled to `width` pixels wide, the height in proportion (at least 1), with
 // stb_image_resize (libstb) and a box filter as wide as the reduction (an area average, not point
@@ -11,4 +11,4 @@ namespace skinsim::quality {
 // least 1.
 Image resized(const Image& image, int width);
 
-}  // namespace skinsim::quality
+}  // namespace skinsim::image

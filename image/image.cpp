@@ -1,10 +1,10 @@
 // Image and Mask themselves; their PNG input/output is png_io.cpp (libstb, libdeflate), so code
 // that only measures images links no image library.
-#include "quality/image.h"
+#include "image/image.h"
 
 #include <algorithm>
 
-namespace skinsim::quality {
+namespace skinsim::image {
 
 Image Image::filled(int width, int height, const glm::vec3& value) {
   Image image;
@@ -27,4 +27,4 @@ std::size_t Mask::count() const {
       std::count_if(values.begin(), values.end(), [](std::uint8_t v) { return v != 0; }));
 }
 
-}  // namespace skinsim::quality
+}  // namespace skinsim::image

@@ -6,27 +6,26 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <glm/common.hpp>
 #include <limits>
 #include <string>
 #include <vector>
 
+#include "image/error.h"
+#include "image/image.h"
+#include "image/png_encode.h"
 #include "io/read_file.h"
-#include "quality/error.h"
-#include "quality/error_map.h"
-#include "quality/image.h"
-#include "quality/json_value.h"
-#include "quality/png_encode.h"
-#include "tests/quality/test_image.h"
+#include "tests/image/test_image.h"
 #include "util/unorm8.h"
 
-namespace skinsim::quality {
+namespace skinsim::image {
 namespace {
 
 class TempDir : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = std::filesystem::temp_directory_path() /
-           ("skinsim_quality_test_" + std::to_string(::getpid()));
+           ("skinsim_image_test_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir_);
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
@@ -180,7 +179,7 @@ TEST_F(ImageIo, RefusesAHeaderDeclaringTooManyPixels) {
   try {
     load_png(dir_ / "bomb.png");
     FAIL() << "a 10000x10000 header was accepted";
-  } catch (const QualityError& e) {
+  } catch (const ImageError& e) {
     const std::string message = e.what();
     EXPECT_NE(message.find("bomb.png"), std::string::npos) << message;
     EXPECT_NE(message.find("10000x10000"), std::string::npos) << message;
@@ -211,14 +210,14 @@ TEST_F(ImageIo, ErrorsNameTheFile) {
   try {
     load_png(dir_ / "garbage.png");
     FAIL() << "garbage accepted";
-  } catch (const QualityError& e) {
+  } catch (const ImageError& e) {
     EXPECT_NE(std::string(e.what()).find("garbage.png"), std::string::npos) << e.what();
   }
   const auto no_dir = dir_ / "no_such_dir" / "out.png";
   EXPECT_THROW(save_png(Image::filled(2, 2, glm::vec3(0.5f)), no_dir), UserError);
   Image broken = Image::filled(2, 2, glm::vec3(0.5f));
   broken.rgb.pop_back();
-  EXPECT_THROW(save_png(broken, dir_ / "broken.png"), QualityError);
+  EXPECT_THROW(save_png(broken, dir_ / "broken.png"), ImageError);
 }
 
 // stb_image_write counts a PNG's filtered bytes in an int: larger images are refused with
@@ -227,82 +226,11 @@ TEST(PngEncode, RefusesImagesTooLargeForOnePng) {
   try {
     encode_png_u8(40000, 20000, 3, {}, "huge.png");
     FAIL() << "a 40000x20000 RGB image was encoded";
-  } catch (const QualityError& e) {
+  } catch (const ImageError& e) {
     EXPECT_NE(std::string(e.what()).find("huge.png"), std::string::npos) << e.what();
   }
   EXPECT_GT(encode_png_u8(1, 1, 1, std::vector<std::uint8_t>{7}, "one.png").size, 0u);
 }
 
-TEST(ErrorMap, ColourMapsMatchMatplotlibEndpoints) {
-  // matplotlib's _cm_listed tables, first and last entries; the polynomial fits are within
-  // 0.02 of them.
-  const auto near = [](glm::vec3 a, glm::vec3 b) {
-    return glm::all(glm::lessThan(glm::abs(a - b), glm::vec3(0.02f)));
-  };
-  EXPECT_TRUE(near(color_map(ColorMap::kMagma, 0.0f), {0.001462f, 0.000466f, 0.013866f}));
-  EXPECT_TRUE(near(color_map(ColorMap::kMagma, 1.0f), {0.987053f, 0.991438f, 0.749504f}));
-  EXPECT_TRUE(near(color_map(ColorMap::kViridis, 0.0f), {0.267004f, 0.004874f, 0.329415f}));
-  EXPECT_TRUE(near(color_map(ColorMap::kViridis, 1.0f), {0.993248f, 0.906157f, 0.143936f}));
-}
-
-TEST(ErrorMap, BrightnessGrowsWithError) {
-  for (ColorMap map : {ColorMap::kMagma, ColorMap::kViridis}) {
-    float previous = -1.0f;
-    for (int i = 0; i <= 20; ++i) {
-      const glm::vec3 c = color_map(map, i / 20.0f);
-      const float luma = 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
-      EXPECT_GT(luma, previous) << "t = " << i / 20.0f;
-      previous = luma;
-    }
-  }
-}
-
-TEST(ErrorMap, FalseColourKeepsSizeAndClamps) {
-  const ScalarMap map{3, 1, {-1.0f, 0.5f, 7.0f}};
-  const Image image = false_colour(map, ColorMap::kViridis);
-  ASSERT_EQ(image.width, 3);
-  EXPECT_EQ(image.rgb[0], color_map(ColorMap::kViridis, 0.0f));
-  EXPECT_EQ(image.rgb[2], color_map(ColorMap::kViridis, 1.0f));
-  EXPECT_THROW(false_colour(ScalarMap{3, 2, {0.0f}}), QualityError);
-}
-
-TEST(ErrorMap, FalseColourIsColorMapBitForBit) {
-  // false_colour maps four values at a time, in AVX where the processor has it: every pixel
-  // must be the colour color_map gives its value alone in the SSE2 baseline, whatever shares
-  // its register, for values across [0,1] at a fine step, the ends, out of range, -0 and NaN,
-  // and a last quad cut short (4099 values).
-  std::vector<float> values;
-  for (int i = 0; i <= 4000; ++i) values.push_back(static_cast<float>(i) / 4000.0f * 1.2f - 0.1f);
-  for (const float v :
-       {-0.0f, 0.0f, 1.0f, std::nextafter(1.0f, 2.0f), 1e-40f,
-        std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(),
-        -std::numeric_limits<float>::infinity()}) {
-    values.push_back(v);
-  }
-  while (values.size() < 4099) values.push_back(0.3f);
-  const ScalarMap map{static_cast<int>(values.size()), 1, values};
-  for (ColorMap colors : {ColorMap::kMagma, ColorMap::kViridis}) {
-    const Image image = false_colour(map, colors);
-    for (std::size_t i = 0; i < values.size(); ++i) {
-      const glm::vec3 expected = color_map(colors, values[i]);
-      for (int c = 0; c < 3; ++c) {
-        ASSERT_EQ(std::bit_cast<std::uint32_t>(image.rgb[i][c]),
-                  std::bit_cast<std::uint32_t>(expected[c]))
-            << "value " << values[i] << " channel " << c;
-      }
-    }
-  }
-}
-
-TEST(JsonValue, InfinityRoundTripsAsString) {
-  const double inf = std::numeric_limits<double>::infinity();
-  EXPECT_EQ(metric_to_json(inf).dump(), "\"inf\"");
-  EXPECT_EQ(metric_from_json(metric_to_json(inf)), inf);
-  EXPECT_EQ(metric_from_json(metric_to_json(-inf)), -inf);
-  EXPECT_TRUE(std::isnan(metric_from_json(metric_to_json(std::nan("")))));
-  EXPECT_EQ(metric_from_json(metric_to_json(31.5)), 31.5);
-  EXPECT_THROW(metric_from_json(nlohmann::json("big")), nlohmann::json::type_error);
-}
-
 }  // namespace
-}  // namespace skinsim::quality
+}  // namespace skinsim::image

@@ -1,4 +1,4 @@
-// Deterministic synthetic test images for the quality tests.
+// Deterministic synthetic test images for the image, metric and driver tests.
 #pragma once
 
 #include <algorithm>
@@ -6,9 +6,9 @@
 #include <cstdint>
 #include <random>
 
-#include "quality/image.h"
+#include "image/image.h"
 
-namespace skinsim::quality::testing {
+namespace skinsim::image::testing {
 
 // Smooth gradients plus a sinusoidal pattern: structure for SSIM and FLIP to see.
 inline Image pattern_image(int width, int height) {
@@ -55,4 +55,4 @@ inline Image box_blur(const Image& image) {
   return out;
 }
 
-}  // namespace skinsim::quality::testing
+}  // namespace skinsim::image::testing

@@ -1,4 +1,4 @@
-#include "reports/sweep_table.h"
+#include "results/sweep_table.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,13 +8,11 @@
 #include <set>
 #include <sstream>
 
-#include "io/atomic_file.h"
 #include "io/json_input.h"
 #include "io/read_file.h"
-#include "reports/error.h"
-#include "reports/knob_verdicts.h"
+#include "results/error.h"
 
-namespace skinsim::reports {
+namespace skinsim::results {
 
 using nlohmann::json;
 
@@ -25,19 +23,19 @@ std::string field_path(const std::string& where, const std::string& key) {
 }
 
 const json& require(const json& j, const std::string& where, const std::string& key) {
-  if (!j.is_object()) throw ReportError(where + ": expected an object");
+  if (!j.is_object()) throw ResultsError(where + ": expected an object");
   auto it = j.find(key);
-  if (it == j.end()) throw ReportError(field_path(where, key) + ": missing");
+  if (it == j.end()) throw ResultsError(field_path(where, key) + ": missing");
   return *it;
 }
 
 double number_at(const json& j, const std::string& where) {
-  if (!j.is_number()) throw ReportError(where + ": expected a number, got " + j.dump());
+  if (!j.is_number()) throw ResultsError(where + ": expected a number, got " + j.dump());
   return j.get<double>();
 }
 
 std::string string_at(const json& j, const std::string& where) {
-  if (!j.is_string()) throw ReportError(where + ": expected a string, got " + j.dump());
+  if (!j.is_string()) throw ResultsError(where + ": expected a string, got " + j.dump());
   return j.get<std::string>();
 }
 
@@ -57,13 +55,13 @@ std::string opt_string(const json& j, const std::string& where, const std::strin
 int req_int(const json& j, const std::string& where, const std::string& key) {
   const json& v = require(j, where, key);
   if (!v.is_number_integer()) {
-    throw ReportError(field_path(where, key) + ": expected an integer, got " + v.dump());
+    throw ResultsError(field_path(where, key) + ": expected an integer, got " + v.dump());
   }
   return v.get<int>();
 }
 
 const json& array_at(const json& j, const std::string& where) {
-  if (!j.is_array()) throw ReportError(where + ": expected an array");
+  if (!j.is_array()) throw ResultsError(where + ": expected an array");
   return j;
 }
 
@@ -73,7 +71,7 @@ std::string index_path(const std::string& where, std::size_t i) {
 
 template <typename T>
 std::map<std::string, T> map_at(const json& j, const std::string& where) {
-  if (!j.is_object()) throw ReportError(where + ": expected an object");
+  if (!j.is_object()) throw ResultsError(where + ": expected an object");
   std::map<std::string, T> out;
   for (auto it = j.begin(); it != j.end(); ++it) {
     const std::string path = where + "." + it.key();
@@ -126,7 +124,7 @@ ProgramCost parse_program(const json& j, const std::string& where) {
 bool req_bool(const json& j, const std::string& where, const std::string& key) {
   const json& v = require(j, where, key);
   if (!v.is_boolean()) {
-    throw ReportError(field_path(where, key) + ": expected true or false, got " + v.dump());
+    throw ResultsError(field_path(where, key) + ": expected true or false, got " + v.dump());
   }
   return v.get<bool>();
 }
@@ -299,8 +297,8 @@ SweepTable parse_table(const json& j) {
 // A modelled amount: a time in ms, an energy in mJ.
 void check_amount(double v, const std::string& what, const std::string& where) {
   if (!std::isfinite(v) || v < 0.0) {
-    throw ReportError(where + ": must be a finite, non-negative " + what + ", got " +
-                      std::to_string(v));
+    throw ResultsError(where + ": must be a finite, non-negative " + what + ", got " +
+                       std::to_string(v));
   }
 }
 
@@ -315,14 +313,14 @@ void check_ranged(double low, double value, double high, const std::string& name
   check_amount(low, what, where + "." + name + "_low");
   check_amount(high, what, where + "." + name + "_high");
   if (!(low <= value && value <= high)) {
-    throw ReportError(where + ": " + name + "_low <= " + name + " <= " + name +
-                      "_high does not hold");
+    throw ResultsError(where + ": " + name + "_low <= " + name + " <= " + name +
+                       "_high does not hold");
   }
 }
 
 // JSON has no NaN/infinity (nlohmann writes null), so a non-finite value would not round-trip.
 void check_finite(double v, const std::string& where) {
-  if (!std::isfinite(v)) throw ReportError(where + ": must be a finite number");
+  if (!std::isfinite(v)) throw ResultsError(where + ": must be a finite number");
 }
 
 // Image paths are links in report.html, resolved against the sweep directory.
@@ -332,8 +330,8 @@ void check_relative_path(const std::string& path, const std::string& where) {
   const bool escapes =
       std::any_of(p.begin(), p.end(), [](const auto& part) { return part == ".."; });
   if (p.is_absolute() || escapes) {
-    throw ReportError(where + ": '" + path +
-                      "' must be a relative path inside the sweep directory (no '..')");
+    throw ResultsError(where + ": '" + path +
+                       "' must be a relative path inside the sweep directory (no '..')");
   }
 }
 
@@ -479,15 +477,15 @@ void from_json(const json& j, SweepTable& v) {
 
 void validate_sweep_table(const SweepTable& t) {
   if (!std::isfinite(t.budget_ms) || t.budget_ms <= 0.0) {
-    throw ReportError("budget_ms: must be a positive number of ms, got " +
-                      std::to_string(t.budget_ms));
+    throw ResultsError("budget_ms: must be a positive number of ms, got " +
+                       std::to_string(t.budget_ms));
   }
   std::set<std::string> ids;
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
     const ConfigResult& r = t.rows[i];
     const std::string where = index_path("rows", i);
-    if (r.id.empty()) throw ReportError(where + ".id: must not be empty");
-    if (!ids.insert(r.id).second) throw ReportError(where + ".id: duplicate id '" + r.id + "'");
+    if (r.id.empty()) throw ResultsError(where + ".id: must not be empty");
+    if (!ids.insert(r.id).second) throw ResultsError(where + ".id: duplicate id '" + r.id + "'");
     check_ranged(r.frame_ms_low, r.frame_ms, r.frame_ms_high, "frame_ms", "time in ms", where);
     check_ranged(r.energy_mj_low, r.energy_mj, r.energy_mj_high, "energy_mj", "energy in mJ",
                  where);
@@ -515,23 +513,23 @@ void validate_sweep_table(const SweepTable& t) {
         check_time(value, at + "." + name);
       }
       if (pass.ta_end_ms < pass.ta_start_ms || pass.render_end_ms < pass.render_start_ms) {
-        throw ReportError(at + ": a stage ends before it starts");
+        throw ResultsError(at + ": a stage ends before it starts");
       }
     }
   }
   if (t.heatmap) {
     const TileHeatmap& h = *t.heatmap;
     if (h.tiles_x <= 0 || h.tiles_y <= 0 || h.tile_size <= 0) {
-      throw ReportError("heatmap: tiles_x, tiles_y and tile_size must be positive");
+      throw ResultsError("heatmap: tiles_x, tiles_y and tile_size must be positive");
     }
     const std::size_t n = static_cast<std::size_t>(h.tiles_x) * static_cast<std::size_t>(h.tiles_y);
     if (h.ms.size() != n) {
-      throw ReportError("heatmap.ms: expected tiles_x * tiles_y = " + std::to_string(n) +
-                        " values, got " + std::to_string(h.ms.size()));
+      throw ResultsError("heatmap.ms: expected tiles_x * tiles_y = " + std::to_string(n) +
+                         " values, got " + std::to_string(h.ms.size()));
     }
     if (!h.bottleneck.empty() && h.bottleneck.size() != n) {
-      throw ReportError("heatmap.bottleneck: expected " + std::to_string(n) +
-                        " entries (or none), got " + std::to_string(h.bottleneck.size()));
+      throw ResultsError("heatmap.bottleneck: expected " + std::to_string(n) +
+                         " entries (or none), got " + std::to_string(h.bottleneck.size()));
     }
     for (std::size_t i = 0; i < n; ++i) check_time(h.ms[i], index_path("heatmap.ms", i));
   }
@@ -552,20 +550,13 @@ void validate_sweep_table(const SweepTable& t) {
   }
 }
 
-void write_sweep_json(const SweepTable& table, const std::string& path) {
-  validate_sweep_table(table);
-  json j = table;
-  j["findings"] = findings_json(table);  // derived from the rows: parse_table skips it
-  io::write_file_atomically(path, j.dump(2) + "\n");
-}
-
 SweepTable read_sweep_json(const std::string& path) {
   const std::string text = io::read_regular_file(path, "sweep results");
   const json j = io::parse_json(text, "sweep results", path);
   try {
     return j.get<SweepTable>();
-  } catch (const ReportError& e) {
-    throw ReportError(path + ": " + e.what());
+  } catch (const ResultsError& e) {
+    throw ResultsError(path + ": " + e.what());
   }
 }
 
@@ -603,4 +594,4 @@ std::string knob_value(const ConfigResult& row, const std::string& knob) {
   return it == row.knobs.end() ? std::string() : it->second;
 }
 
-}  // namespace skinsim::reports
+}  // namespace skinsim::results

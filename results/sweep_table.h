@@ -1,6 +1,6 @@
-// The results of a sweep over pipeline configurations, as the reports module consumes them.
-// The sweep engine fills these structs; results.json (to_json/from_json) holds everything the
-// charts and the HTML report need, so both can be regenerated from that file alone.
+// The results of a sweep over pipeline configurations: the sweep engine fills these structs,
+// the reports draw them. results.json (to_json/from_json) holds everything the charts and the
+// HTML report need, so both can be regenerated from that file alone.
 #pragma once
 
 #include <map>
@@ -9,12 +9,13 @@
 #include <string>
 #include <vector>
 
-#include "reports/sequence_sweep.h"
+#include "results/pass_rows.h"
+#include "results/sequence_summary.h"
 
-namespace skinsim::reports {
+namespace skinsim::results {
 
 // Modelled cost of one render pass of one configuration. A frame's passes, plus a "dram_wait"
-// entry when its DRAM traffic outlasts the pipeline (gpu_model::kDramWaitRow), add up to its
+// entry when its DRAM traffic outlasts the pipeline (kDramWaitRow), add up to its
 // frame_ms.
 struct PassCost {
   std::string name;        // e.g. "irradiance", "blur_h", "blur_v", "skin"
@@ -89,7 +90,7 @@ struct ConfigResult {
   // Against the best configuration of the group over every technique.
   std::optional<FrameComparison> vs_best;
   // A sweep over a sequence: the frame-time distribution and temporal stability
-  // (sequence_sweep.h; frame_ms above is then the p95).
+  // (sequence_summary.h; frame_ms above is then the p95).
   std::optional<SequenceSummary> sequence;
 };
 
@@ -155,7 +156,7 @@ struct SweepTable {
   std::vector<ComparisonPanel> panels;  // one per group with a recommendation
 };
 
-// JSON mapping (nlohmann ADL hooks). from_json throws ReportError naming the field at fault,
+// JSON mapping (nlohmann ADL hooks). from_json throws ResultsError naming the field at fault,
 // e.g. "rows[3].frame_ms: expected a number".
 void to_json(nlohmann::json& j, const CropWindow& v);
 void from_json(const nlohmann::json& j, CropWindow& v);
@@ -175,12 +176,12 @@ void from_json(const nlohmann::json& j, TileHeatmap& v);
 void from_json(const nlohmann::json& j, SensitivityRow& v);
 void from_json(const nlohmann::json& j, SweepTable& v);
 
-// results.json on disk. Writing is atomic; reading throws ReportError naming the file and field.
-void write_sweep_json(const SweepTable& table, const std::string& path);
+// results.json read back (reports/sweep_json.h writes it); throws ResultsError naming the file
+// and field.
 SweepTable read_sweep_json(const std::string& path);
 
 // Checks what JSON cannot: unique ids, finite non-negative times, heat map sizes.
-// Throws ReportError naming the field. Called by from_json and by the writers.
+// Throws ResultsError naming the field. Called by from_json and by the writers.
 void validate_sweep_table(const SweepTable& table);
 
 // The bottleneck of the configuration's most expensive pass ("" if it has no passes).
@@ -194,4 +195,4 @@ std::vector<PassCost> merged_passes(const ConfigResult& row);
 // Value of a knob, or "" if the row does not have it.
 std::string knob_value(const ConfigResult& row, const std::string& knob);
 
-}  // namespace skinsim::reports
+}  // namespace skinsim::results

@@ -5,15 +5,15 @@
 #include <string>
 #include <system_error>
 
+#include "image/error.h"
+#include "image/image.h"
+#include "image/png_encode.h"
 #include "io/atomic_file.h"
 #include "io/read_file.h"
-#include "quality/error.h"
-#include "quality/image.h"
-#include "quality/png_encode.h"
 #include "util/parallel_pixels.h"
 #include "util/unorm8.h"
 
-namespace skinsim::quality {
+namespace skinsim::image {
 namespace {
 
 // The bytes save_png writes, RGB interleaved. With `rounded` (which may be `image` itself:
@@ -32,9 +32,9 @@ std::vector<std::uint8_t> to_rgb8(const Image& image, Image* rounded = nullptr) 
 
 void check_pixel_count(const Image& image, const std::filesystem::path& path) {
   if (image.rgb.size() != image.pixel_count()) {
-    throw QualityError("cannot write '" + path.string() + "': image holds " +
-                       std::to_string(image.rgb.size()) + " pixels, expected " +
-                       std::to_string(image.width) + "x" + std::to_string(image.height));
+    throw ImageError("cannot write '" + path.string() + "': image holds " +
+                     std::to_string(image.rgb.size()) + " pixels, expected " +
+                     std::to_string(image.width) + "x" + std::to_string(image.height));
   }
 }
 
@@ -55,22 +55,22 @@ class DecodedImage {
     const auto* bytes = reinterpret_cast<const stbi_uc*>(file.data());
     const int size = static_cast<int>(file.size());
     if (!stbi_info_from_memory(bytes, size, &width, &height, &channels)) {
-      throw QualityError("cannot open image '" + path.string() + "': " + stbi_failure_reason());
+      throw ImageError("cannot open image '" + path.string() + "': " + stbi_failure_reason());
     }
     if (width <= 0 || height <= 0 || channels <= 0) {
-      throw QualityError("image '" + path.string() + "' has no pixels");
+      throw ImageError("image '" + path.string() + "' has no pixels");
     }
     if (static_cast<long long>(width) * height > kMaxImagePixels) {
-      throw QualityError("image '" + path.string() + "' declares " + std::to_string(width) + "x" +
-                         std::to_string(height) + " pixels, more than the 8192x8192 skinsim reads");
+      throw ImageError("image '" + path.string() + "' declares " + std::to_string(width) + "x" +
+                       std::to_string(height) + " pixels, more than the 8192x8192 skinsim reads");
     }
     int w = 0, h = 0, n = 0;
     deep_ = stbi_is_16_bit_from_memory(bytes, size);
     samples_.reset(deep_ ? static_cast<void*>(stbi_load_16_from_memory(bytes, size, &w, &h, &n, 0))
                          : static_cast<void*>(stbi_load_from_memory(bytes, size, &w, &h, &n, 0)));
     if (!samples_ || w != width || h != height || n != channels) {
-      throw QualityError("cannot read pixels of '" + path.string() +
-                         "': " + (samples_ ? "header and pixels disagree" : stbi_failure_reason()));
+      throw ImageError("cannot read pixels of '" + path.string() +
+                       "': " + (samples_ ? "header and pixels disagree" : stbi_failure_reason()));
     }
   }
 
@@ -163,14 +163,13 @@ EncodedPng encode_mask_png(const Mask& mask, const std::string& what) {
 EncodedPng write_png_u8(const std::filesystem::path& path, int width, int height, int channels,
                         std::span<const std::uint8_t> data) {
   if (width <= 0 || height <= 0 || channels < 1 || channels > 4) {
-    throw QualityError("cannot write '" + path.string() + "': invalid size " +
-                       std::to_string(width) + "x" + std::to_string(height) + "x" +
-                       std::to_string(channels));
+    throw ImageError("cannot write '" + path.string() + "': invalid size " + std::to_string(width) +
+                     "x" + std::to_string(height) + "x" + std::to_string(channels));
   }
   if (data.size() != static_cast<std::size_t>(width) * height * channels) {
-    throw QualityError("cannot write '" + path.string() + "': " + std::to_string(data.size()) +
-                       " bytes given for " + std::to_string(width) + "x" + std::to_string(height) +
-                       "x" + std::to_string(channels));
+    throw ImageError("cannot write '" + path.string() + "': " + std::to_string(data.size()) +
+                     " bytes given for " + std::to_string(width) + "x" + std::to_string(height) +
+                     "x" + std::to_string(channels));
   }
   // Encoded in memory, then written by the checked atomic writer: a full disk is reported
   // and a truncated PNG never replaces a good one.
@@ -179,4 +178,4 @@ EncodedPng write_png_u8(const std::filesystem::path& path, int width, int height
   return png;
 }
 
-}  // namespace skinsim::quality
+}  // namespace skinsim::image
