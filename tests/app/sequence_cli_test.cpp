@@ -18,9 +18,9 @@ using skinsim::test::Result;
 using skinsim::test::run;
 using skinsim::test::slide_scene;
 
-const std::string kSmall = " --resolution 64x48 --head-triangles 2000 --texture-size 64";
+const std::string kSmallSequence = " --resolution 64x48 --head-triangles 2000 --texture-size 64";
 
-std::filesystem::path temp_dir(const std::string& name) {
+std::filesystem::path seq_cli_dir(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() / ("skinsim_seq_cli_" + name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
@@ -28,28 +28,29 @@ std::filesystem::path temp_dir(const std::string& name) {
 }
 
 TEST(SequenceCli, BadSequenceFramesAndFpsExitTwoNamingTheOption) {
-  const Result nope = run("run --sequence nope" + kSmall + " --out /tmp/skinsim_seq_unused");
+  const Result nope =
+      run("run --sequence nope" + kSmallSequence + " --out /tmp/skinsim_seq_unused");
   EXPECT_EQ(nope.exit_code, 2) << nope.output;
   EXPECT_NE(nope.output.find("--sequence: unknown sequence 'nope'"), std::string::npos)
       << nope.output;
-  const Result zero = run("run --sequence push-in --frames 0" + kSmall);
+  const Result zero = run("run --sequence push-in --frames 0" + kSmallSequence);
   EXPECT_EQ(zero.exit_code, 2) << zero.output;
   EXPECT_NE(zero.output.find("--frames"), std::string::npos) << zero.output;
-  const Result fps = run("run --sequence push-in --fps -5" + kSmall);
+  const Result fps = run("run --sequence push-in --fps -5" + kSmallSequence);
   EXPECT_EQ(fps.exit_code, 2) << fps.output;
   EXPECT_NE(fps.output.find("--fps"), std::string::npos) << fps.output;
-  const Result alone = run("run --frames 4" + kSmall);
+  const Result alone = run("run --frames 4" + kSmallSequence);
   EXPECT_EQ(alone.exit_code, 2) << alone.output;
   EXPECT_NE(alone.output.find("--frames requires --sequence"), std::string::npos) << alone.output;
-  const Result both = run("run --sequence push-in --camera-distance 1" + kSmall);
+  const Result both = run("run --sequence push-in --camera-distance 1" + kSmallSequence);
   EXPECT_EQ(both.exit_code, 2) << both.output;
   EXPECT_NE(both.output.find("camera_distance_m"), std::string::npos) << both.output;
 }
 
 TEST(SequenceCli, PushInWritesFramesAndTheDistribution) {
-  const auto dir = temp_dir("push_in");
+  const auto dir = seq_cli_dir("push_in");
   const Result r =
-      run("run --sequence push-in --frames 4 --fps 24" + kSmall + " --out " + dir.string());
+      run("run --sequence push-in --frames 4 --fps 24" + kSmallSequence + " --out " + dir.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("sequence push-in: 4 frames at 24 fps"), std::string::npos) << r.output;
   for (int i = 0; i < 4; ++i) {
@@ -88,9 +89,9 @@ TEST(SequenceCli, PushInWritesFramesAndTheDistribution) {
 }
 
 TEST(SequenceCli, PageShowsTheVideoOrSaysWhyNot) {
-  const auto dir = temp_dir("video");
+  const auto dir = seq_cli_dir("video");
   const std::string args =
-      "run --sequence head-turn --frames 2 --no-reference --no-charts" + kSmall;
+      "run --sequence head-turn --frames 2 --no-reference --no-charts" + kSmallSequence;
   const Result r = run(args + " --out " + dir.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   ASSERT_TRUE(std::filesystem::exists(dir / "sequence.webm")) << r.output;
@@ -98,7 +99,7 @@ TEST(SequenceCli, PageShowsTheVideoOrSaysWhyNot) {
   const std::string html((std::istreambuf_iterator<char>(page)), {});
   EXPECT_NE(html.find("<video src=\"sequence.webm\""), std::string::npos) << html;
 
-  const auto bare = temp_dir("no_video");
+  const auto bare = seq_cli_dir("no_video");
   {
     const skinsim::test::ScopedEnv no_ffmpeg("PATH", "/nonexistent");
     const Result n = run(args + " --out " + bare.string());
@@ -140,13 +141,14 @@ TEST(SequenceCli, GltfAnimationDrivesTheFrames) {
 TEST(SequenceCli, BadGltfAnimationExitsTwoNamingTheField) {
   skinsim::scene::testing::GltfFixture f("seq_anim_bad");
   const std::string scene = slide_scene(f, 0);
-  const Result missing = run("run --scene " + scene + " --sequence animation:walk" + kSmall);
+  const Result missing =
+      run("run --scene " + scene + " --sequence animation:walk" + kSmallSequence);
   EXPECT_EQ(missing.exit_code, 2) << missing.output;
   EXPECT_NE(missing.output.find("no animation named 'walk' (there are: slide)"), std::string::npos)
       << missing.output;
   f.json()["animations"][0]["channels"][0]["sampler"] = 5;
   const std::string broken = f.write_gltf("broken");
-  const Result sampler = run("run --scene " + broken + " --sequence animation" + kSmall);
+  const Result sampler = run("run --scene " + broken + " --sequence animation" + kSmallSequence);
   EXPECT_EQ(sampler.exit_code, 2) << sampler.output;
   EXPECT_NE(sampler.output.find("animations[0].channels[0].sampler: index 5 out of range"),
             std::string::npos)
@@ -154,12 +156,12 @@ TEST(SequenceCli, BadGltfAnimationExitsTwoNamingTheField) {
   f.json()["animations"][0]["channels"][0]["sampler"] = 0;
   f.json()["meshes"][0]["weights"] = {1.0};
   const Result weights =
-      run("run --scene " + f.write_gltf("weights") + " --sequence animation" + kSmall);
+      run("run --scene " + f.write_gltf("weights") + " --sequence animation" + kSmallSequence);
   EXPECT_EQ(weights.exit_code, 2) << weights.output;
   EXPECT_NE(weights.output.find("meshes[0].weights: 1 weights for 0 morph targets"),
             std::string::npos)
       << weights.output;
-  const Result builtin = run("run --sequence animation" + kSmall);
+  const Result builtin = run("run --sequence animation" + kSmallSequence);
   EXPECT_EQ(builtin.exit_code, 2) << builtin.output;
   EXPECT_NE(builtin.output.find("the built-in head has no animation"), std::string::npos)
       << builtin.output;

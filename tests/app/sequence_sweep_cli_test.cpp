@@ -23,7 +23,7 @@ const std::string kSweep =
     "sweep --no-charts --techniques mobile --luts 8x32 --resolutions 64x48 "
     "--head-triangles 2000 --texture-size 64 --sequence push-in --fps 24";
 
-std::filesystem::path temp_dir(const std::string& name) {
+std::filesystem::path seq_sweep_dir(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() / ("skinsim_seq_sweep_" + name);
   std::filesystem::remove_all(dir);
   return dir;
@@ -37,7 +37,7 @@ std::string read(const std::filesystem::path& path) {
 }
 
 TEST(SequenceSweepCli, RowsCarryTheDistributionAndResumeBySequence) {
-  const auto dir = temp_dir("rows");
+  const auto dir = seq_sweep_dir("rows");
   const Result r = run(kSweep + " --scales 1,0.5 --frames 3 --out " + dir.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("2 computed"), std::string::npos) << r.output;
@@ -80,7 +80,7 @@ TEST(SequenceSweepCli, RowsCarryTheDistributionAndResumeBySequence) {
 }
 
 TEST(SequenceSweepCli, VideoWithFfmpegFramesWithout) {
-  const auto with = temp_dir("video");
+  const auto with = seq_sweep_dir("video");
   const Result r = run(kSweep + " --frames 2 --scales 1 --out " + with.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const nlohmann::json row = nlohmann::json::parse(read(with / "results.json")).at("rows").at(0);
@@ -92,7 +92,7 @@ TEST(SequenceSweepCli, VideoWithFfmpegFramesWithout) {
     EXPECT_FALSE(entry.path().string().ends_with("_frames")) << "encoded, so not kept";
   }
 
-  const auto without = temp_dir("no_video");
+  const auto without = seq_sweep_dir("no_video");
   {
     const skinsim::test::ScopedEnv no_ffmpeg("PATH", "/nonexistent");
     const Result n = run(kSweep + " --frames 2 --scales 1 --out " + without.string());

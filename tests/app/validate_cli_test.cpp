@@ -26,7 +26,7 @@ using skinsim::test::run;
 // The configuration both commands model: small, so the test is quick.
 const std::string kConfig = " --resolution 256x192 --texture-size 128 --threads 2";
 
-fs::path temp_dir(const std::string& name) {
+fs::path validate_dir(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("skinsim_validate_cli_" + name);
   fs::remove_all(dir);
   fs::create_directories(dir);
@@ -59,7 +59,7 @@ std::string table_line(const std::string& output, const std::string& name) {
 class ValidateCli : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = temp_dir(::testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = validate_dir(::testing::UnitTest::GetInstance()->current_test_info()->name());
     const Result r = run("run --no-reference --out " + (dir_ / "run").string() + kConfig);
     ASSERT_EQ(r.exit_code, 0) << r.output;
     result_ = read_json(dir_ / "run" / "result.json");

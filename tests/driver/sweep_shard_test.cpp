@@ -82,7 +82,7 @@ TEST(SweepShard, LedgerSaysWhichShardLeftAConfigurationAndWhy) {
 
 // --- shards of a real (tiny) sweep -------------------------------------------------------
 
-SweepSpec tiny_spec() {
+SweepSpec sharded_spec() {
   SweepSpec spec;
   set_axis(spec, "technique", {"mobile", "wrap", "burley"}, "test");
   set_axis(spec, "scale", {"0.5", "0.25"}, "test");
@@ -100,7 +100,7 @@ std::string results_csv(const SweepSpec& spec, const std::vector<SweepConfig>& c
 }
 
 TEST(SweepShard, ShardsInterruptedResumedAndMergedGiveTheOneProcessResults) {
-  const SweepSpec spec = tiny_spec();
+  const SweepSpec spec = sharded_spec();
   const std::vector<SweepConfig> configs = expand_sweep(spec);
   ASSERT_EQ(configs.size(), 4u);
   const fs::path single = out_dir("shard_single");

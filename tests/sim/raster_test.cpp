@@ -240,22 +240,22 @@ TEST(Raster, RenderAreaLimitsTilesAndResolves) {
 // are joined. Texture coordinates map pixel centres to texel centres, so with nearest
 // filtering the image is the texture, flipped (v grows up the screen).
 TEST(Raster, LargeMeshKeepsEachTrianglesVaryings) {
-  constexpr int kSize = 64;
-  std::vector<glm::vec4> texels(kSize * kSize);
+  constexpr int kTexels = 64;
+  std::vector<glm::vec4> texels(kTexels * kTexels);
   std::mt19937 rng(7);
   std::uniform_int_distribution<int> byte(0, 255);
   for (glm::vec4& t : texels) t = glm::vec4(byte(rng), byte(rng), byte(rng), 255) / 255.0f;
-  const Texture2D tex("noise", kSize, kSize, texels, TexelFormat::kRGBA8,
+  const Texture2D tex("noise", kTexels, kTexels, texels, TexelFormat::kRGBA8,
                       {Filter::kNearest, Wrap::kClamp}, false);
   const Mesh grid = grid_mesh(48, 0.5f, 0.0f, 1);
   for (int threads : {1, 2}) {
-    RenderTarget rt("rt", kSize, kSize, TexelFormat::kRGBA8);
+    RenderTarget rt("rt", kTexels, kTexels, TexelFormat::kRGBA8);
     const PassCounters c = Gpu(config(threads)).execute(textured_pass("many", rt, grid, tex));
     EXPECT_EQ(c.triangles_binned, 48u * 48u * 2u);
-    EXPECT_EQ(c.fragments_shaded, static_cast<std::uint64_t>(kSize * kSize));
-    for (int y = 0; y < kSize; ++y) {
-      for (int x = 0; x < kSize; ++x) {
-        ASSERT_EQ(rt.at(x, y), tex.level(0).at(x, kSize - 1 - y)) << x << "," << y;
+    EXPECT_EQ(c.fragments_shaded, static_cast<std::uint64_t>(kTexels * kTexels));
+    for (int y = 0; y < kTexels; ++y) {
+      for (int x = 0; x < kTexels; ++x) {
+        ASSERT_EQ(rt.at(x, y), tex.level(0).at(x, kTexels - 1 - y)) << x << "," << y;
       }
     }
   }
