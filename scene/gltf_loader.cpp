@@ -192,8 +192,15 @@ Scene PosedGltf::pose(const NodeAnimation* animation, double time_s) {
   scene.images = materials_.images;
   int default_material = -1;  // glTF's default material (spec 3.9.6), added on first use
   for (const auto& placed : nodes) {
-    const int mesh = model.nodes[static_cast<std::size_t>(placed.node)].mesh;
+    const tinygltf::Node& node = model.nodes[static_cast<std::size_t>(placed.node)];
+    const int mesh = node.mesh;
     if (mesh < 0) continue;
+    if (node.skin >= 0) {
+      warn(
+          fmt::format("{}: nodes[{}] is skinned (skins[{}]), and skinsim does not play skins: "
+                      "its mesh is drawn in its bind pose (docs/sequences.md)",
+                      path, placed.node, node.skin));
+    }
     if (static_cast<std::size_t>(mesh) >= model.meshes.size()) {
       throw SceneError(fmt::format("{}: nodes[{}].mesh {} out of range ({} meshes)", path,
                                    placed.node, mesh, model.meshes.size()));

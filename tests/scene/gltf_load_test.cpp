@@ -2,6 +2,7 @@
 // attributes, materials and images, camera, light; and the real LeePerrySmith scan.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <glm/gtc/constants.hpp>
@@ -53,6 +54,24 @@ TEST(GltfLoad, QuadWithoutNormalsGetsGeneratedAttributes) {
   EXPECT_FLOAT_EQ(s.units_per_mm, 0.001f);
   EXPECT_EQ(s.materials.size(), 1u);  // glTF's default material
   EXPECT_EQ(s.materials[0].kind, MaterialKind::kOther);
+}
+
+// Skins are not played (docs/sequences.md): the loader says so rather than draw the bind pose
+// silently.
+TEST(GltfLoad, ASkinnedMeshIsDrawnInItsBindPoseWithAWarning) {
+  GltfFixture f("skinned");
+  f.add_quad_mesh(true, true);  // node 0
+  f.json()["nodes"].push_back({{"name", "root_joint"}});
+  f.json()["skins"] = {{{"joints", {1}}}};
+  f.json()["nodes"][0]["skin"] = 0;
+  std::vector<std::string> warnings;
+  const Scene s = load_gltf(f.write_glb("scene"), quiet(&warnings));
+  ASSERT_EQ(s.meshes.size(), 1u);
+  const auto skinned = std::find_if(warnings.begin(), warnings.end(), [](const std::string& w) {
+    return w.find("nodes[0] is skinned (skins[0])") != std::string::npos;
+  });
+  ASSERT_NE(skinned, warnings.end());
+  EXPECT_NE(skinned->find("bind pose"), std::string::npos) << *skinned;
 }
 
 TEST(GltfLoad, MissingUvsGetPlanarFallback) {
