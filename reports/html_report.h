@@ -22,7 +22,7 @@ struct ReportOptions {
   bool higher_is_better = false;
   std::string metric_label = "FLIP mean over skin (lower is better)";
   // Trade-off charts to draw, as (series knob, order knob) pairs; a pair is drawn only if the
-  // series knob has 2+ values, or 1 value and an order knob with 2+ values. Default: one line
+  // series knob has 2+ values (tradeoff_chart_worth_drawing). Default: one line
   // per LUT size across scales, one per scale across LUT sizes, one per technique.
   std::vector<std::pair<std::string, std::string>> tradeoff_groupings = {
       {"lut", "scale"}, {"scale", "lut"}, {"technique", ""}};

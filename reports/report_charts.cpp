@@ -14,32 +14,22 @@ ReportFigure relative(const ChartFiles& files, const std::string& caption) {
           files.svg.empty() ? std::string() : fs::path(files.svg).filename().string(), caption};
 }
 
-// Values of `knob` over the rows the chart plots: those with its knobs and its metric.
-std::size_t distinct_values(const results::SweepTable& table, const TradeoffSpec& spec,
-                            const std::string& knob) {
-  std::set<std::string> values;
-  for (const results::ConfigResult& r : table.rows) {
-    if (on_tradeoff_chart(r, spec) && r.quality.count(spec.metric)) {
-      values.insert(knob_value(r, knob));
-    }
-  }
-  return values.size();
-}
-
-// A grouping is worth a chart if it compares series, or if its one series runs along a knob;
-// a single series in frame-time order would join unrelated configurations.
-bool worth_drawing(const results::SweepTable& table, const TradeoffSpec& spec) {
-  const std::size_t n = distinct_values(table, spec, spec.series_knob);
-  return n >= 2 ||
-         (n == 1 && !spec.order_knob.empty() && distinct_values(table, spec, spec.order_knob) >= 2);
-}
-
 bool has_dram_causes(const results::ConfigResult& row) {
   return std::any_of(row.passes.begin(), row.passes.end(),
                      [](const results::PassCost& p) { return !p.dram_bytes_by_cause.empty(); });
 }
 
 }  // namespace
+
+bool tradeoff_chart_worth_drawing(const results::SweepTable& table, const TradeoffSpec& spec) {
+  std::set<std::string> values;  // of the series knob over the rows the chart plots
+  for (const results::ConfigResult& r : table.rows) {
+    if (on_tradeoff_chart(r, spec) && r.quality.count(spec.metric)) {
+      values.insert(knob_value(r, spec.series_knob));
+    }
+  }
+  return values.size() >= 2;
+}
 
 std::vector<ReportFigure> draw_report_charts(const results::SweepTable& table,
                                              const std::string& dir, const ReportOptions& options,
@@ -53,7 +43,7 @@ std::vector<ReportFigure> draw_report_charts(const results::SweepTable& table,
     spec.metric_label = options.metric_label;
     spec.series_knob = series;
     spec.order_knob = order;
-    if (!worth_drawing(table, spec)) continue;
+    if (!tradeoff_chart_worth_drawing(table, spec)) continue;
     const std::string caption =
         "Frame time vs " + options.metric_label + ", one line per " + series +
         (order.empty() ? "" : " across " + order + " (the configurations that use both)") +

@@ -14,11 +14,17 @@ struct ReportFigure {
   std::string caption;
 };
 
-// Draws the charts that fit the data (trade-offs for each grouping whose series knob has two or
-// more values, or one value and an order knob with two or more, energy vs quality if a row has
-// the quality metric, per-pass bars, tile maps if the sweep has a heat map, DRAM by cause for
-// `dram_row` if it has causes) into `dir`. Throws ReportError if charts cannot be drawn (e.g. no X
-// display).
+// Whether the report draws the trade-off chart of `spec`'s knobs: its series knob takes two or
+// more values over the rows it plots. A knob swept over one value makes a chart of one line
+// (one point per line when it is the order knob of another chart) that repeats, under the
+// wrong name, the chart of the knob that was swept; one technique in frame-time order would
+// join unrelated configurations.
+bool tradeoff_chart_worth_drawing(const results::SweepTable& table, const TradeoffSpec& spec);
+
+// Draws the charts that fit the data (trade-offs for each grouping that is worth drawing, energy vs
+// quality if a row has the quality metric, per-pass bars, tile maps if the sweep has a heat map,
+// DRAM by cause for `dram_row` if it has causes) into `dir`. Throws ReportError if charts cannot be
+// drawn (e.g. no X display).
 std::vector<ReportFigure> draw_report_charts(const results::SweepTable& table,
                                              const std::string& dir, const ReportOptions& options,
                                              const results::ConfigResult* dram_row);

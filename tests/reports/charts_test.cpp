@@ -11,6 +11,7 @@
 #include "image/image.h"
 #include "reports/display_check.h"
 #include "reports/error.h"
+#include "reports/report_charts.h"
 #include "reports/sequence_charts.h"
 #include "tests/reports/synthetic_sweep.h"
 #include "tests/reports/test_output_dir.h"
@@ -111,6 +112,27 @@ TEST(TradeoffRows, ARowIsOnAChartOnlyWithItsSeriesAndOrderKnobs) {
   EXPECT_TRUE(on_tradeoff_chart(sweep.rows.front(), by_lut));
   EXPECT_FALSE(on_tradeoff_chart(sweep.rows.back(), by_lut));
   EXPECT_TRUE(on_tradeoff_chart(sweep.rows.back(), by_technique));
+}
+
+// A knob swept over one value gets no chart of its own: its one line across the other knob
+// would repeat that knob's chart under the wrong name.
+TEST(TradeoffRows, AKnobSweptOverOneValueGetsNoChart) {
+  results::SweepTable sweep = synthetic_sweep();
+  TradeoffSpec by_lut;  // series lut, ordered by scale
+  TradeoffSpec by_scale;
+  by_scale.series_knob = "scale";
+  by_scale.order_knob = "lut";
+  TradeoffSpec by_technique;
+  by_technique.series_knob = "technique";
+  by_technique.order_knob = "";
+  EXPECT_TRUE(tradeoff_chart_worth_drawing(sweep, by_lut));
+  EXPECT_TRUE(tradeoff_chart_worth_drawing(sweep, by_scale));
+  EXPECT_FALSE(tradeoff_chart_worth_drawing(sweep, by_technique));
+  std::erase_if(sweep.rows, [](const results::ConfigResult& r) {
+    return results::knob_value(r, "lut") != "32x128";  // the scales of one LUT size
+  });
+  EXPECT_FALSE(tradeoff_chart_worth_drawing(sweep, by_lut));
+  EXPECT_TRUE(tradeoff_chart_worth_drawing(sweep, by_scale));
 }
 
 TEST_F(ChartsTest, TradeoffChartLeavesOutRowsWithoutItsKnobs) {
