@@ -18,8 +18,10 @@ Rgb palette_colour(std::size_t i);
 // The pass names of a sweep in first-appearance order (rows, then passes).
 std::vector<std::string> pass_order(const results::SweepTable& table);
 
-// A pass's colour: palette_colour of its index in `order` (the next free index if it is not
-// there); the frame's DRAM wait (results::kDramWaitRow) is always grey.
+// A pass's colour, from its index in `order` (the next free index if it is not there) less the
+// DRAM wait: palette_colour while `order` has at most 10 passes, else one of 25 colours made
+// to be told apart, so every pass of a sweep of up to 25 has its own colour. The frame's DRAM
+// wait (results::kDramWaitRow) is always grey.
 Rgb pass_colour(const std::string& pass, const std::vector<std::string>& order);
 
 // "#rrggbb".

@@ -5,14 +5,17 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 
 #include "image/image.h"
 #include "reports/display_check.h"
 #include "reports/error.h"
+#include "reports/palette.h"
 #include "reports/report_charts.h"
 #include "reports/sequence_charts.h"
+#include "results/pass_rows.h"
 #include "tests/reports/synthetic_sweep.h"
 #include "tests/reports/test_output_dir.h"
 
@@ -255,6 +258,25 @@ TEST_F(ChartsTest, EmptySequenceIsAReportError) {
   SequenceSeries no_quality = synthetic_sequence();
   no_quality.quality.clear();
   EXPECT_THROW(write_sequence_quality_chart(no_quality, dir + "/q", options_), ReportError);
+}
+
+// Every pass of a --techniques sweep (25 and the DRAM wait) has a colour of its own, far
+// enough (in RGB) from the others to be told apart in a stacked bar and its legend.
+TEST(PassColour, EveryPassOfAWideSweepHasItsOwnColour) {
+  for (std::size_t passes : {4u, 10u, 11u, 25u}) {
+    std::vector<std::string> order;
+    for (std::size_t i = 0; i < passes; ++i) order.push_back("pass" + std::to_string(i));
+    order.insert(order.begin() + 2, results::kDramWaitRow);
+    for (std::size_t a = 0; a < order.size(); ++a) {
+      for (std::size_t b = a + 1; b < order.size(); ++b) {
+        const Rgb ca = pass_colour(order[a], order), cb = pass_colour(order[b], order);
+        double squared = 0.0;
+        for (int k = 0; k < 3; ++k) squared += std::pow(static_cast<double>(ca[k]) - cb[k], 2.0);
+        EXPECT_GE(std::sqrt(squared), 40.0)
+            << order[a] << " and " << order[b] << " of " << passes << " passes";
+      }
+    }
+  }
 }
 
 TEST(BudgetLabel, NamesMillisecondsAndFps) {
