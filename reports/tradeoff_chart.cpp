@@ -262,6 +262,13 @@ ChartFiles write_tradeoff_chart(const results::SweepTable& table, const Tradeoff
   style_chart(chart, spec.title.empty() ? default_title(spec) : spec.title, options);
   draw_tie_bands(chart, rows, groups, spec, axes, options);
   draw_time_ranges(chart, rows, spec);
+  // The front's squares under the lines, larger than their points: a configuration on the
+  // front shows its own colour framed in black instead of hiding under the square.
+  vtkPlotPoints* pareto =
+      add_series(chart, front.name, front.x, front.y, {20, 20, 20}, vtkPen::DOT_LINE);
+  pareto->SetMarkerStyle(vtkPlotPoints::SQUARE);
+  pareto->SetMarkerSize(22.0);
+  pareto->SetWidth(3.0);
   std::size_t colour = 0;
   for (const Series& s : lines) {
     add_series(chart, s.name, s.x, s.y, palette_colour(colour++), vtkPen::SOLID_LINE);
@@ -272,11 +279,6 @@ ChartFiles write_tradeoff_chart(const results::SweepTable& table, const Tradeoff
     cross->SetMarkerStyle(vtkPlotPoints::CROSS);
     cross->SetMarkerSize(18.0);
   }
-  vtkPlotPoints* pareto =
-      add_series(chart, front.name, front.x, front.y, {20, 20, 20}, vtkPen::DOT_LINE);
-  pareto->SetMarkerStyle(vtkPlotPoints::SQUARE);
-  pareto->SetMarkerSize(16.0);
-  pareto->SetWidth(3.0);
   draw_recommendations(chart, table, spec);
   add_vertical_line(chart, table.budget_ms, axes.y_lo, axes.y_hi,
                     "budget " + budget_label(table.budget_ms), {200, 0, 0});
