@@ -3,20 +3,24 @@
 #include <vtkAxis.h>
 #include <vtkChartLegend.h>
 #include <vtkChartXY.h>
+#include <vtkContext2D.h>
 #include <vtkContextScene.h>
 #include <vtkContextView.h>
 #include <vtkDoubleArray.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
+#include <vtkObjectFactory.h>
 #include <vtkPen.h>
 #include <vtkPlot.h>
 #include <vtkPlotPoints.h>
 #include <vtkPointData.h>
+#include <vtkPoints2D.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkStringArray.h>
 #include <vtkTable.h>
 #include <vtkTextProperty.h>
+#include <vtkTransform2D.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
@@ -118,6 +122,123 @@ vtkPlotPoints* add_series(vtkChartXY* chart, const std::string& name, const std:
   plot->SetWidth(2.5);
   plot->GetPen()->SetLineType(line_type);
   return plot;
+}
+
+namespace {
+
+struct Box {
+  float x0, y0, x1, y1;  // scene pixels
+  bool overlaps(const Box& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
+};
+
+// Invisible points that each write their text beside them, placed in scene pixels when the
+// chart paints: right of the point (left of it where that would leave the plot area), moved up
+// or down a text line at a time, nearest first, until it overlaps neither a label placed before
+// it nor a marker of the points to avoid, with a thin line back to its point when moved. A plot,
+// not a scene item, so the chart maps the points (log axes included) as it maps the data's.
+class PointLabels : public vtkPlotPoints {
+ public:
+  static PointLabels* New();
+  std::vector<std::string> texts;  // one per point, then "" for each point to avoid
+  int font_size = 19;
+  vtkChart* chart = nullptr;  // owns this plot
+
+  bool Paint(vtkContext2D* painter) override {
+    if (this->Points == nullptr ||
+        this->Points->GetNumberOfPoints() != static_cast<vtkIdType>(texts.size())) {
+      return false;
+    }
+    std::vector<float> at(2 * texts.size());
+    for (std::size_t i = 0; i < texts.size(); ++i) {
+      double p[2];
+      this->Points->GetPoint(static_cast<vtkIdType>(i), p);
+      at[2 * i] = static_cast<float>(p[0]);
+      at[2 * i + 1] = static_cast<float>(p[1]);
+    }
+    painter->GetTransform()->TransformPoints(at.data(), at.data(), static_cast<int>(texts.size()));
+    painter->PushMatrix();
+    vtkNew<vtkTransform2D> scene;  // identity: draw in scene pixels
+    painter->SetTransform(scene);
+    vtkTextProperty* prop = painter->GetTextProp();
+    prop->SetFontSize(font_size);
+    prop->SetColor(0.1, 0.1, 0.1);
+    prop->SetJustificationToLeft();
+    prop->SetVerticalJustificationToBottom();
+    painter->GetPen()->SetLineType(vtkPen::SOLID_LINE);
+    painter->GetPen()->SetColorF(0.3, 0.3, 0.3);
+    painter->GetPen()->SetWidth(1.0f);
+    const float gap = 0.5f * static_cast<float>(font_size);  // clear of the point's marker
+    const int* lo = chart->GetPoint1();
+    const int* hi = chart->GetPoint2();
+    std::vector<Box> placed;  // the data's markers (10 px), then the labels
+    for (std::size_t i = 0; i < texts.size(); ++i) {
+      if (texts[i].empty()) {
+        placed.push_back({at[2 * i] - 6, at[2 * i + 1] - 6, at[2 * i] + 6, at[2 * i + 1] + 6});
+      }
+    }
+    for (std::size_t i = 0; i < texts.size(); ++i) {
+      if (texts[i].empty()) continue;
+      float bounds[4];
+      painter->ComputeStringBounds(texts[i], bounds);
+      const float w = bounds[2], h = bounds[3];
+      const float x = at[2 * i], y = at[2 * i + 1];
+      const float left = x + gap + w > static_cast<float>(hi[0]) ? x - gap - w : x + gap;
+      Box box{left, y - h / 2, left + w, y + h / 2};
+      // Up and down as far as the plot area reaches, at most; a label that finds no room
+      // there stays at the last place tried (clamped into the plot area below).
+      const int steps = 2 * static_cast<int>((hi[1] - lo[1]) / std::max(h, 1.0f)) + 1;
+      for (int step = 1; step <= steps; ++step) {
+        if (std::none_of(placed.begin(), placed.end(),
+                         [&](const Box& o) { return o.overlaps(box); })) {
+          break;
+        }
+        const float shift = static_cast<float>((step + 1) / 2) * h * (step % 2 ? 1.0f : -1.0f);
+        box = {left, y - h / 2 + shift, left + w, y + h / 2 + shift};
+      }
+      box.y0 = std::clamp(box.y0, static_cast<float>(lo[1]), static_cast<float>(hi[1]) - h);
+      box.y1 = box.y0 + h;
+      placed.push_back(box);
+      if (box.y0 > y || box.y1 < y) {
+        painter->DrawLine(x, y, box.x0 < x ? box.x1 : box.x0, box.y0 > y ? box.y0 : box.y1);
+      }
+      painter->DrawString(box.x0, box.y0, texts[i]);
+    }
+    painter->PopMatrix();
+    return true;
+  }
+
+  // Last: it takes no semicolon, which clang-format would read as continuing onto the next line.
+  vtkTypeMacro(PointLabels, vtkPlotPoints)
+};
+vtkStandardNewMacro(PointLabels);
+
+}  // namespace
+
+void add_point_labels(vtkChartXY* chart, const std::vector<PointLabel>& labels,
+                      const std::vector<std::array<double, 2>>& avoid,
+                      const ChartOptions& options) {
+  if (labels.empty()) return;
+  vtkNew<PointLabels> plot;
+  std::vector<double> x, y;
+  for (const PointLabel& l : labels) {
+    x.push_back(l.x);
+    y.push_back(l.y);
+    plot->texts.push_back(l.text);
+  }
+  for (const auto& [px, py] : avoid) {
+    x.push_back(px);
+    y.push_back(py);
+    plot->texts.emplace_back();
+  }
+  plot->font_size = options.label_font_size;
+  plot->chart = chart;
+  vtkNew<vtkTable> table;
+  table->AddColumn(make_column("x", x));
+  table->AddColumn(make_column("labels", y));
+  plot->SetInputData(table, 0, 1);
+  plot->SetMarkerStyle(vtkPlotPoints::NONE);
+  plot->SetLegendVisibility(false);
+  chart->AddPlot(plot);
 }
 
 void add_range_bar(vtkChartXY* chart, const std::string& legend, double x_lo, double x_hi, double y,

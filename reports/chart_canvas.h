@@ -47,6 +47,18 @@ void add_vertical_line(vtkChartXY* chart, double at, double y_lo, double y_hi,
 vtkPlotPoints* add_series(vtkChartXY* chart, const std::string& name, const std::vector<double>& x,
                           const std::vector<double>& y, const Rgb& colour, int line_type);
 
+struct PointLabel {
+  double x = 0.0, y = 0.0;  // a point of the chart's data
+  std::string text;
+};
+
+// Texts written beside their points in the label font, none over another or over a marker at
+// the points `avoid` (the chart's data): each right of its point (left where it would leave
+// the plot area), moved up or down a line at a time, nearest first, until clear, with a thin
+// line to its point when moved. No marker, no legend entry.
+void add_point_labels(vtkChartXY* chart, const std::vector<PointLabel>& labels,
+                      const std::vector<std::array<double, 2>>& avoid, const ChartOptions& options);
+
 // A light grey horizontal bar from x_lo to x_hi at height y (a value's range), with `legend`
 // shown only if `in_legend` (so that many bars take one legend entry).
 void add_range_bar(vtkChartXY* chart, const std::string& legend, double x_lo, double x_hi, double y,

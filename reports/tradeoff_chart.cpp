@@ -10,6 +10,7 @@
 #include <vtkTable.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <set>
 #include <string>
@@ -107,6 +108,7 @@ Axes chart_axes(const std::vector<results::ConfigResult>& rows, const TradeoffSp
 struct Series {
   std::string name;
   std::vector<double> x, y;  // frame ms, metric
+  std::string value;         // of the series knob: the line's label on the chart
 };
 
 // One line per group and value of the series knob, its points in order of the order knob
@@ -130,7 +132,8 @@ std::vector<Series> knob_series(const std::vector<results::ConfigResult>& rows,
       Series s{
           (groups.size() > 1 ? group + ": " : std::string()) + spec.series_knob + " = " + value,
           {},
-          {}};
+          {},
+          value};
       for (const results::ConfigResult* r : members) {
         s.x.push_back(r->frame_ms);
         s.y.push_back(r->quality.at(spec.metric));
@@ -143,7 +146,7 @@ std::vector<Series> knob_series(const std::vector<results::ConfigResult>& rows,
 
 // Configurations that differ visibly from their group's best.
 Series visibly_different(const std::vector<results::ConfigResult>& rows, const TradeoffSpec& spec) {
-  Series s{"visibly different from the best", {}, {}};
+  Series s{"visibly different from the best", {}, {}, {}};
   for (const results::ConfigResult& r : rows) {
     if (r.vs_best && r.vs_best->visible) {
       s.x.push_back(r.frame_ms);
@@ -154,7 +157,7 @@ Series visibly_different(const std::vector<results::ConfigResult>& rows, const T
 }
 
 Series pareto_series(const std::vector<results::ConfigResult>& rows, const TradeoffSpec& spec) {
-  Series s{"Pareto front", {}, {}};
+  Series s{"Pareto front", {}, {}, {}};
   for (std::size_t i : pareto_front(rows, spec.metric, spec.higher_is_better)) {
     s.x.push_back(rows[i].frame_ms);
     s.y.push_back(rows[i].quality.at(spec.metric));
@@ -280,6 +283,15 @@ ChartFiles write_tradeoff_chart(const results::SweepTable& table, const Tradeoff
     cross->SetMarkerSize(18.0);
   }
   draw_recommendations(chart, table, spec);
+  // Each line named at its last point, over everything else: the legend alone leaves a reader
+  // matching nine colours to points.
+  std::vector<PointLabel> labels;
+  std::vector<std::array<double, 2>> points;
+  for (const Series& s : lines) {
+    labels.push_back({s.x.back(), s.y.back(), s.value});  // right of the line's other points
+    for (std::size_t i = 0; i < s.x.size(); ++i) points.push_back({s.x[i], s.y[i]});
+  }
+  add_point_labels(chart, labels, points, options);
   add_vertical_line(chart, table.budget_ms, axes.y_lo, axes.y_hi,
                     "budget " + budget_label(table.budget_ms), {200, 0, 0});
   style_axes(chart, spec, axes, options);
