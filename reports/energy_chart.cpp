@@ -51,8 +51,7 @@ ChartFiles write_energy_chart(const results::SweepTable& table, const QualityAxi
   bool first = true;
   for (const results::ConfigResult* r : rows) {
     const double y = r->quality.at(quality.metric);
-    add_range_bar(chart, "mJ range (profile's energy figures at their minima and maxima)",
-                  r->energy_mj_low, r->energy_mj_high, y, first);
+    add_range_bar(chart, "mJ range", r->energy_mj_low, r->energy_mj_high, y, first);
     first = false;
   }
 
@@ -105,9 +104,8 @@ ChartFiles write_energy_chart(const results::SweepTable& table, const QualityAxi
     for (const Recommendation& rec : recommend(table, quality.metric)) {
       if (!rec.chosen) continue;
       const results::ConfigResult& r = table.rows[*rec.chosen];
-      vtkPlotPoints* mark =
-          add_series(chart, "recommended (by frame time and quality)", {r.energy_mj},
-                     {r.quality.at(quality.metric)}, {200, 0, 0}, vtkPen::NO_PEN);
+      vtkPlotPoints* mark = add_series(chart, "recommended", {r.energy_mj},
+                                       {r.quality.at(quality.metric)}, {200, 0, 0}, vtkPen::NO_PEN);
       mark->SetMarkerStyle(vtkPlotPoints::DIAMOND);
       mark->SetMarkerSize(26.0);
       mark->SetLegendVisibility(first);

@@ -47,7 +47,8 @@ std::vector<ReportFigure> draw_report_charts(const results::SweepTable& table,
     const std::string caption =
         "Frame time vs " + options.metric_label + ", one line per " + series +
         (order.empty() ? "" : " across " + order + " (the configurations that use both)") +
-        ". Squares: Pareto front; diamond: recommended; dashed red: frame budget.";
+        ". Grey bars: frame-time range over the profile's uncertain figures; squares: Pareto "
+        "front; diamond: recommended; dashed red: frame budget.";
     figures.push_back(relative(
         write_tradeoff_chart(table, spec, stem + "tradeoff_by_" + series, options.chart), caption));
   }
@@ -60,8 +61,9 @@ std::vector<ReportFigure> draw_report_charts(const results::SweepTable& table,
                            stem + "energy_vs_quality", options.chart),
         "Dynamic energy per frame vs " + options.metric_label +
             ", one colour per device group; dotted: each group's Pareto front of energy vs "
-            "quality; grey bars: energy range; crosses: over the frame budget; diamond: "
-            "recommended."));
+            "quality; grey bars: energy range (the profile's energy figures at their minima and "
+            "maxima); crosses: over the frame budget; diamond: recommended (by frame time and "
+            "quality)."));
   }
   figures.push_back(relative(
       write_pass_stack_chart(table, stem + "pass_times", options.chart),

@@ -201,27 +201,28 @@ void draw_time_ranges(vtkChartXY* chart, const std::vector<results::ConfigResult
   bool first_range = true;
   for (const results::ConfigResult& r : rows) {
     const double y = r.quality.at(spec.metric);
-    add_range_bar(chart, "frame ms range (profile's uncertain figures)", r.frame_ms_low,
-                  r.frame_ms_high, y, first_range);
+    add_range_bar(chart, "frame ms range", r.frame_ms_low, r.frame_ms_high, y, first_range);
     first_range = false;
   }
 }
 
 // The report's recommendations (one per group of comparable configurations), marked where
-// this chart plots them. Their rule needs a lower-is-better metric.
+// this chart plots them, under one legend entry (the report names them). Their rule needs a
+// lower-is-better metric.
 void draw_recommendations(vtkChartXY* chart, const results::SweepTable& table,
                           const TradeoffSpec& spec) {
   if (spec.higher_is_better) return;
-  const std::vector<Recommendation> recommendations = recommend(table, spec.metric);
-  for (const Recommendation& rec : recommendations) {
+  bool first = true;
+  for (const Recommendation& rec : recommend(table, spec.metric)) {
     if (!rec.chosen) continue;
     const results::ConfigResult& r = table.rows[*rec.chosen];
     if (!matches(r, spec.filter) || !on_tradeoff_chart(r, spec)) continue;
-    const std::string name = recommendations.size() > 1 ? rec.group + ": " + r.label : r.label;
-    vtkPlotPoints* mark = add_series(chart, "recommended: " + name, {r.frame_ms},
+    vtkPlotPoints* mark = add_series(chart, "recommended", {r.frame_ms},
                                      {r.quality.at(spec.metric)}, {200, 0, 0}, vtkPen::NO_PEN);
     mark->SetMarkerStyle(vtkPlotPoints::DIAMOND);
     mark->SetMarkerSize(26.0);
+    mark->SetLegendVisibility(first);
+    first = false;
   }
 }
 
