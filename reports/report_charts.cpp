@@ -47,8 +47,8 @@ std::vector<ReportFigure> draw_report_charts(const results::SweepTable& table,
     const std::string caption =
         "Frame time vs " + options.metric_label + ", one line per " + series +
         (order.empty() ? "" : " across " + order + " (the configurations that use both)") +
-        ". Grey bars: frame-time range over the profile's uncertain figures; squares: Pareto "
-        "front; diamond: recommended; dashed red: frame budget.";
+        ". Grey bars: frame-time range over the profile's uncertain figures; squares: each "
+        "group's Pareto front; diamond: recommended; dashed red: frame budget.";
     figures.push_back(relative(
         write_tradeoff_chart(table, spec, stem + "tradeoff_by_" + series, options.chart), caption));
   }

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <set>
 #include <string>
 #include <utility>
@@ -156,13 +157,24 @@ Series visibly_different(const std::vector<results::ConfigResult>& rows, const T
   return s;
 }
 
-Series pareto_series(const std::vector<results::ConfigResult>& rows, const TradeoffSpec& spec) {
-  Series s{"Pareto front", {}, {}, {}};
-  for (std::size_t i : pareto_front(rows, spec.metric, spec.higher_is_better)) {
-    s.x.push_back(rows[i].frame_ms);
-    s.y.push_back(rows[i].quality.at(spec.metric));
+// Each group's Pareto front: a front through two devices' points would trade one device's
+// milliseconds for another's (recommendation.h).
+std::vector<Series> pareto_fronts(const std::vector<results::ConfigResult>& rows,
+                                  const std::vector<std::string>& groups,
+                                  const TradeoffSpec& spec) {
+  std::vector<Series> fronts;
+  for (const std::string& group : groups) {
+    std::vector<results::ConfigResult> members;
+    std::copy_if(rows.begin(), rows.end(), std::back_inserter(members),
+                 [&](const results::ConfigResult& r) { return r.group == group; });
+    Series s{"Pareto front", {}, {}, {}};
+    for (std::size_t i : pareto_front(members, spec.metric, spec.higher_is_better)) {
+      s.x.push_back(members[i].frame_ms);
+      s.y.push_back(members[i].quality.at(spec.metric));
+    }
+    fronts.push_back(std::move(s));
   }
-  return s;
+  return fronts;
 }
 
 // ---------------------------------------------------------------- drawing
@@ -258,7 +270,7 @@ ChartFiles write_tradeoff_chart(const results::SweepTable& table, const Tradeoff
   const Axes axes = chart_axes(rows, spec, table.budget_ms);
   const std::vector<Series> lines = knob_series(rows, groups, spec);
   const Series visible = visibly_different(rows, spec);
-  const Series front = pareto_series(rows, spec);
+  const std::vector<Series> fronts = pareto_fronts(rows, groups, spec);
 
   auto view = make_chart_view(options);
   vtkNew<vtkChartXY> chart;
@@ -268,11 +280,14 @@ ChartFiles write_tradeoff_chart(const results::SweepTable& table, const Tradeoff
   draw_time_ranges(chart, rows, spec);
   // The front's squares under the lines, larger than their points: a configuration on the
   // front shows its own colour framed in black instead of hiding under the square.
-  vtkPlotPoints* pareto =
-      add_series(chart, front.name, front.x, front.y, {20, 20, 20}, vtkPen::DOT_LINE);
-  pareto->SetMarkerStyle(vtkPlotPoints::SQUARE);
-  pareto->SetMarkerSize(22.0);
-  pareto->SetWidth(3.0);
+  for (const Series& front : fronts) {
+    vtkPlotPoints* pareto =
+        add_series(chart, front.name, front.x, front.y, {20, 20, 20}, vtkPen::DOT_LINE);
+    pareto->SetMarkerStyle(vtkPlotPoints::SQUARE);
+    pareto->SetMarkerSize(22.0);
+    pareto->SetWidth(3.0);
+    pareto->SetLegendVisibility(&front == &fronts.front());
+  }
   std::size_t colour = 0;
   for (const Series& s : lines) {
     add_series(chart, s.name, s.x, s.y, palette_colour(colour++), vtkPen::SOLID_LINE);
