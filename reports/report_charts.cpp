@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <functional>
 #include <set>
 
 namespace skinsim::reports {
@@ -20,6 +21,15 @@ bool has_dram_causes(const results::ConfigResult& row) {
 }
 
 }  // namespace
+
+std::optional<std::string> single_tile_bottleneck(const results::TileHeatmap& heatmap) {
+  const std::vector<std::string>& units = heatmap.bottleneck;
+  if (units.empty() ||
+      std::adjacent_find(units.begin(), units.end(), std::not_equal_to<>()) != units.end()) {
+    return std::nullopt;
+  }
+  return units.front();
+}
 
 bool tradeoff_chart_worth_drawing(const results::SweepTable& table, const TradeoffSpec& spec) {
   std::set<std::string> values;  // of the series knob over the rows the chart plots
@@ -70,11 +80,13 @@ std::vector<ReportFigure> draw_report_charts(const results::SweepTable& table,
       "Modelled time of each pass per configuration; the unit in parentheses is the bottleneck "
       "of the configuration's costliest pass. Dashed red: frame budget."));
   if (table.heatmap) {
+    const std::optional<std::string> one_unit = single_tile_bottleneck(*table.heatmap);
     figures.push_back(
         relative(write_tile_cost_heatmap(*table.heatmap, stem + "tile_cost", options.chart),
                  "Modelled cost per " + std::to_string(table.heatmap->tile_size) +
-                     " px tile of the " + table.heatmap->pass_name + " pass over the frame."));
-    if (!table.heatmap->bottleneck.empty()) {
+                     " px tile of the " + table.heatmap->pass_name + " pass over the frame." +
+                     (one_unit ? " Every tile is bound by " + *one_unit + "." : "")));
+    if (!table.heatmap->bottleneck.empty() && !one_unit) {
       figures.push_back(relative(
           write_tile_bottleneck_map(*table.heatmap, stem + "tile_bottleneck", options.chart),
           "Unit that bounds each tile of the " + table.heatmap->pass_name + " pass."));

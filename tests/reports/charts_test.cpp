@@ -138,6 +138,16 @@ TEST(TradeoffRows, AKnobSweptOverOneValueGetsNoChart) {
   EXPECT_TRUE(tradeoff_chart_worth_drawing(sweep, by_scale));
 }
 
+// A bottleneck map of one colour says nothing the cost map's caption cannot: not drawn.
+TEST(TileMaps, OneUnitOverEveryTileIsNamedNotDrawn) {
+  results::TileHeatmap heatmap = testing::synthetic_heatmap();
+  EXPECT_EQ(single_tile_bottleneck(heatmap), std::nullopt);  // dram, alu and texture tiles
+  std::fill(heatmap.bottleneck.begin(), heatmap.bottleneck.end(), "texture");
+  EXPECT_EQ(single_tile_bottleneck(heatmap), "texture");
+  heatmap.bottleneck.clear();
+  EXPECT_EQ(single_tile_bottleneck(heatmap), std::nullopt);
+}
+
 TEST_F(ChartsTest, TradeoffChartLeavesOutRowsWithoutItsKnobs) {
   const results::SweepTable sweep = with_scale_free_rows();
   options_.write_svg = false;
