@@ -4,8 +4,8 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
-#include "driver/scene_source.h"
-#include "driver/truth_judge.h"
+#include "driver/frame/scene_source.h"
+#include "driver/truth/truth_judge.h"
 #include "gpu_model/device_profile.h"
 #include "pipeline/config.h"
 

@@ -8,9 +8,9 @@
 
 #include "app/cli_options.h"
 #include "app/commands.h"
-#include "driver/run_compare.h"
-#include "driver/truth_compare.h"
-#include "driver/truth_judge.h"
+#include "driver/sweep/run_compare.h"
+#include "driver/truth/truth_compare.h"
+#include "driver/truth/truth_judge.h"
 #include "io/atomic_file.h"
 #include "io/json_input.h"
 #include "io/read_file.h"

@@ -1,12 +1,12 @@
 // `skinsim export`: a technique's frame as GLSL ES shaders and a frame description
-// (driver/frame_export.h), to run on a device or feed to an offline shader compiler.
+// (driver/frame/frame_export.h), to run on a device or feed to an offline shader compiler.
 #include <fmt/format.h>
 
 #include <filesystem>
 
 #include "app/cli_options.h"
 #include "app/commands.h"
-#include "driver/frame_export.h"
+#include "driver/frame/frame_export.h"
 #include "io/atomic_file.h"
 #include "io/free_space.h"
 #include "io/run_directory.h"

@@ -13,17 +13,17 @@
 
 #include "app/cli_options.h"
 #include "app/commands.h"
-#include "driver/frame_job.h"
-#include "driver/frame_passes.h"
-#include "driver/frame_quality.h"
-#include "driver/images.h"
-#include "driver/reference_cache.h"
-#include "driver/result_json.h"
-#include "driver/sequence_animation.h"
-#include "driver/sequence_charts.h"
-#include "driver/sequence_page.h"
-#include "driver/sequence_run.h"
-#include "driver/truth_judge.h"
+#include "driver/frame/frame_job.h"
+#include "driver/frame/frame_passes.h"
+#include "driver/frame/frame_quality.h"
+#include "driver/frame/images.h"
+#include "driver/frame/reference_cache.h"
+#include "driver/frame/result_json.h"
+#include "driver/sequence/sequence_animation.h"
+#include "driver/sequence/sequence_charts.h"
+#include "driver/sequence/sequence_page.h"
+#include "driver/sequence/sequence_run.h"
+#include "driver/truth/truth_judge.h"
 #include "gpu_model/sensitivity.h"
 #include "gpu_model/timing_json.h"
 #include "gpu_model/timing_table.h"
@@ -55,7 +55,7 @@ struct RunOptions {
 };
 
 // `--truth`: the frame and the reference judged by the path-traced truth beside the
-// reference's figures (driver/truth_judge.h), for result.json's "truth".
+// reference's figures (driver/truth/truth_judge.h), for result.json's "truth".
 nlohmann::json judge_with_truth(const driver::Truth& truth, const driver::FrameJobResult& r) {
   const image::Mask* skin = r.reference ? &r.reference->skin : nullptr;
   nlohmann::json out = truth.about;

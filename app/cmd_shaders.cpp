@@ -5,7 +5,7 @@
 #include <iostream>
 
 #include "app/commands.h"
-#include "driver/result_json.h"
+#include "driver/frame/result_json.h"
 #include "pipeline/shader_catalog.h"
 #include "pipeline/technique.h"
 

@@ -18,16 +18,16 @@
 
 #include "app/cli_options.h"
 #include "app/commands.h"
-#include "driver/frame_job.h"
-#include "driver/sequence.h"
-#include "driver/sequence_animation.h"
-#include "driver/sweep_file.h"
-#include "driver/sweep_report.h"
-#include "driver/sweep_results.h"
-#include "driver/sweep_run.h"
-#include "driver/sweep_spec.h"
-#include "driver/truth_report.h"
-#include "driver/truth_sweep.h"
+#include "driver/frame/frame_job.h"
+#include "driver/sequence/sequence.h"
+#include "driver/sequence/sequence_animation.h"
+#include "driver/sweep/sweep_file.h"
+#include "driver/sweep/sweep_report.h"
+#include "driver/sweep/sweep_results.h"
+#include "driver/sweep/sweep_run.h"
+#include "driver/sweep/sweep_spec.h"
+#include "driver/truth/truth_report.h"
+#include "driver/truth/truth_sweep.h"
 #include "gpu_model/profile_loader.h"
 #include "io/atomic_file.h"
 #include "io/json_input.h"
@@ -192,7 +192,7 @@ int finish_shard(const driver::SweepShard& shard, const driver::SweepRunSummary&
   return summary.failed.empty() ? 0 : 1;
 }
 
-// `--truth`: each configuration judged by its group's truth (driver/truth_sweep.h), into the
+// `--truth`: each configuration judged by its group's truth (driver/truth/truth_sweep.h), into the
 // table's quality columns; returns results.json's "truth".
 nlohmann::json judge_with_truth(const SweepOptions& o, const driver::SweepSpec& spec,
                                 const std::vector<driver::SweepConfig>& configs,

@@ -1,6 +1,6 @@
 // `skinsim truth`: an independent judge of image quality. Writes the scene skinsim renders
-// (driver/truth_scene.h), renders it with Blender Cycles' random-walk subsurface scattering
-// (driver/truth_render.h) to a linear OpenEXR, optionally a second time with another seed for
+// (driver/truth/truth_scene.h), renders it with Blender Cycles' random-walk subsurface scattering
+// (driver/truth/truth_render.h) to a linear OpenEXR, optionally a second time with another seed for
 // the Monte Carlo noise floor, and with --compare the PSNR / SSIM / FLIP of a `skinsim run`'s
 // frame and reference against it. docs/validation.md describes the judge.
 #include <fmt/format.h>
@@ -12,12 +12,12 @@
 
 #include "app/cli_options.h"
 #include "app/commands.h"
-#include "driver/frame_job.h"
-#include "driver/reference_cache.h"
-#include "driver/truth_image.h"
-#include "driver/truth_render.h"
-#include "driver/truth_scene.h"
-#include "driver/truth_store.h"
+#include "driver/frame/frame_job.h"
+#include "driver/frame/reference_cache.h"
+#include "driver/truth/truth_image.h"
+#include "driver/truth/truth_render.h"
+#include "driver/truth/truth_scene.h"
+#include "driver/truth/truth_store.h"
 #include "io/atomic_file.h"
 #include "io/run_directory.h"
 #include "util/user_error.h"

@@ -8,9 +8,9 @@
 
 #include "app/cli_options.h"
 #include "app/commands.h"
-#include "driver/frame_job.h"
-#include "driver/validate_compare.h"
-#include "driver/validate_measurements.h"
+#include "driver/frame/frame_job.h"
+#include "driver/validate/validate_compare.h"
+#include "driver/validate/validate_measurements.h"
 #include "io/atomic_file.h"
 #include "pipeline/technique.h"
 

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "app/commands.h"
-#include "driver/host_memory.h"
+#include "driver/frame/host_memory.h"
 #include "pipeline/knob.h"
 #include "util/simd_dispatch.h"
 #include "util/user_error.h"

@@ -8,12 +8,12 @@
 #include <filesystem>
 #include <memory>
 
-#include "driver/frame_job.h"
-#include "driver/frame_quality.h"
-#include "driver/host_memory.h"
-#include "driver/images.h"
-#include "driver/scene_source.h"
-#include "driver/sweep_thumbnails.h"
+#include "driver/frame/frame_job.h"
+#include "driver/frame/frame_quality.h"
+#include "driver/frame/host_memory.h"
+#include "driver/frame/images.h"
+#include "driver/frame/scene_source.h"
+#include "driver/sweep/sweep_thumbnails.h"
 #include "gpu_model/profile_loader.h"
 #include "image/image.h"
 #include "pipeline/bake/brdf_lut.h"
@@ -98,10 +98,10 @@ void BM_FlipAgainstPrepared(benchmark::State& state) {
 }
 BENCHMARK(BM_FlipAgainstPrepared)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// What a sweep does with each configuration's frame beside the next frame (driver/sweep_run.cpp,
-// finish): PSNR, SSIM and FLIP against the reference, prepared once; the frame's and its FLIP
-// map's PNGs with their thumbnails; and, after the sweep, each frame decoded again for its
-// comparison with its group's best.
+// What a sweep does with each configuration's frame beside the next frame
+// (driver/sweep/sweep_run.cpp, finish): PSNR, SSIM and FLIP against the reference, prepared once;
+// the frame's and its FLIP map's PNGs with their thumbnails; and, after the sweep, each frame
+// decoded again for its comparison with its group's best.
 const image::Image& scale_eighth_frame() {
   static const image::Image frame = [] {
     Fixture& f = fixture();

@@ -25,11 +25,11 @@
 #include <thread>
 #include <vector>
 
-#include "driver/frame_job.h"
-#include "driver/host_memory.h"
-#include "driver/scene_source.h"
-#include "driver/sweep_run.h"
-#include "driver/sweep_spec.h"
+#include "driver/frame/frame_job.h"
+#include "driver/frame/host_memory.h"
+#include "driver/frame/scene_source.h"
+#include "driver/sweep/sweep_run.h"
+#include "driver/sweep/sweep_spec.h"
 #include "gpu_model/profile_loader.h"
 #include "sim/pass_memo.h"
 

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "budget/limit.h"
-#include "driver/scene_source.h"
-#include "driver/sequence.h"
+#include "driver/frame/scene_source.h"
+#include "driver/sequence/sequence.h"
 #include "pipeline/config.h"
 
 namespace skinsim::budget {
@@ -23,7 +23,7 @@ struct Budget {
   double target_fps = 60.0;         // the frame rate the failure messages measure against
   // `sequence` (a preset or a sequence file, relative to the budget file) with `frames` and
   // `fps`: the budget measures every frame, its frame_ms.<stat> limits the distribution and
-  // the other limits the worst frame (driver/sequence.h).
+  // the other limits the worst frame (driver/sequence/sequence.h).
   std::optional<driver::Sequence> sequence;
   std::vector<Limit> limits;  // in file order
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "driver/frame_job.h"
+#include "driver/frame/frame_job.h"
 
 namespace skinsim::budget {
 

@@ -4,9 +4,9 @@
 
 #include "budget/device_fingerprint.h"
 #include "budget/error.h"
-#include "driver/frame_job.h"
-#include "driver/frame_quality.h"
-#include "driver/sequence_run.h"
+#include "driver/frame/frame_job.h"
+#include "driver/frame/frame_quality.h"
+#include "driver/sequence/sequence_run.h"
 #include "gpu_model/error.h"
 #include "gpu_model/profile_loader.h"
 #include "scene/error.h"

@@ -18,7 +18,7 @@ FrameEnergy estimate_energy(const std::vector<sim::PassCounters>& passes,
                             const std::vector<PassTiming>& timing, const DeviceProfile& profile);
 
 // The frame budget `skinsim run` reports power at: 30 fps, the sweep's default budget
-// (driver/sweep_spec.h).
+// (driver/sweep/sweep_spec.h).
 inline constexpr double kPowerBudgetMs = 1000.0 / 30.0;
 
 // Average power (mW) of a frame's energy spread over the frame budget, or over the frame

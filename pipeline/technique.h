@@ -37,7 +37,7 @@ struct TechniqueSpec {
   // Host time to emulate one frame per output pixel at default knobs, in nanoseconds: the
   // slope between `skinsim run --threads 1 --no-reference` at 1024x768 and 2048x1536 (AMD
   // EPYC, 2026-11-24). Only sweep shards use it, to balance their expected work
-  // (driver/sweep_shard.h); the cost model never does.
+  // (driver/sweep/sweep_shard.h); the cost model never does.
   int host_ns_per_pixel = 0;
   // Whether its shader has a specular model of its own (urp: the article's dual GGX), so that
   // the `specular` knob and the BRDF LUT's knobs do not apply to it.

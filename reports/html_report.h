@@ -34,7 +34,7 @@ struct ReportOptions {
   // the page shows) and thumbnails (which it links) there. Its exception, if any, is the
   // report's.
   std::function<void()> alongside_charts;
-  // `sweep --truth` (driver/truth_report.h): HTML placed after the recommendation, and per
+  // `sweep --truth` (driver/truth/truth_report.h): HTML placed after the recommendation, and per
   // group its truth image, one of the comparison slider's frames.
   std::string after_recommendation;
   std::map<std::string, std::string> truth_images;

@@ -27,7 +27,7 @@ inline std::string link(const std::string& path) {
 
 // Where the report looks for the small copy of an image (a path relative to the sweep
 // directory, like `image`): thumbs/<image with '/' as '_'>. The sweep writes these
-// (driver/sweep_thumbnails.h); the page shows them and links the full-size image.
+// (driver/sweep/sweep_thumbnails.h); the page shows them and links the full-size image.
 std::string thumbnail_path(const std::string& image);
 
 }  // namespace skinsim::reports

@@ -55,7 +55,7 @@ std::string recommend_metric(const std::vector<results::ConfigResult>& rows);
 std::vector<std::string> groups_in_order(const results::SweepTable& table);
 
 // The best of `rows` by `metric` (lower is better); ties: the cheaper, then the earlier (the
-// rule vs_finest and vs_best were measured against, driver/sweep_comparisons.h). nullptr when
+// rule vs_finest and vs_best were measured against, driver/sweep/sweep_comparisons.h). nullptr when
 // no row has the metric.
 const results::ConfigResult* lowest_metric(const std::vector<const results::ConfigResult*>& rows,
                                            const std::string& metric);

@@ -16,7 +16,7 @@ bash scripts/build.sh build -DSKINSIM_WERROR=ON
 (cd build && ctest --output-on-failure -j "$jobs")
 
 # -O1 -g1 (line tables: stack traces keep files and lines) compiles in half the CPU time of
-# RelWithDebInfo's -O2 -g (driver/sweep_run.cpp: 13.6 against 27.8 s); ASan's own
+# RelWithDebInfo's -O2 -g (driver/sweep/sweep_run.cpp: 13.6 against 27.8 s); ASan's own
 # documentation recommends -O1 for usable speed.
 bash scripts/build.sh build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" -DSKINSIM_SANITIZE=ON -DSKINSIM_WERROR=ON \

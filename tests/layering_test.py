@@ -22,7 +22,11 @@ LAYERS = [
     "pipeline",
     "microbench",
     "reports",
-    "driver",
+    "driver/frame",  # one frame: the job, its outputs, references, result.json
+    "driver/validate",
+    "driver/sequence",  # frames in motion
+    "driver/sweep",  # many configurations: runs, comparisons, crops, shards, the report
+    "driver/truth",  # the path-traced judge
     "budget",
     "app",
 ]

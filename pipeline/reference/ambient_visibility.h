@@ -19,7 +19,7 @@
 //
 // What a point sees beyond the character counts as the environment: the backdrop and the
 // shirt (kind "other") do not occlude, as they cast no shadows in the truth's scene either
-// (driver/truth_scene.h); the light they reflect onto the skin is no part of the reference.
+// (driver/truth/truth_scene.h); the light they reflect onto the skin is no part of the reference.
 #pragma once
 
 #include <glm/glm.hpp>

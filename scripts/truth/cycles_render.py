@@ -4,7 +4,7 @@
 #   blender -b --factory-startup -P cycles_render.py -- SCENE_JSON OUT_EXR SEED THREADS
 # The mapping of each skinsim parameter to Cycles is documented in docs/validation.md; this
 # script only builds what scene.json states (units, light strengths and radii are converted
-# by skinsim, driver/truth_scene.cpp).
+# by skinsim, driver/truth/truth_scene.cpp).
 import json
 import math
 import os

@@ -7,7 +7,7 @@
 #include "budget/error.h"
 #include "budget/evaluate.h"
 #include "budget/run_budget.h"
-#include "driver/frame_job.h"
+#include "driver/frame/frame_job.h"
 #include "gpu_model/frame_cost.h"
 #include "gpu_model/profile_loader.h"
 #include "tests/test_paths.h"

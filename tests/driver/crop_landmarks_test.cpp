@@ -1,4 +1,4 @@
-#include "driver/crop_landmarks.h"
+#include "driver/sweep/crop_landmarks.h"
 
 #include <gtest/gtest.h>
 

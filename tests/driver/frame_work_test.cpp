@@ -1,12 +1,12 @@
-// The work a frame asks for, estimated before it renders (driver/frame_work.h): exact screen
+// The work a frame asks for, estimated before it renders (driver/frame/frame_work.h): exact screen
 // areas for quads in an orthographic view, back faces ignored, and a scene that covers the
 // frame a thousand times over refused before anything renders (issue 46: 20,000
 // screen-covering triangles took 35 s at 256x192 without a word).
-#include "driver/frame_work.h"
+#include "driver/frame/frame_work.h"
 
 #include <gtest/gtest.h>
 
-#include "driver/frame_job.h"
+#include "driver/frame/frame_job.h"
 #include "gpu_model/profile_loader.h"
 #include "scene/procedural_head.h"
 #include "scene/studio_lighting.h"

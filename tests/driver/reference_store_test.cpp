@@ -1,6 +1,6 @@
 // The user's reference store on hand-made images: what it returns, what it refuses, which
 // references it evicts, and where the environment puts it. No rendering, fast.
-#include "driver/reference_store.h"
+#include "driver/frame/reference_store.h"
 
 #include <gtest/gtest.h>
 

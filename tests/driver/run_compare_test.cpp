@@ -1,14 +1,14 @@
 // `skinsim compare` without rendering: run directories made by hand (a result.json and a
 // frame.png), so every rule is checked in milliseconds; tests/driver/compare_test.sh runs the
 // real command on real runs and sweeps.
-#include "driver/run_compare.h"
+#include "driver/sweep/run_compare.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "driver/result_values.h"
+#include "driver/sweep/result_values.h"
 #include "image/image.h"
 #include "io/atomic_file.h"
 #include "io/read_file.h"

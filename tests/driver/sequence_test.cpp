@@ -1,13 +1,13 @@
-// Sequences (driver/sequence.h, sequence_run.h): presets, sequence files, the frame-time
+// Sequences (driver/sequence/sequence.h, sequence_run.h): presets, sequence files, the frame-time
 // distribution, and played sequences on a small built-in head.
-#include "driver/sequence.h"
+#include "driver/sequence/sequence.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 
-#include "driver/sequence_run.h"
+#include "driver/sequence/sequence_run.h"
 #include "gpu_model/profile_loader.h"
 #include "tests/test_paths.h"
 

@@ -1,7 +1,7 @@
 // A recommendation's comparison panel: every crop window shows the recommended frame's
 // difference from the reference and, when the best is another configuration, from the best,
 // so the window found against the best shows the difference it was found in.
-#include "driver/sweep_crops.h"
+#include "driver/sweep/sweep_crops.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "driver/reference_cache.h"
+#include "driver/frame/reference_cache.h"
 #include "image/image.h"
 #include "tests/image/test_image.h"
 

@@ -1,5 +1,5 @@
 // Sweep files: what they set, and errors that name the file, line and key.
-#include "driver/sweep_file.h"
+#include "driver/sweep/sweep_file.h"
 
 #include <gtest/gtest.h>
 

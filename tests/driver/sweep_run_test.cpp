@@ -1,6 +1,6 @@
 // Tiny sweeps on the built-in scene (256x192, small mesh and texture): the files a sweep
 // writes, resume, cancellation and thread-count invariance.
-#include "driver/sweep_run.h"
+#include "driver/sweep/sweep_run.h"
 
 #include <gtest/gtest.h>
 
@@ -12,11 +12,11 @@
 #include <set>
 #include <sstream>
 
-#include "driver/frame_quality.h"
-#include "driver/images.h"
-#include "driver/skin_diagnosis.h"
-#include "driver/sweep_results.h"
-#include "driver/sweep_spec.h"
+#include "driver/frame/frame_quality.h"
+#include "driver/frame/images.h"
+#include "driver/frame/skin_diagnosis.h"
+#include "driver/sweep/sweep_results.h"
+#include "driver/sweep/sweep_spec.h"
 #include "results/sweep_table.h"
 #include "sweep_test_support.h"
 #include "tests/test_paths.h"

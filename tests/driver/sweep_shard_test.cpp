@@ -1,7 +1,7 @@
 // Sharded sweeps: parsing K/N, the cost-balanced partition, and shards run one after another
 // into one directory (interrupted, resumed, merged) giving what the one-process sweep gives.
 // Concurrent shard processes and Slurm are tested in tests/slurm/.
-#include "driver/sweep_shard.h"
+#include "driver/sweep/sweep_shard.h"
 
 #include <gtest/gtest.h>
 
@@ -11,9 +11,9 @@
 #include <numeric>
 #include <sstream>
 
-#include "driver/sweep_results.h"
-#include "driver/sweep_run.h"
-#include "driver/sweep_spec.h"
+#include "driver/sweep/sweep_results.h"
+#include "driver/sweep/sweep_run.h"
+#include "driver/sweep/sweep_spec.h"
 #include "sweep_test_support.h"
 
 namespace skinsim::driver {

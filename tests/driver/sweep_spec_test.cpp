@@ -1,5 +1,5 @@
 // Sweep expansion: combinations, order, canonical values, ids, validation errors.
-#include "driver/sweep_spec.h"
+#include "driver/sweep/sweep_spec.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>

@@ -7,7 +7,7 @@
 #include <sstream>
 #include <string>
 
-#include "driver/sweep_run.h"
+#include "driver/sweep/sweep_run.h"
 #include "tests/test_paths.h"
 
 namespace skinsim::driver::test {

@@ -1,4 +1,4 @@
-#include "driver/sweep_thumbnails.h"
+#include "driver/sweep/sweep_thumbnails.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

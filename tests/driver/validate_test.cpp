@@ -7,8 +7,8 @@
 #include <fstream>
 #include <string>
 
-#include "driver/validate_compare.h"
-#include "driver/validate_measurements.h"
+#include "driver/validate/validate_compare.h"
+#include "driver/validate/validate_measurements.h"
 #include "gpu_model/frame_cost.h"
 #include "io/read_file.h"
 #include "tests/gpu_model/test_support.h"

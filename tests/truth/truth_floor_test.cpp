@@ -1,9 +1,9 @@
-// The noise floor's rule (driver/truth_judge.h): a difference no larger than what the truth's
+// The noise floor's rule (driver/truth/truth_judge.h): a difference no larger than what the truth's
 // second seed shows nearby is never called visible; without a second seed only the threshold
 // applies. Hand-made images, no Blender.
 #include <gtest/gtest.h>
 
-#include "driver/truth_judge.h"
+#include "driver/truth/truth_judge.h"
 
 namespace skinsim::driver {
 namespace {

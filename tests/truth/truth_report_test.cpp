@@ -1,7 +1,7 @@
-// The "Judged by truth" section of a sweep's report (driver/truth_report.h) on a hand-made
+// The "Judged by truth" section of a sweep's report (driver/truth/truth_report.h) on a hand-made
 // table: the noise floor, the recommendation under both judges, the flipped verdicts, and
 // whether the truth can separate the configurations, with the samples it would need.
-#include "driver/truth_report.h"
+#include "driver/truth/truth_report.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
-// The truth store on hand-made images (driver/truth_store.h): what it returns under which key,
-// what it refuses, what it evicts, and that the key follows the exported scene's bytes but not
+// The truth store on hand-made images (driver/truth/truth_store.h): what it returns under which
+// key, what it refuses, what it evicts, and that the key follows the exported scene's bytes but not
 // its source path. No Blender, no rendering.
-#include "driver/truth_store.h"
+#include "driver/truth/truth_store.h"
 
 #include <gtest/gtest.h>
 

@@ -2,8 +2,8 @@
 // reference agree; on a real head they differ, and by less for a larger LUT.
 #include <gtest/gtest.h>
 
-#include "driver/frame_quality.h"
-#include "driver/images.h"
+#include "driver/frame/frame_quality.h"
+#include "driver/frame/images.h"
 #include "pipeline/frame.h"
 #include "pipeline/reference/reference.h"
 #include "scene/procedural_head.h"
